@@ -1,0 +1,4 @@
+program landyn
+  implicit none
+  print '(a)', 'landyn: under construction'
+end program landyn
