@@ -185,7 +185,7 @@ contains
   elemental function is_set(x) result(yes)
     real(wp), intent(in) :: x  !! value to test [any unit]
     logical :: yes             !! .true. when x was set
-    yes = x /= unset_real
+    yes = x > unset_real
   end function is_set
 
 end module landyn_config

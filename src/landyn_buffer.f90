@@ -1,0 +1,159 @@
+!> Strut buffer laws: aluminium-honeycomb crush absorbers with history (paper eqs. 21-22).
+!!
+!! A buffer law does not integrate anything itself: it tells the gear solver how much axial force
+!! the strut can transmit before it gives way, in each direction of motion, given the stroke and
+!! the crush history. The gear solver (landyn_gear) enforces the crush logic of eqs. 12-13 with
+!! these bounds: a strut at rest stays locked while the force it must carry lies within the bounds
+!! (N = F, no driving force); beyond a bound it crushes with N = bound and the excess drives its
+!! sliding coordinate; a crushing strut whose sliding speed reaches zero locks again.
+!!
+!! Stroke convention (Table 3's sense, MODEL_NOTES.md): each buffer has a stroke coordinate s
+!! whose positive direction is the one Table 3 reports positive: for the primary strut
+!! s = L0 - L (shortening), for a secondary strut s = L - L0 (lengthening).
+!!
+!! History (eqs. 21-22): honeycomb crushes only at a stroke beyond its historical extreme in that
+!! direction (s >= s_hismax moving +, s <= s_hismin moving -); crushed honeycomb does not spring
+!! back, so between s_hismin and s_hismax the strut slides freely (bound 0 in both directions).
+!! Beyond the stroke capacity a stiff stop acts: the bound rises as
+!! F_last + k_stop (s - capacity) + c_stop max(s_dot, 0).
+module landyn_buffer
+  use landyn_kinds, only: wp
+  implicit none
+  private
+
+  public :: buffer_law_t, primary_honeycomb_t, secondary_honeycomb_t
+  public :: rigid_force, history_tol
+
+  real(wp), parameter :: rigid_force = 1.0e30_wp  !! bound of a rigid mechanical stop [N]
+  real(wp), parameter :: history_tol = 1.0e-9_wp  !! tolerance on reaching the crush front [m]
+
+  !> Interface of every buffer law.
+  type, abstract :: buffer_law_t
+  contains
+    procedure(resistance_iface), deferred :: resistance
+    procedure(capacity_iface), deferred :: capacity
+  end type buffer_law_t
+
+  abstract interface
+    !> Largest axial force the buffer can exert against motion toward +s (f_pos) and toward -s (f_neg).
+    pure subroutine resistance_iface(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
+      import :: buffer_law_t, wp
+      class(buffer_law_t), intent(in) :: self
+      real(wp), intent(in) :: s          !! stroke [m]
+      real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
+      real(wp), intent(in) :: s_hismin   !! most negative stroke reached so far [m]
+      real(wp), intent(in) :: s_hismax   !! most positive stroke reached so far [m]
+      real(wp), intent(out) :: f_pos     !! bound against motion toward +s [N], >= 0
+      real(wp), intent(out) :: f_neg     !! bound against motion toward -s [N], >= 0
+    end subroutine resistance_iface
+    !> Stroke capacity in each direction.
+    pure subroutine capacity_iface(self, cap_pos, cap_neg)
+      import :: buffer_law_t, wp
+      class(buffer_law_t), intent(in) :: self
+      real(wp), intent(out) :: cap_pos   !! stroke available toward +s [m]
+      real(wp), intent(out) :: cap_neg   !! stroke available toward -s [m] (0: rigid stop at s = 0)
+    end subroutine capacity_iface
+  end interface
+
+  !> Primary strut: multi-stage honeycomb crushed in shortening (eq. 21); rigid stop against
+  !! extension beyond the original length.
+  type, extends(buffer_law_t) :: primary_honeycomb_t
+    integer :: n_stages = 2                  !! number of stages [-]
+    real(wp) :: stage_force(5) = 0.0_wp      !! crush force of each stage [N]
+    real(wp) :: stage_end(5) = 0.0_wp        !! stroke at which each stage ends [m]
+    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
+    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
+  contains
+    procedure :: resistance => primary_resistance
+    procedure :: capacity => primary_capacity
+  end type primary_honeycomb_t
+
+  !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
+  type, extends(buffer_law_t) :: secondary_honeycomb_t
+    real(wp) :: f_lengthening = 43000.0_wp   !! crush force resisting lengthening (+s) [N]
+    real(wp) :: f_shortening = 30000.0_wp    !! crush force resisting shortening (-s) [N]
+    real(wp) :: stroke_lengthening = 0.27_wp !! stroke available toward +s [m]
+    real(wp) :: stroke_shortening = 0.27_wp  !! stroke available toward -s [m]
+    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
+    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
+  contains
+    procedure :: resistance => secondary_resistance
+    procedure :: capacity => secondary_capacity
+  end type secondary_honeycomb_t
+
+contains
+
+  pure subroutine primary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
+    class(primary_honeycomb_t), intent(in) :: self
+    real(wp), intent(in) :: s          !! stroke (shortening positive) [m]
+    real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
+    real(wp), intent(in) :: s_hismin   !! smallest stroke reached (the primary never crushes in extension: <= 0) [m]
+    real(wp), intent(in) :: s_hismax   !! largest stroke reached so far [m]
+    real(wp), intent(out) :: f_pos     !! bound against further shortening [N]
+    real(wp), intent(out) :: f_neg     !! bound against extension [N]
+    integer :: k
+    real(wp) :: cap
+    if (s >= s_hismax - history_tol) then
+      cap = self%stage_end(self%n_stages)
+      if (s <= cap) then
+        f_pos = self%stage_force(self%n_stages)
+        do k = 1, self%n_stages
+          if (s <= self%stage_end(k)) then
+            f_pos = self%stage_force(k)
+            exit
+          end if
+        end do
+      else
+        f_pos = self%stage_force(self%n_stages) + self%k_stop*(s - cap) + self%c_stop*max(s_dot, 0.0_wp)
+      end if
+    else
+      f_pos = 0.0_wp
+    end if
+    if (s <= max(0.0_wp, s_hismin) + history_tol) then
+      f_neg = rigid_force
+    else
+      f_neg = 0.0_wp
+    end if
+  end subroutine primary_resistance
+
+  pure subroutine primary_capacity(self, cap_pos, cap_neg)
+    class(primary_honeycomb_t), intent(in) :: self
+    real(wp), intent(out) :: cap_pos   !! stroke capacity in shortening [m]
+    real(wp), intent(out) :: cap_neg   !! 0: rigid stop at the original length [m]
+    cap_pos = self%stage_end(self%n_stages)
+    cap_neg = 0.0_wp
+  end subroutine primary_capacity
+
+  pure subroutine secondary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
+    class(secondary_honeycomb_t), intent(in) :: self
+    real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
+    real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
+    real(wp), intent(in) :: s_hismin   !! most negative stroke reached so far [m]
+    real(wp), intent(in) :: s_hismax   !! most positive stroke reached so far [m]
+    real(wp), intent(out) :: f_pos     !! bound against lengthening [N]
+    real(wp), intent(out) :: f_neg     !! bound against shortening [N]
+    if (s >= s_hismax - history_tol) then
+      f_pos = self%f_lengthening
+      if (s > self%stroke_lengthening) f_pos = f_pos + self%k_stop*(s - self%stroke_lengthening) &
+                                                + self%c_stop*max(s_dot, 0.0_wp)
+    else
+      f_pos = 0.0_wp
+    end if
+    if (s <= s_hismin + history_tol) then
+      f_neg = self%f_shortening
+      if (-s > self%stroke_shortening) f_neg = f_neg + self%k_stop*(-s - self%stroke_shortening) &
+                                                + self%c_stop*max(-s_dot, 0.0_wp)
+    else
+      f_neg = 0.0_wp
+    end if
+  end subroutine secondary_resistance
+
+  pure subroutine secondary_capacity(self, cap_pos, cap_neg)
+    class(secondary_honeycomb_t), intent(in) :: self
+    real(wp), intent(out) :: cap_pos   !! stroke available in lengthening [m]
+    real(wp), intent(out) :: cap_neg   !! stroke available in shortening [m]
+    cap_pos = self%stroke_lengthening
+    cap_neg = self%stroke_shortening
+  end subroutine secondary_capacity
+
+end module landyn_buffer

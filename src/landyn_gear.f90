@@ -1,0 +1,535 @@
+!> Landing-gear multibody dynamics (paper section 2.4, eqs. 12-16, Step 4 of section 3.1).
+!!
+!! Each gear has nine generalized coordinates q = (d1, th1, th2, db1, thb1, thb2, dc1, thc1, thc2),
+!! measured in the gear frame, which is fixed to the lander body: per strut its length and the two
+!! angles of its upper universal joint (parametrisation in landyn_kinematics). Six holonomic
+!! constraints (eq. 6) tie the secondaries' lower ball joints to the lugs on the primary's outer
+!! tube, leaving three degrees of freedom: the three strut lengths.
+!!
+!! Mass model (derived, see docs/theory.md): each strut is an upper part (mass m_o, centre at l_o
+!! from the upper joint, transverse inertia I_o) pivoting with the strut, and a lower part (m_i,
+!! centre at l_i from the lower joint, I_i) that also slides with the length; the primary carries
+!! the footpad mass at its lower end. Spin inertia about the strut axis is neglected. With
+!! u = R0 (sin t2, -sin t1 cos t2, cos t1 cos t2), |du/dt|^2 = cos^2 t2 t1dot^2 + t2dot^2, so the
+!! kinetic energy of one strut is T = 1/2 m_s Ldot^2 + 1/2 J(L) (cos^2 t2 t1dot^2 + t2dot^2) with
+!! m_s = m_i + m_end and J(L) = m_o l_o^2 + I_o + m_i (L - l_i)^2 + I_i + m_end L^2: the mass matrix
+!! is diagonal and the velocity-coupling terms follow from Lagrange's equations.
+!!
+!! The gear frame accelerates with the body: the leg parts feel the uniform field
+!! f = g - a_body(a_i) (gravity minus the acceleration of the upper primary joint), taken from the
+!! previous step. Rotational (centrifugal, Coriolis) frame terms are neglected: the body rotates at
+!! a few deg/s at most, and their effect on a leg of tens of kg is far below the crush levels.
+!!
+!! Crush logic (eqs. 12-13) as a complementarity with the buffer bounds of landyn_buffer: a strut
+!! at rest is LOCKED (its length rate is constrained to zero; the multiplier of that constraint is
+!! the equivalent dynamic force F of eq. 12). When F exceeds the buffer's bound in its direction,
+!! the strut crushes: it is released and the buffer transmits N = bound, the excess F - N drives
+!! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero locks again.
+!! This replaces the literal reading in which a strut keeps sliding with no force on it.
+!!
+!! The augmented system [[M, A^T], [A, 0]] [qdd; lambda] = [Q; b] (eqs. 14-16, A = Phi_q plus the
+!! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
+!! complement A M^-1 A^T is small and SPD); `gear_solve_augmented_full` solves the unreduced
+!! system with LU for cross-checking. After each semi-implicit Euler step the direct
+!! constraint-violation correction of Step 4 is applied: positions dq = -A^+ Phi iterated to the
+!! tolerance, then velocities dqdot = -A^+ A qdot, with A^+ = A^T (A A^T)^-1.
+module landyn_gear
+  use landyn_kinds, only: wp, msg_len
+  use landyn_buffer, only: buffer_law_t, rigid_force
+  use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, gear_constraints, gear_constraint_jacobian, &
+                               gear_constraint_gamma, footpad_jacobians, footpad_force_from_struts
+  use landyn_lapack, only: solve_spd, solve_general
+  implicit none
+  private
+
+  public :: gear_t, strut_mass_t, buffer_slot_t
+  public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
+  public :: gear_relative_kinetic_energy, gear_solve_augmented_full
+  public :: n_q, n_phi
+
+  integer, parameter :: n_q = 9      !! generalized coordinates per gear
+  integer, parameter :: n_phi = 6    !! holonomic constraints per gear
+  integer, parameter :: max_rows = n_phi + 3
+  integer, parameter :: idx_len(3) = [1, 4, 7]   !! index of each strut's length in q
+
+  !> Mass properties of one strut.
+  type :: strut_mass_t
+    real(wp) :: m_o = 0.0_wp    !! upper part mass [kg]
+    real(wp) :: l_o = 0.0_wp    !! upper part centre from the upper joint [m]
+    real(wp) :: i_o = 0.0_wp    !! upper part transverse inertia about its centre [kg m^2]
+    real(wp) :: m_i = 0.0_wp    !! lower (sliding) part mass [kg]
+    real(wp) :: l_i = 0.0_wp    !! lower part centre from the lower joint [m]
+    real(wp) :: i_i = 0.0_wp    !! lower part transverse inertia about its centre [kg m^2]
+    real(wp) :: m_end = 0.0_wp  !! point mass at the lower joint (footpad) [kg]
+  end type strut_mass_t
+
+  !> Holder for a polymorphic buffer law (one per strut).
+  type :: buffer_slot_t
+    class(buffer_law_t), allocatable :: law
+  end type buffer_slot_t
+
+  !> One landing gear: geometry, masses, buffers and state.
+  type :: gear_t
+    type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
+    real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
+    type(strut_mass_t) :: mass(3)                 !! primary, left, right
+    type(buffer_slot_t) :: buffer(3)              !! primary, left, right buffer laws
+    real(wp) :: sigma(3) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
+    real(wp) :: len0(3) = 0.0_wp                  !! nominal strut lengths [m]
+    ! state
+    real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
+    real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    logical :: locked(3) = .true.                 !! strut locked (not sliding)
+    integer :: dir(3) = 0                         !! sliding direction of an unlocked strut (+1: toward +s)
+    real(wp) :: s_lock(3) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: s_hismin(3) = 0.0_wp              !! most negative stroke reached [m]
+    real(wp) :: s_hismax(3) = 0.0_wp              !! most positive stroke reached [m]
+    real(wp) :: axial(3) = 0.0_wp                 !! axial buffer force, compression positive [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force the gear applies to the body at the footpad point, gear frame [N]
+    ! accumulators
+    real(wp) :: work_crush(3) = 0.0_wp            !! energy absorbed by each buffer [J]
+    real(wp) :: max_violation = 0.0_wp            !! largest constraint violation after correction [m]
+    real(wp) :: max_drift = 0.0_wp                !! largest constraint violation before correction [m]
+    integer :: n_correction_iter = 0              !! largest number of position-correction iterations in a step
+  end type gear_t
+
+contains
+
+  !> Sets up a gear at its nominal configuration, all struts locked and at rest.
+  subroutine gear_init(gear, geom, rot, mass, stat, errmsg)
+    type(gear_t), intent(inout) :: gear          !! gear to initialise (buffers must already be allocated)
+    type(gear_geometry_t), intent(in) :: geom    !! geometry in the gear frame
+    real(wp), intent(in) :: rot(3, 3)            !! gear frame -> lander frame [-]
+    type(strut_mass_t), intent(in) :: mass(3)    !! strut mass properties
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message on failure
+    integer :: k
+    stat = 0
+    gear%geom = geom
+    gear%rot = rot
+    gear%mass = mass
+    gear%len0 = [geom%L0, geom%Lb0, geom%Lc0]
+    gear%q = 0.0_wp
+    gear%q(idx_len) = gear%len0
+    gear%qd = 0.0_wp
+    gear%qdd = 0.0_wp
+    gear%locked = .true.
+    gear%dir = 0
+    gear%s_lock = 0.0_wp
+    gear%s_hismin = 0.0_wp
+    gear%s_hismax = 0.0_wp
+    gear%axial = 0.0_wp
+    gear%f_body = 0.0_wp
+    gear%work_crush = 0.0_wp
+    gear%max_violation = 0.0_wp
+    gear%max_drift = 0.0_wp
+    do k = 1, 3
+      if (.not. allocated(gear%buffer(k)%law)) then
+        stat = 1
+        errmsg = 'gear_init: buffer law not set'
+        return
+      end if
+      if (mass(k)%m_i + mass(k)%m_end <= 0.0_wp) then
+        stat = 1
+        errmsg = 'gear_init: a strut has no sliding mass'
+        return
+      end if
+    end do
+  end subroutine gear_init
+
+  !> Footpad position and velocity in the gear frame.
+  pure subroutine gear_footpad(gear, pos, vel)
+    type(gear_t), intent(in) :: gear     !! gear
+    real(wp), intent(out) :: pos(3)      !! footpad joint position, gear frame [m]
+    real(wp), intent(out) :: vel(3)      !! its velocity relative to the body, gear frame [m/s]
+    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3)
+    call strut_axis_derivs(gear%geom%R0p, gear%q(2), gear%q(3), u, du1, du2, d11, d12, d22)
+    pos = gear%geom%a + gear%q(1)*u
+    vel = gear%qd(1)*u + gear%q(1)*(du1*gear%qd(2) + du2*gear%qd(3))
+  end subroutine gear_footpad
+
+  !> Diagonal of the mass matrix M(q).
+  pure function gear_mass_matrix(gear, q) result(mdiag)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
+    real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
+    integer :: k, i0
+    real(wp) :: jr, jp, c
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      call strut_inertia(gear%mass(k), q(i0 + 1), jr, jp)
+      c = cos(q(i0 + 3))
+      mdiag(i0 + 1) = gear%mass(k)%m_i + gear%mass(k)%m_end
+      mdiag(i0 + 2) = jr*c*c
+      mdiag(i0 + 3) = jr
+    end do
+  end function gear_mass_matrix
+
+  !> Rotational inertia J(L) about the upper joint and its derivative dJ/dL.
+  pure subroutine strut_inertia(m, len, jr, jp)
+    type(strut_mass_t), intent(in) :: m   !! strut mass properties
+    real(wp), intent(in) :: len           !! strut length [m]
+    real(wp), intent(out) :: jr           !! J(L) [kg m^2]
+    real(wp), intent(out) :: jp           !! dJ/dL [kg m]
+    jr = m%m_o*m%l_o**2 + m%i_o + m%m_i*(len - m%l_i)**2 + m%i_i + m%m_end*len**2
+    jp = 2.0_wp*m%m_i*(len - m%l_i) + 2.0_wp*m%m_end*len
+  end subroutine strut_inertia
+
+  !> Generalized forces: velocity coupling (Q_ine), the uniform field (Q_grv) and the footpad force.
+  pure subroutine gear_generalized_forces(gear, q, qd, f_field, f_foot, q_ine, q_grv, q_ext)
+    type(gear_t), intent(in) :: gear     !! gear
+    real(wp), intent(in) :: q(n_q)       !! coordinates [m, rad]
+    real(wp), intent(in) :: qd(n_q)      !! velocities [m/s, rad/s]
+    real(wp), intent(in) :: f_field(3)   !! uniform acceleration field (gravity - frame acceleration), gear frame [m/s^2]
+    real(wp), intent(in) :: f_foot(3)    !! force on the footpad, gear frame [N]
+    real(wp), intent(out) :: q_ine(n_q)  !! velocity-coupling generalized force [N, N m]
+    real(wp), intent(out) :: q_grv(n_q)  !! field generalized force [N, N m]
+    real(wp), intent(out) :: q_ext(n_q)  !! footpad-force generalized force [N, N m]
+    integer :: k, i0
+    real(wp) :: jr, jp, c, sn, len, lend, t1d, t2d, ms, fm
+    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3)
+    q_ext = 0.0_wp
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      len = q(i0 + 1); lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
+      call strut_inertia(gear%mass(k), len, jr, jp)
+      c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
+      q_ine(i0 + 1) = 0.5_wp*jp*(c*c*t1d*t1d + t2d*t2d)
+      q_ine(i0 + 2) = -jp*lend*c*c*t1d + 2.0_wp*jr*c*sn*t1d*t2d
+      q_ine(i0 + 3) = -jp*lend*t2d - jr*c*sn*t1d*t1d
+      select case (k)
+      case (1)
+        call strut_axis_derivs(gear%geom%R0p, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
+      case (2)
+        call strut_axis_derivs(gear%geom%R0b, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
+      case default
+        call strut_axis_derivs(gear%geom%R0c, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
+      end select
+      ms = gear%mass(k)%m_i + gear%mass(k)%m_end
+      fm = gear%mass(k)%m_o*gear%mass(k)%l_o + gear%mass(k)%m_i*(len - gear%mass(k)%l_i) + gear%mass(k)%m_end*len
+      q_grv(i0 + 1) = ms*dot_product(u, f_field)
+      q_grv(i0 + 2) = fm*dot_product(du1, f_field)
+      q_grv(i0 + 3) = fm*dot_product(du2, f_field)
+      if (k == 1) then
+        q_ext(1) = dot_product(u, f_foot)
+        q_ext(2) = len*dot_product(du1, f_foot)
+        q_ext(3) = len*dot_product(du2, f_foot)
+      end if
+    end do
+  end subroutine gear_generalized_forces
+
+  !> Relative kinetic energy of the leg parts, 1/2 qd^T M qd.
+  pure function gear_relative_kinetic_energy(gear) result(t)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp) :: t                      !! kinetic energy relative to the body [J]
+    t = 0.5_wp*sum(gear_mass_matrix(gear, gear%q)*gear%qd**2)
+  end function gear_relative_kinetic_energy
+
+  !> Stroke and stroke rate of each strut (Table 3 sense).
+  pure subroutine strokes(gear, qv, qdv, s, sd)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp), intent(in) :: qv(n_q)    !! coordinates [m, rad]
+    real(wp), intent(in) :: qdv(n_q)   !! velocities [m/s, rad/s]
+    real(wp), intent(out) :: s(3)      !! strokes [m]
+    real(wp), intent(out) :: sd(3)     !! stroke rates [m/s]
+    s = gear%sigma*(qv(idx_len) - gear%len0)
+    sd = gear%sigma*qdv(idx_len)
+  end subroutine strokes
+
+  !> Accelerations, buffer forces and the force on the body for the current state (Steps 2-4).
+  !! f_foot is the ground force on the footpad and f_field the uniform field, both in the gear frame.
+  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg)
+    type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
+    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q)
+    real(wp) :: phq(n_phi, n_q), gam(n_phi)
+    real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
+    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand
+    real(wp) :: jac(3, 3), j2(3, 3), j3(3, 3)
+    integer :: k, iter, nrow, row_of(3)
+    logical :: changed
+
+    stat = 0
+    mdiag = gear_mass_matrix(gear, gear%q)
+    call gear_generalized_forces(gear, gear%q, gear%qd, f_field, f_foot, q_ine, q_grv, q_ext)
+    phq = gear_constraint_jacobian(gear%geom, gear%q)
+    gam = gear_constraint_gamma(gear%geom, gear%q, gear%qd)
+    call strokes(gear, gear%q, gear%qd, s, sd)
+    do k = 1, 3
+      call gear%buffer(k)%law%resistance(s(k), sd(k), gear%s_hismin(k), gear%s_hismax(k), fpos(k), fneg(k))
+    end do
+    ! Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
+    ! into a rigid stop is locked (plastic impact on the stop).
+    do k = 1, 3
+      if (.not. gear%locked(k)) then
+        if (sd(k) > 0.0_wp) gear%dir(k) = 1
+        if (sd(k) < 0.0_wp) gear%dir(k) = -1
+        if (gear%dir(k) > 0) then
+          gear%axial(k) = -gear%sigma(k)*fpos(k)
+          if (fpos(k) >= rigid_force) gear%locked(k) = .true.
+        else
+          gear%axial(k) = gear%sigma(k)*fneg(k)
+          if (fneg(k) >= rigid_force) gear%locked(k) = .true.
+        end if
+        if (gear%locked(k)) gear%s_lock(k) = s(k)
+      end if
+    end do
+
+    do iter = 1, 8
+      ! Assemble A = [Phi_q; lock rows], b = [gamma; 0] and the generalized force.
+      q_buf = 0.0_wp
+      nrow = n_phi
+      a(1:n_phi, :) = phq
+      b(1:n_phi) = gam
+      row_of = 0
+      do k = 1, 3
+        if (gear%locked(k)) then
+          nrow = nrow + 1
+          a(nrow, :) = 0.0_wp
+          a(nrow, idx_len(k)) = 1.0_wp
+          b(nrow) = 0.0_wp
+          row_of(k) = nrow
+        else
+          q_buf(idx_len(k)) = gear%axial(k)
+        end if
+      end do
+      q_tot = q_ine + q_grv + q_ext + q_buf
+      call solve_reduced(nrow, a, b, mdiag, q_tot, gear%qdd, lam, stat, errmsg)
+      if (stat /= 0) return
+      ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
+      changed = .false.
+      do k = 1, 3
+        if (.not. gear%locked(k)) cycle
+        gear%axial(k) = -lam(row_of(k))
+        ! Generalized force of the lock on the stroke s is sigma*axial: negative when it holds the
+        ! strut against motion toward +s (bounded by f_pos), positive against -s (bounded by f_neg).
+        demand = gear%sigma(k)*gear%axial(k)
+        if (-demand > fpos(k)) then
+          gear%locked(k) = .false.
+          gear%dir(k) = 1
+          gear%axial(k) = -gear%sigma(k)*fpos(k)
+          changed = .true.
+        else if (demand > fneg(k)) then
+          gear%locked(k) = .false.
+          gear%dir(k) = -1
+          gear%axial(k) = gear%sigma(k)*fneg(k)
+          changed = .true.
+        end if
+      end do
+      if (.not. changed) exit
+    end do
+
+    ! Force transmitted to the body at the footpad point: F = -J^-T axial (massless-leg equivalence, eq. 11).
+    call footpad_jacobians(gear%geom, gear%q, j2, j3, jac, stat, errmsg)
+    if (stat == 0) call footpad_force_from_struts(jac, -gear%axial, gear%f_body, stat, errmsg)
+    if (stat /= 0) errmsg = 'gear: footpad Jacobian is singular (struts aligned): '//trim(errmsg)
+  end subroutine gear_dynamics
+
+  !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
+  subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
+    integer, intent(in) :: nrow                  !! number of constraint rows
+    real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
+    real(wp), intent(in) :: b(:)                 !! constraint right-hand side
+    real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
+    real(wp), intent(in) :: qf(n_q)              !! generalized force
+    real(wp), intent(out) :: qdd(n_q)            !! accelerations
+    real(wp), intent(out) :: lam(:)              !! multipliers
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
+    integer :: i, j
+    do j = 1, n_q
+      aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
+    end do
+    do j = 1, nrow
+      do i = 1, j
+        s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
+      end do
+    end do
+    r(1:nrow) = matmul(aw(1:nrow, :), qf) - b(1:nrow)
+    call solve_spd(nrow, s(1:nrow, 1:nrow), r(1:nrow), stat, errmsg, 'gear DAE (A M^-1 A^T)')
+    if (stat /= 0) return
+    lam(1:nrow) = r(1:nrow)
+    qdd = (qf - matmul(lam(1:nrow), a(1:nrow, 1:n_q)))/mdiag
+  end subroutine solve_reduced
+
+  !> The unreduced augmented system [[M, A^T],[A, 0]] [qdd; lam] = [Q; b] solved by LU (for checks).
+  subroutine gear_solve_augmented_full(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
+    integer, intent(in) :: nrow                  !! number of constraint rows
+    real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
+    real(wp), intent(in) :: b(:)                 !! constraint right-hand side
+    real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
+    real(wp), intent(in) :: qf(n_q)              !! generalized force
+    real(wp), intent(out) :: qdd(n_q)            !! accelerations
+    real(wp), intent(out) :: lam(:)              !! multipliers
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: big(n_q + max_rows, n_q + max_rows), rhs(n_q + max_rows)
+    integer :: n, j
+    n = n_q + nrow
+    big = 0.0_wp
+    do j = 1, n_q
+      big(j, j) = mdiag(j)
+    end do
+    big(1:n_q, n_q + 1:n) = transpose(a(1:nrow, 1:n_q))
+    big(n_q + 1:n, 1:n_q) = a(1:nrow, 1:n_q)
+    rhs(1:n_q) = qf
+    rhs(n_q + 1:n) = b(1:nrow)
+    call solve_general(n, big(1:n, 1:n), rhs(1:n), stat, errmsg, 'gear DAE (augmented)')
+    if (stat /= 0) return
+    qdd = rhs(1:n_q)
+    lam(1:nrow) = rhs(n_q + 1:n)
+  end subroutine gear_solve_augmented_full
+
+  !> Advances the gear one step (semi-implicit Euler) and applies the direct constraint-violation
+  !! correction (positions, then velocities). Updates the crush history and the absorbed work.
+  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg)
+    type(gear_t), intent(inout) :: gear          !! gear
+    real(wp), intent(in) :: dt                   !! time step [s]
+    real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
+    integer, intent(in) :: max_iter              !! iteration cap of the position correction
+    real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q)
+    real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg
+    integer :: k, iter, nrow
+    character(len=msg_len) :: buf
+
+    stat = 0
+    call strokes(gear, gear%q, gear%qd, s0, sd0)
+    qd_new = gear%qd + gear%qdd*dt
+    call strokes(gear, gear%q, qd_new, s1, sd1)
+    ! A crushing strut whose sliding speed reaches zero locks (it cannot be driven back by its own
+    ! buffer force); a free strut (bound 0 in its direction of motion) keeps moving.
+    do k = 1, 3
+      if (gear%locked(k)) cycle
+      call gear%buffer(k)%law%resistance(s0(k), sd0(k), gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
+      if (gear%dir(k) > 0 .and. sd1(k) <= 0.0_wp .and. fpos > 0.0_wp) gear%locked(k) = .true.
+      if (gear%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%locked(k) = .true.
+      if (gear%locked(k)) gear%s_lock(k) = s0(k)
+    end do
+    gear%qd = qd_new
+    ! Crush work during this step: the buffer force times the stroke increment, for sliding struts.
+    gear%q = gear%q + gear%qd*dt
+    call strokes(gear, gear%q, gear%qd, s1, sd1)
+    do k = 1, 3
+      if (.not. gear%locked(k)) then
+        gear%work_crush(k) = gear%work_crush(k) + gear%sigma(k)*gear%axial(k)*(s0(k) - s1(k))
+      end if
+    end do
+
+    ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r.
+    call build_rows(gear, gear%q, a, nrow)
+    call position_residual(gear, gear%q, nrow, r)
+    viol = maxval(abs(r(1:n_phi)))
+    gear%max_drift = max(gear%max_drift, viol)
+    if (viol > max_drift) then
+      stat = 2
+      write (buf, '(a,es10.3,a,es10.3,a)') 'constraint drift ', viol, ' m in one step exceeds ', max_drift, &
+        ' m: the time step is too large for this landing (reduce &simulation dt)'
+      errmsg = buf
+      return
+    end if
+    do iter = 1, max_iter
+      if (maxval(abs(r(1:nrow))) <= tol) exit
+      call min_norm_correction(nrow, a, r, gear%q, stat, errmsg)
+      if (stat /= 0) return
+      call build_rows(gear, gear%q, a, nrow)
+      call position_residual(gear, gear%q, nrow, r)
+      gear%n_correction_iter = max(gear%n_correction_iter, iter)
+    end do
+    viol = maxval(abs(r(1:nrow)))
+    if (viol > tol) then
+      stat = 3
+      write (buf, '(a,i0,a,es10.3,a,es10.3,a)') 'position constraint correction did not converge in ', max_iter, &
+        ' iterations (violation ', viol, ' m, tolerance ', tol, ' m)'
+      errmsg = buf
+      return
+    end if
+    gear%max_violation = max(gear%max_violation, viol)
+    ! Velocity correction: A qdot = 0 (constraints are scleronomic; locks hold the stroke rate at 0).
+    do iter = 1, max_iter
+      r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
+      if (maxval(abs(r(1:nrow))) <= tol) exit
+      call min_norm_correction(nrow, a, r, gear%qd, stat, errmsg)
+      if (stat /= 0) return
+    end do
+    r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
+    if (maxval(abs(r(1:nrow))) > tol) then
+      stat = 3
+      write (buf, '(a,es10.3,a)') 'velocity constraint correction did not converge (violation ', &
+        maxval(abs(r(1:nrow))), ' m/s)'
+      errmsg = buf
+      return
+    end if
+    ! Crush history.
+    call strokes(gear, gear%q, gear%qd, s1, sd1)
+    gear%s_hismax = max(gear%s_hismax, s1)
+    gear%s_hismin = min(gear%s_hismin, s1)
+  end subroutine gear_integrate
+
+  !> Rows of the correction: Phi_q and one row per locked strut.
+  subroutine build_rows(gear, qv, a, nrow)
+    type(gear_t), intent(in) :: gear           !! gear
+    real(wp), intent(in) :: qv(n_q)            !! coordinates
+    real(wp), intent(out) :: a(max_rows, n_q)  !! rows
+    integer, intent(out) :: nrow               !! number of rows
+    integer :: k
+    a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv)
+    nrow = n_phi
+    do k = 1, 3
+      if (gear%locked(k)) then
+        nrow = nrow + 1
+        a(nrow, :) = 0.0_wp
+        a(nrow, idx_len(k)) = gear%sigma(k)
+      end if
+    end do
+  end subroutine build_rows
+
+  !> Position residual: Phi(q) and the locked strokes' departure from their held values.
+  subroutine position_residual(gear, qv, nrow, r)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: qv(n_q)         !! coordinates
+    integer, intent(in) :: nrow             !! number of rows
+    real(wp), intent(out) :: r(max_rows)    !! residual
+    integer :: k, row
+    real(wp) :: s(3), sd(3)
+    r(1:n_phi) = gear_constraints(gear%geom, qv)
+    call strokes(gear, qv, gear%qd, s, sd)
+    row = n_phi
+    do k = 1, 3
+      if (gear%locked(k)) then
+        row = row + 1
+        r(row) = s(k) - gear%s_lock(k)
+      end if
+    end do
+    if (row /= nrow) r(row + 1:) = 0.0_wp
+  end subroutine position_residual
+
+  !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
+  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+    integer, intent(in) :: nrow                  !! rows
+    real(wp), intent(in) :: a(:, :)              !! Jacobian rows
+    real(wp), intent(in) :: r(:)                 !! residual
+    real(wp), intent(inout) :: x(n_q)            !! vector to correct
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: s(max_rows, max_rows), y(max_rows)
+    integer :: i, j
+    do j = 1, nrow
+      do i = 1, j
+        s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+      end do
+    end do
+    y(1:nrow) = r(1:nrow)
+    call solve_spd(nrow, s(1:nrow, 1:nrow), y(1:nrow), stat, errmsg, 'constraint correction (Phi_q Phi_q^T)')
+    if (stat /= 0) return
+    x = x - matmul(y(1:nrow), a(1:nrow, 1:n_q))
+  end subroutine min_norm_correction
+
+end module landyn_gear

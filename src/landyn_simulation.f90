@@ -1,0 +1,552 @@
+!> One touchdown simulation: set-up from the resolved input, the fixed-step time loop of the
+!! paper's Fig. 6 (Steps 1-7), the energy audit and the summary. Library code: returns a status
+!! and a message; progress goes to a unit the caller chooses.
+!!
+!! Per step (all forces from the state at t_n, then semi-implicit Euler):
+!!   2. footpad positions and velocities (body kinematics + gear coordinates), penetration and
+!!      ground force in each footpad's local surface frame (contact and friction laws);
+!!   3.-4. per gear: crush logic and the gear DAE (landyn_gear), force transmitted to the body;
+!!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
+!!   4. gear step with the direct constraint-violation correction.
+module landyn_simulation
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use landyn_kinds, only: wp, msg_len, max_gears, g_earth, rad2deg
+  use landyn_config, only: landyn_input_t, is_set
+  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3
+  use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
+                         body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
+  use landyn_gear, only: gear_t, strut_mass_t, gear_init, gear_dynamics, gear_integrate, gear_footpad, &
+                         gear_relative_kinetic_energy
+  use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
+  use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
+                            to_global
+  use landyn_contact, only: contact_law_t, make_contact_law
+  use landyn_friction, only: friction_law_t, make_friction_law
+  implicit none
+  private
+
+  public :: sim_result_t, run_simulation, setup_model, model_t
+
+  !> Everything the time loop integrates.
+  type :: model_t
+    integer :: n_gears = 0
+    type(body_t) :: body
+    type(gear_t) :: gear(max_gears)
+    type(terrain_plane_t) :: plane(max_gears)
+    class(contact_law_t), allocatable :: contact
+    class(friction_law_t), allocatable :: friction
+    real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
+    real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
+  end type model_t
+
+  !> Time series (columns = output samples) and summary of one run.
+  type :: sim_result_t
+    integer :: n_gears = 0
+    integer :: n_out = 0                                   !! samples stored
+    real(wp), allocatable :: t(:)                          !! [s]
+    real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
+    real(wp), allocatable :: mc_position(:, :)             !! (3, n) mass centre, global [m]
+    real(wp), allocatable :: velocity(:, :)                !! (3, n) mass-centre velocity, global [m/s]
+    real(wp), allocatable :: euler(:, :)                   !! (3, n) yaw, pitch, roll [deg]
+    real(wp), allocatable :: rate(:, :)                    !! (3, n) body rates p, q, r [deg/s]
+    real(wp), allocatable :: overload(:, :)                !! (3, n) (a - g)/g0 in lander axes [g]
+    real(wp), allocatable :: strut_length(:, :, :)         !! (3, n_gears, n) [m]
+    real(wp), allocatable :: stroke(:, :, :)               !! (3, n_gears, n) Table-3 sense [m]
+    real(wp), allocatable :: strut_force(:, :, :)          !! (3, n_gears, n) axial, compression positive [N]
+    real(wp), allocatable :: footpad_position(:, :, :)     !! (3, n_gears, n) global [m]
+    real(wp), allocatable :: ground_force(:, :, :)         !! (3, n_gears, n) on the footpad, global [N]
+    real(wp), allocatable :: normal_force(:, :)            !! (n_gears, n) [N]
+    real(wp), allocatable :: friction_force(:, :)          !! (n_gears, n) magnitude [N]
+    real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
+    real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
+    real(wp), allocatable :: energy(:, :)                  !! (n_energy, n) audit channels [J]
+    ! summary
+    real(wp), allocatable :: crush_net(:, :)               !! (3, n_gears) signed net crush [m]
+    real(wp), allocatable :: crush_pos(:, :)               !! (3, n_gears) crushed toward +s [m]
+    real(wp), allocatable :: crush_neg(:, :)               !! (3, n_gears) crushed toward -s [m]
+    real(wp), allocatable :: stroke_final(:, :)            !! (3, n_gears) [m]
+    real(wp), allocatable :: stroke_margin(:, :)           !! (3, n_gears) capacity minus crushed, worst direction [m]
+    real(wp), allocatable :: crush_work(:, :)              !! (3, n_gears) [J]
+    integer, allocatable :: bottomed(:, :)                 !! (3, n_gears) 1 when a stroke exceeded capacity
+    real(wp), allocatable :: peak_penetration(:)           !! (n_gears) [m]
+    real(wp), allocatable :: slide_distance(:)             !! (n_gears) [m]
+    real(wp), allocatable :: peak_normal_force(:)          !! (n_gears) [N]
+    real(wp), allocatable :: peak_strut_force(:, :)        !! (3, n_gears) largest |axial| [N]
+    real(wp) :: peak_overload = 0.0_wp                     !! largest |a - g|/g0 [g]
+    real(wp) :: t_peak_overload = 0.0_wp                   !! [s]
+    real(wp) :: final_euler(3) = 0.0_wp                    !! [deg]
+    real(wp) :: final_tilt = 0.0_wp                        !! [deg]
+    real(wp) :: max_tilt = 0.0_wp                          !! [deg]
+    logical :: tipped_over = .false.
+    logical :: at_rest = .false.
+    character(len=64) :: end_reason = ''
+    real(wp) :: energy_input = 0.0_wp                      !! initial KE + potential released + thrust work [J]
+    real(wp) :: energy_residual = 0.0_wp                   !! final residual / energy_input [-]
+    real(wp) :: max_violation = 0.0_wp                     !! after correction [m]
+    real(wp) :: max_drift = 0.0_wp                         !! before correction [m]
+    real(wp) :: t_final = 0.0_wp                           !! [s]
+    integer :: n_steps = 0
+    real(wp) :: wall_time = 0.0_wp                         !! [s]
+    real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
+  end type sim_result_t
+
+  integer, parameter, public :: n_energy = 10
+  character(len=24), parameter, public :: energy_names(n_energy) = [character(len=24) :: &
+    'kinetic_body', 'kinetic_legs', 'potential_released', 'honeycomb_work', 'contact_damping', &
+    'contact_elastic', 'friction', 'thrust_work', 'input', 'residual']
+
+contains
+
+  !> Builds the model (body, gears, terrain, laws) and places it at t = 0.
+  subroutine setup_model(inp, model, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(model_t), intent(out) :: model         !! model at t = 0
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! message on failure
+    type(gear_geometry_t) :: geom
+    type(strut_mass_t) :: sm(3)
+    real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
+    integer :: i, k
+    character(len=msg_len) :: m2
+
+    stat = 0
+    model%n_gears = inp%gears%n_gears
+    model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
+    call make_contact_law(inp%contact, model%contact, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    call make_friction_law(inp%friction, model%friction, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+
+    sm(1) = strut_mass_t(inp%primary%outer_mass, inp%primary%outer_cm, inp%primary%outer_inertia, &
+                         inp%primary%inner_mass, inp%primary%inner_cm, inp%primary%inner_inertia, &
+                         inp%primary%footpad_mass)
+    sm(2) = strut_mass_t(inp%secondary%outer_mass, inp%secondary%outer_cm, inp%secondary%outer_inertia, &
+                         inp%secondary%inner_mass, inp%secondary%inner_cm, inp%secondary%inner_inertia, 0.0_wp)
+    sm(3) = sm(2)
+    do i = 1, model%n_gears
+      rot = rot_z(inp%gears%rotation(i))
+      pts(:, 1) = inp%gears%point_a(:, i)
+      pts(:, 2) = inp%gears%point_b(:, i)
+      pts(:, 3) = inp%gears%point_c(:, i)
+      pts(:, 4) = inp%gears%point_d(:, i)
+      pts(:, 5) = inp%gears%point_e(:, i)
+      pts(:, 6) = inp%gears%point_f(:, i)
+      model%point_a(:, i) = pts(:, 1)
+      pts = matmul(transpose(rot), pts)          ! lander frame -> gear frame
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
+      if (stat /= 0) then
+        write (errmsg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
+        return
+      end if
+      allocate (model%gear(i)%buffer(1)%law, source=primary_honeycomb_t(n_stages=inp%primary%n_stages, &
+        stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
+        k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping))
+      do k = 2, 3
+        allocate (model%gear(i)%buffer(k)%law, source=secondary_honeycomb_t( &
+          f_lengthening=inp%secondary%force_lengthening, f_shortening=inp%secondary%force_shortening, &
+          stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
+          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping))
+      end do
+      call gear_init(model%gear(i), geom, rot, sm, stat, m2)
+      if (stat /= 0) then; errmsg = m2; return; end if
+    end do
+
+    ! Placement: the given position, or the lowest footpad at `clearance` above its surface.
+    if (all(is_set(inp%initial%position))) then
+      x_ol = inp%initial%position
+    else
+      x_ol = 0.0_wp
+    end if
+    call body_init(model%body, inp%lander%mass, &
+      inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
+      inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    if (.not. all(is_set(inp%initial%position))) then
+      dz = huge(1.0_wp)
+      do i = 1, model%n_gears
+        call gear_footpad(model%gear(i), pos, vel)
+        xd = body_point_position(model%body, matmul(model%gear(i)%rot, pos))
+        ! moving the body down by dz raises the penetration by dz * (-n_z) = dz cos(slope)
+        dz = min(dz, (-inp%initial%clearance - penetration(model%plane(i), xd))/cos(inp%terrain%slope(i)))
+      end do
+      x_ol = [0.0_wp, 0.0_wp, dz]
+      call body_init(model%body, inp%lander%mass, &
+        inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
+        inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
+      if (stat /= 0) then; errmsg = m2; return; end if
+    end if
+    model%body%acc = model%g_vec     ! free fall before touchdown
+  end subroutine setup_model
+
+  !> Runs one landing. `progress_unit` < 0 silences progress reports.
+  subroutine run_simulation(inp, res, stat, errmsg, progress_unit)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_result_t), intent(out) :: res      !! time series and summary
+    integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
+
+    type(model_t), target :: model
+    integer :: ng, n_cap, nstep, n, i, next_progress
+    real(wp) :: dt, t, t_next_out, r(3, 3), rg(3, 3)
+    real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
+    real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
+    real(wp) :: vslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
+    real(wp) :: xd_prev(3, max_gears), delta_prev(max_gears), fn_prev(max_gears), fground_prev(3, max_gears)
+    real(wp) :: xt_prev(3), thrust_prev(3), xt(3)
+    real(wp) :: w_normal, w_friction, w_thrust, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
+    real(wp) :: speed_char, ovl(3)
+    logical :: touched
+    integer(kind=8) :: c0, c1, crate
+    character(len=msg_len) :: m2
+
+    call system_clock(c0, crate)
+    stat = 0
+    ng = inp%gears%n_gears
+    res%n_gears = ng
+    call setup_model(inp, model, stat, errmsg)
+    if (stat /= 0) return
+    res%initial_position = model%body%x - matmul(model%body%r, model%body%mc)
+
+    dt = inp%simulation%dt
+    nstep = nint(inp%simulation%t_end/dt)
+    n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
+    call allocate_result(res, ng, n_cap)
+
+    l_char = 0.0_wp
+    do i = 1, ng
+      l_char = max(l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
+    end do
+
+    ke0 = body_kinetic_energy(model%body)
+    pe0 = -model%body%mass*inp%simulation%gravity*model%body%x(3)
+    w_normal = 0.0_wp; w_friction = 0.0_wp; w_thrust = 0.0_wp
+    fn_prev = 0.0_wp; fground_prev = 0.0_wp; thrust_prev = 0.0_wp
+    delta_prev = 0.0_wp; xd_prev = 0.0_wp
+    xt_prev = body_point_position(model%body, inp%engine%point)
+    rest_clock = 0.0_wp
+    touched = .false.
+    t_next_out = 0.0_wp
+    next_progress = 1
+    res%end_reason = 'end time reached'
+
+    do n = 0, nstep
+      t = n*dt
+      r = model%body%r
+      ! ---- Step 2: footpads and ground forces
+      do i = 1, ng
+        call gear_footpad(model%gear(i), pos_g, vel_g)
+        d_l = matmul(model%gear(i)%rot, pos_g)
+        xd(:, i) = body_point_position(model%body, d_l)
+        vd(:, i) = body_point_velocity(model%body, d_l) + matmul(r, matmul(model%gear(i)%rot, vel_g))
+        delta(i) = penetration(model%plane(i), xd(:, i))
+        delta_dot(i) = penetration_rate(model%plane(i), vd(:, i))
+        if (delta(i) > 0.0_wp) then
+          fn(i) = model%contact%normal_force(delta(i), delta_dot(i))
+          touched = .true.
+        else
+          fn(i) = 0.0_wp
+        end if
+        vslip = slip_velocity(model%plane(i), vd(:, i))
+        ft = model%friction%friction_force(vslip, fn(i))
+        fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
+      end do
+      ! ---- energy audit: work of the ground forces over the last step (force x displacement)
+      if (n > 0) then
+        do i = 1, ng
+          w_normal = w_normal + fn_prev(i)*(delta(i) - delta_prev(i))
+          w_friction = w_friction - dot_product(fground_prev(:, i), xd(:, i) - xd_prev(:, i)) &
+                       - fn_prev(i)*(delta(i) - delta_prev(i))
+          if (fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
+            + norm2(slip_velocity(model%plane(i), xd(:, i) - xd_prev(:, i)))
+        end do
+        xt = body_point_position(model%body, inp%engine%point)
+        w_thrust = w_thrust + dot_product(thrust_prev, xt - xt_prev)
+        xt_prev = xt
+      end if
+      do i = 1, ng
+        res%peak_penetration(i) = max(res%peak_penetration(i), delta(i))
+        res%peak_normal_force(i) = max(res%peak_normal_force(i), fn(i))
+      end do
+      xd_prev = xd; delta_prev = delta; fn_prev = fn; fground_prev = fground
+
+      ! ---- Steps 3-4: gear dynamics and crush logic
+      force = model%body%mass*model%g_vec
+      moment = 0.0_wp
+      do i = 1, ng
+        rg = matmul(r, model%gear(i)%rot)
+        field = matmul(transpose(model%gear(i)%rot), matmul(transpose(r), model%g_vec) &
+                - body_point_acceleration(model%body, model%point_a(:, i)))
+        ffoot = matmul(transpose(rg), fground(:, i))
+        call gear_dynamics(model%gear(i), ffoot, field, stat, m2)
+        if (stat /= 0) then
+          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+          call finish(model, res, t)
+          return
+        end if
+        call gear_footpad(model%gear(i), pos_g, vel_g)
+        d_l = matmul(model%gear(i)%rot, pos_g)
+        fb_l = matmul(model%gear(i)%rot, model%gear(i)%f_body)
+        force = force + matmul(r, fb_l)
+        moment = moment + cross3(d_l - model%body%mc, fb_l)
+      end do
+      ! engine thrust
+      thrust_l = 0.0_wp
+      if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) then
+        thrust_l = inp%engine%thrust*inp%engine%direction
+        moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
+      end if
+      thrust_g = matmul(r, thrust_l)
+      force = force + thrust_g
+      thrust_prev = thrust_g
+      ! ---- Step 6: body accelerations
+      call body_accelerations(model%body, force, moment)
+      ovl = matmul(transpose(r), model%body%acc - model%g_vec)/g_earth
+      if (norm2(ovl) > res%peak_overload) then
+        res%peak_overload = norm2(ovl)
+        res%t_peak_overload = t
+      end if
+
+      ! ---- output sample (state at t_n with the forces at t_n)
+      if (t >= t_next_out - 0.5_wp*dt) then
+        ke_legs = 0.0_wp
+        do i = 1, ng
+          ke_legs = ke_legs + gear_relative_kinetic_energy(model%gear(i))
+        end do
+        e_el = 0.0_wp
+        do i = 1, ng
+          if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i))
+        end do
+        call record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, &
+                    ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
+        t_next_out = t_next_out + inp%output%interval
+      end if
+      if (n == nstep) exit
+
+      ! ---- Steps 4 and 6: advance the body and the gears
+      call body_step(model%body, dt)
+      do i = 1, ng
+        call gear_integrate(model%gear(i), dt, inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
+                            inp%simulation%max_constraint_drift, stat, m2)
+        if (stat /= 0) then
+          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t + dt, ' s: ', trim(m2)
+          call finish(model, res, t + dt)
+          return
+        end if
+      end do
+      res%n_steps = n + 1
+
+      ! ---- divergence, tip-over and rest checks
+      if (.not. (all(ieee_is_finite(model%body%x)) .and. all(ieee_is_finite(model%body%v)) .and. &
+                 all(ieee_is_finite(model%body%euler)) .and. all(ieee_is_finite(model%body%omega)))) then
+        stat = 4
+        write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t + dt, &
+          ' s: the integration diverged (reduce &simulation dt or check the input)'
+        call finish(model, res, t + dt)
+        return
+      end if
+      tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))
+      res%max_tilt = max(res%max_tilt, tilt*rad2deg)
+      if (tilt > inp%simulation%tipover_angle) then
+        res%tipped_over = .true.
+        res%end_reason = 'tipped over'
+        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+        call finish(model, res, t + dt)
+        call wall(res, c0, crate)
+        return
+      end if
+      speed_char = norm2(model%body%v) + norm2(model%body%omega)*l_char
+      if (touched .and. speed_char < inp%simulation%rest_speed) then
+        rest_clock = rest_clock + dt
+      else
+        rest_clock = 0.0_wp
+      end if
+      if (inp%simulation%stop_at_rest .and. rest_clock >= inp%simulation%rest_time) then
+        res%at_rest = .true.
+        res%end_reason = 'at rest'
+        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+        call finish(model, res, t + dt)
+        call wall(res, c0, crate)
+        return
+      end if
+      if (progress_unit >= 0) then
+        if ((n + 1) >= next_progress*nstep/20) then
+          write (progress_unit, '(a,f8.4,a,f8.4,a,i3,a,f9.2,a)') 'landyn: t = ', t + dt, ' s of ', &
+            inp%simulation%t_end, ' s (', 5*next_progress, ' %), max primary stroke ', &
+            1000.0_wp*maxval([(model%gear(i)%s_hismax(1), i=1, ng)]), ' mm'
+          flush (progress_unit)
+          next_progress = next_progress + 1
+        end if
+      end if
+    end do
+    res%at_rest = rest_clock >= inp%simulation%rest_time
+    call finish(model, res, nstep*dt)
+    call wall(res, c0, crate)
+
+  contains
+
+    subroutine wall(res_, c0_, crate_)
+      type(sim_result_t), intent(inout) :: res_  !! result
+      integer(kind=8), intent(in) :: c0_         !! start count
+      integer(kind=8), intent(in) :: crate_      !! count rate
+      call system_clock(c1)
+      res_%wall_time = real(c1 - c0_, wp)/real(crate_, wp)
+    end subroutine wall
+
+  end subroutine run_simulation
+
+  !> Records one output sample.
+  subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, &
+                    ke0, pe0, ke_legs, e_el, gravity)
+    type(sim_result_t), intent(inout) :: res      !! result
+    type(model_t), intent(in) :: model            !! model
+    real(wp), intent(in) :: t                     !! time [s]
+    real(wp), intent(in) :: ovl(3)                !! overload [g]
+    real(wp), intent(in) :: xd(:, :)              !! footpad positions [m]
+    real(wp), intent(in) :: fground(:, :)         !! ground forces [N]
+    real(wp), intent(in) :: fn(:)                 !! normal forces [N]
+    real(wp), intent(in) :: delta(:)              !! penetrations [m]
+    real(wp), intent(in) :: vd(:, :)              !! footpad velocities [m/s]
+    real(wp), intent(in) :: w_normal              !! work into the ground (normal) [J]
+    real(wp), intent(in) :: w_friction            !! friction dissipation [J]
+    real(wp), intent(in) :: w_thrust              !! thrust work [J]
+    real(wp), intent(in) :: ke0                   !! initial kinetic energy [J]
+    real(wp), intent(in) :: pe0                   !! initial potential energy [J]
+    real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
+    real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
+    real(wp), intent(in) :: gravity               !! [m/s^2]
+    integer :: k, i
+    real(wp) :: s(3), pe, ke, crush, e_in
+    if (res%n_out >= size(res%t)) return
+    res%n_out = res%n_out + 1
+    k = res%n_out
+    res%t(k) = t
+    res%mc_position(:, k) = model%body%x
+    res%position(:, k) = model%body%x - matmul(model%body%r, model%body%mc)
+    res%velocity(:, k) = model%body%v
+    res%euler(:, k) = model%body%euler*rad2deg
+    res%rate(:, k) = model%body%omega*rad2deg
+    res%overload(:, k) = ovl
+    crush = 0.0_wp
+    do i = 1, res%n_gears
+      associate (g => model%gear(i))
+        res%strut_length(:, i, k) = g%q([1, 4, 7])
+        s = g%sigma*(g%q([1, 4, 7]) - g%len0)
+        res%stroke(:, i, k) = s
+        res%strut_force(:, i, k) = g%axial
+        crush = crush + sum(g%work_crush)
+      end associate
+      res%footpad_position(:, i, k) = xd(:, i)
+      res%ground_force(:, i, k) = fground(:, i)
+      res%normal_force(i, k) = fn(i)
+      res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(fground(:, i), fground(:, i)) - fn(i)**2))
+      res%penetration(i, k) = delta(i)
+      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), vd(:, i)))
+      res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%axial))
+    end do
+    ke = body_kinetic_energy(model%body)
+    pe = -model%body%mass*gravity*model%body%x(3)
+    e_in = ke0 + (pe0 - pe) + w_thrust
+    res%energy(1, k) = ke
+    res%energy(2, k) = ke_legs
+    res%energy(3, k) = pe0 - pe
+    res%energy(4, k) = crush
+    res%energy(5, k) = w_normal - e_el
+    res%energy(6, k) = e_el
+    res%energy(7, k) = w_friction
+    res%energy(8, k) = w_thrust
+    res%energy(9, k) = ke0 + (pe0 - pe) + w_thrust
+    res%energy(10, k) = e_in - (ke + ke_legs + crush + w_normal + w_friction)
+    res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
+    res%energy_residual = res%energy(10, k)/res%energy_input
+  end subroutine record
+
+  !> Records a final sample when the run ends between output times.
+  subroutine record_final(res, model, t, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+    type(sim_result_t), intent(inout) :: res      !! result
+    type(model_t), intent(in) :: model            !! model
+    real(wp), intent(in) :: t                     !! time [s]
+    type(landyn_input_t), intent(in) :: inp       !! input
+    real(wp), intent(in) :: ke0, pe0              !! initial energies [J]
+    real(wp), intent(in) :: w_normal, w_friction, w_thrust  !! accumulated works [J]
+    real(wp) :: xd(3, max_gears), vd(3, max_gears), fg(3, max_gears), fn(max_gears), delta(max_gears)
+    real(wp) :: pos_g(3), vel_g(3), d_l(3), ke_legs, e_el
+    integer :: i
+    if (res%n_out > 0) then
+      if (res%t(res%n_out) >= t - 1.0e-12_wp) return
+    end if
+    ke_legs = 0.0_wp; e_el = 0.0_wp
+    do i = 1, res%n_gears
+      call gear_footpad(model%gear(i), pos_g, vel_g)
+      d_l = matmul(model%gear(i)%rot, pos_g)
+      xd(:, i) = body_point_position(model%body, d_l)
+      vd(:, i) = body_point_velocity(model%body, d_l) + matmul(model%body%r, matmul(model%gear(i)%rot, vel_g))
+      delta(i) = penetration(model%plane(i), xd(:, i))
+      fn(i) = 0.0_wp
+      fg(:, i) = 0.0_wp
+      if (delta(i) > 0.0_wp) then
+        fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
+        e_el = e_el + model%contact%elastic_energy(delta(i))
+      end if
+      ke_legs = ke_legs + gear_relative_kinetic_energy(model%gear(i))
+    end do
+    call record(res, model, t, [0.0_wp, 0.0_wp, 0.0_wp], xd, fg, fn, delta, vd, w_normal, w_friction, w_thrust, &
+                ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
+  end subroutine record_final
+
+  !> Fills the summary from the final model state.
+  subroutine finish(model, res, t)
+    type(model_t), intent(in) :: model         !! model
+    type(sim_result_t), intent(inout) :: res   !! result
+    real(wp), intent(in) :: t                  !! final time [s]
+    integer :: i, k
+    real(wp) :: s(3), cap_pos, cap_neg, mpos, mneg
+    res%t_final = t
+    do i = 1, res%n_gears
+      associate (g => model%gear(i))
+        s = g%sigma*(g%q([1, 4, 7]) - g%len0)
+        res%stroke_final(:, i) = s
+        res%crush_pos(:, i) = g%s_hismax
+        res%crush_neg(:, i) = -g%s_hismin
+        res%crush_net(:, i) = g%s_hismax + g%s_hismin
+        res%crush_work(:, i) = g%work_crush
+        do k = 1, 3
+          call g%buffer(k)%law%capacity(cap_pos, cap_neg)
+          mpos = cap_pos - g%s_hismax(k)
+          mneg = huge(1.0_wp)
+          if (cap_neg > 0.0_wp) mneg = cap_neg + g%s_hismin(k)
+          res%stroke_margin(k, i) = min(mpos, mneg)
+          res%bottomed(k, i) = merge(1, 0, res%stroke_margin(k, i) < 0.0_wp)
+        end do
+        res%max_violation = max(res%max_violation, g%max_violation)
+        res%max_drift = max(res%max_drift, g%max_drift)
+      end associate
+    end do
+    res%final_euler = model%body%euler*rad2deg
+    res%final_tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))*rad2deg
+  end subroutine finish
+
+  !> Allocates the result arrays (once, before the time loop).
+  subroutine allocate_result(res, ng, n_cap)
+    type(sim_result_t), intent(inout) :: res  !! result
+    integer, intent(in) :: ng                 !! number of gears
+    integer, intent(in) :: n_cap              !! capacity in samples
+    allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
+              res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
+    allocate (res%strut_length(3, ng, n_cap), res%stroke(3, ng, n_cap), res%strut_force(3, ng, n_cap), &
+              res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
+    allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
+              res%slip_speed(ng, n_cap), res%energy(n_energy, n_cap))
+    allocate (res%crush_net(3, ng), res%crush_pos(3, ng), res%crush_neg(3, ng), res%stroke_final(3, ng), &
+              res%stroke_margin(3, ng), res%crush_work(3, ng), res%bottomed(3, ng), res%peak_strut_force(3, ng))
+    allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))
+    res%peak_penetration = 0.0_wp
+    res%slide_distance = 0.0_wp
+    res%peak_normal_force = 0.0_wp
+    res%peak_strut_force = 0.0_wp
+    res%n_out = 0
+  end subroutine allocate_result
+
+end module landyn_simulation
