@@ -37,14 +37,14 @@ module landyn_gear
   use landyn_kinds, only: wp, msg_len
   use landyn_buffer, only: buffer_law_t, rigid_force
   use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, gear_constraints, gear_constraint_jacobian, &
-                               gear_constraint_gamma, footpad_jacobians, footpad_force_from_struts
+                               gear_constraint_gamma, cross3
   use landyn_lapack, only: solve_spd, solve_general
   implicit none
   private
 
   public :: gear_t, strut_mass_t, buffer_slot_t
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
-  public :: gear_relative_kinetic_energy, gear_solve_augmented_full
+  public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
   public :: n_q, n_phi
 
   integer, parameter :: n_q = 9      !! generalized coordinates per gear
@@ -86,7 +86,8 @@ module landyn_gear
     real(wp) :: s_hismin(3) = 0.0_wp              !! most negative stroke reached [m]
     real(wp) :: s_hismax(3) = 0.0_wp              !! most positive stroke reached [m]
     real(wp) :: axial(3) = 0.0_wp                 !! axial buffer force, compression positive [N]
-    real(wp) :: f_body(3) = 0.0_wp                !! force the gear applies to the body at the footpad point, gear frame [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force the gear applies to the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! its moment about the lander origin O_L, gear axes [N m]
     ! accumulators
     real(wp) :: work_crush(3) = 0.0_wp            !! energy absorbed by each buffer [J]
     real(wp) :: max_violation = 0.0_wp            !! largest constraint violation after correction [m]
@@ -121,6 +122,7 @@ contains
     gear%s_hismax = 0.0_wp
     gear%axial = 0.0_wp
     gear%f_body = 0.0_wp
+    gear%m_body = 0.0_wp
     gear%work_crush = 0.0_wp
     gear%max_violation = 0.0_wp
     gear%max_drift = 0.0_wp
@@ -249,7 +251,7 @@ contains
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
     real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand
-    real(wp) :: jac(3, 3), j2(3, 3), j3(3, 3)
+    real(wp) :: f_rel(3), m_rel(3)
     integer :: k, iter, nrow, row_of(3)
     logical :: changed
 
@@ -323,11 +325,103 @@ contains
       if (.not. changed) exit
     end do
 
-    ! Force transmitted to the body at the footpad point: F = -J^-T axial (massless-leg equivalence, eq. 11).
-    call footpad_jacobians(gear%geom, gear%q, j2, j3, jac, stat, errmsg)
-    if (stat == 0) call footpad_force_from_struts(jac, -gear%axial, gear%f_body, stat, errmsg)
-    if (stat /= 0) errmsg = 'gear: footpad Jacobian is singular (struts aligned): '//trim(errmsg)
+    ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
+    ! included) receives the ground force minus the rate of the legs' relative momentum; in the
+    ! massless-leg limit this is eq. 11's J^-T N applied at the footpad.
+    call gear_relative_inertia(gear, f_rel, m_rel)
+    gear%f_body = f_foot - f_rel
+    gear%m_body = cross3(pos_foot(gear), f_foot) - m_rel
   end subroutine gear_dynamics
+
+  !> Footpad position in the gear frame.
+  pure function pos_foot(gear) result(d)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp) :: d(3)                   !! footpad joint, gear frame [m]
+    real(wp) :: v(3)
+    call gear_footpad(gear, d, v)
+  end function pos_foot
+
+  !> Upper joint and axis derivatives of strut k.
+  pure subroutine strut_frame(gear, k, q, p, u, u1, u2, u11, u12, u22)
+    type(gear_t), intent(in) :: gear     !! gear
+    integer, intent(in) :: k             !! strut: 1 primary, 2 left, 3 right
+    real(wp), intent(in) :: q(n_q)       !! coordinates [m, rad]
+    real(wp), intent(out) :: p(3)        !! upper joint, gear frame [m]
+    real(wp), intent(out) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)  !! axis and its partials [-]
+    integer :: i0
+    i0 = idx_len(k) - 1
+    select case (k)
+    case (1)
+      p = gear%geom%a
+      call strut_axis_derivs(gear%geom%R0p, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
+    case (2)
+      p = gear%geom%b
+      call strut_axis_derivs(gear%geom%R0b, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
+    case default
+      p = gear%geom%c
+      call strut_axis_derivs(gear%geom%R0c, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
+    end select
+  end subroutine strut_frame
+
+  !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
+  !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
+  !! the sliding parts of m r and J(L) as in the mass matrix:
+  !!   f = m_s Ldd u + 2 m_s Ld udot + S uddot,
+  !!   H_dot about the upper joint P = u x (2 S1 Ld udot + J uddot), m = P x f + H_dot.
+  pure subroutine gear_relative_inertia(gear, f_rel, m_rel)
+    type(gear_t), intent(in) :: gear    !! gear with qdd set
+    real(wp), intent(out) :: f_rel(3)   !! relative momentum rate, gear frame [N]
+    real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
+    integer :: k, i0
+    real(wp) :: p(3), u(3), u1(3), u2(3), u11(3), u12(3), u22(3), ud(3), udd(3), f(3)
+    real(wp) :: len, ld, ldd, t1d, t2d, ms, sm, s1, jr, jp
+    f_rel = 0.0_wp
+    m_rel = 0.0_wp
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      call strut_frame(gear, k, gear%q, p, u, u1, u2, u11, u12, u22)
+      len = gear%q(i0 + 1); ld = gear%qd(i0 + 1); ldd = gear%qdd(i0 + 1)
+      t1d = gear%qd(i0 + 2); t2d = gear%qd(i0 + 3)
+      ud = u1*t1d + u2*t2d
+      udd = u1*gear%qdd(i0 + 2) + u2*gear%qdd(i0 + 3) + u11*t1d*t1d + 2.0_wp*u12*t1d*t2d + u22*t2d*t2d
+      associate (m => gear%mass(k))
+        ms = m%m_i + m%m_end
+        s1 = m%m_i*(len - m%l_i) + m%m_end*len
+        sm = m%m_o*m%l_o + s1
+      end associate
+      call strut_inertia(gear%mass(k), len, jr, jp)
+      f = ms*ldd*u + 2.0_wp*ms*ld*ud + sm*udd
+      f_rel = f_rel + f
+      m_rel = m_rel + cross3(p, f) + cross3(u, 2.0_wp*s1*ld*ud + jr*udd)
+    end do
+  end subroutine gear_relative_inertia
+
+  !> Relative linear momentum and first moment of mass of the leg parts (for the energy audit).
+  pure subroutine gear_leg_momentum(gear, p_rel, first_moment, leg_mass)
+    type(gear_t), intent(in) :: gear         !! gear
+    real(wp), intent(out) :: p_rel(3)        !! sum m v_rel, gear frame [kg m/s]
+    real(wp), intent(out) :: first_moment(3) !! sum m x, gear frame [kg m]
+    real(wp), intent(out) :: leg_mass        !! sum m [kg]
+    integer :: k, i0
+    real(wp) :: p(3), u(3), u1(3), u2(3), u11(3), u12(3), u22(3), ud(3), len, ms, sm, mt
+    p_rel = 0.0_wp
+    first_moment = 0.0_wp
+    leg_mass = 0.0_wp
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      call strut_frame(gear, k, gear%q, p, u, u1, u2, u11, u12, u22)
+      len = gear%q(i0 + 1)
+      ud = u1*gear%qd(i0 + 2) + u2*gear%qd(i0 + 3)
+      associate (m => gear%mass(k))
+        ms = m%m_i + m%m_end
+        sm = m%m_o*m%l_o + m%m_i*(len - m%l_i) + m%m_end*len
+        mt = m%m_o + ms
+      end associate
+      p_rel = p_rel + ms*gear%qd(i0 + 1)*u + sm*ud
+      first_moment = first_moment + mt*p + sm*u
+      leg_mass = leg_mass + mt
+    end do
+  end subroutine gear_leg_momentum
 
   !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
   subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)

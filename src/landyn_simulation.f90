@@ -16,7 +16,7 @@ module landyn_simulation
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
   use landyn_gear, only: gear_t, strut_mass_t, gear_init, gear_dynamics, gear_integrate, gear_footpad, &
-                         gear_relative_kinetic_energy
+                         gear_relative_kinetic_energy, gear_leg_momentum
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
                             to_global
@@ -37,6 +37,7 @@ module landyn_simulation
     class(friction_law_t), allocatable :: friction
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
+    real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
   end type model_t
 
   !> Time series (columns = output samples) and summary of one run.
@@ -178,7 +179,29 @@ contains
       if (stat /= 0) then; errmsg = m2; return; end if
     end if
     model%body%acc = model%g_vec     ! free fall before touchdown
+    do i = 1, model%n_gears
+      call gear_leg_momentum(model%gear(i), pos, model%first_moment0(:, i), dz)
+    end do
   end subroutine setup_model
+
+  !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross term
+  !! v_body . sum(m v_rel) of the kinetic energy (the body carries the total mass), and the
+  !! potential energy of the legs' relative displacement.
+  function leg_energy(model, gravity) result(e)
+    type(model_t), intent(in) :: model   !! model
+    real(wp), intent(in) :: gravity      !! [m/s^2]
+    real(wp) :: e                        !! [J]
+    integer :: i
+    real(wp) :: p_rel(3), fm(3), mleg, rg(3, 3)
+    e = 0.0_wp
+    do i = 1, model%n_gears
+      call gear_leg_momentum(model%gear(i), p_rel, fm, mleg)
+      rg = matmul(model%body%r, model%gear(i)%rot)
+      e = e + gear_relative_kinetic_energy(model%gear(i)) &
+            + dot_product(body_point_velocity(model%body, model%point_a(:, i)), matmul(rg, p_rel)) &
+            - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%first_moment0(:, i)))
+    end do
+  end function leg_energy
 
   !> Runs one landing. `progress_unit` < 0 silences progress reports.
   subroutine run_simulation(inp, res, stat, errmsg, progress_unit)
@@ -286,11 +309,9 @@ contains
           call finish(model, res, t)
           return
         end if
-        call gear_footpad(model%gear(i), pos_g, vel_g)
-        d_l = matmul(model%gear(i)%rot, pos_g)
         fb_l = matmul(model%gear(i)%rot, model%gear(i)%f_body)
         force = force + matmul(r, fb_l)
-        moment = moment + cross3(d_l - model%body%mc, fb_l)
+        moment = moment + matmul(model%gear(i)%rot, model%gear(i)%m_body) - cross3(model%body%mc, fb_l)
       end do
       ! engine thrust
       thrust_l = 0.0_wp
@@ -311,10 +332,7 @@ contains
 
       ! ---- output sample (state at t_n with the forces at t_n)
       if (t >= t_next_out - 0.5_wp*dt) then
-        ke_legs = 0.0_wp
-        do i = 1, ng
-          ke_legs = ke_legs + gear_relative_kinetic_energy(model%gear(i))
-        end do
+        ke_legs = leg_energy(model, inp%simulation%gravity)
         e_el = 0.0_wp
         do i = 1, ng
           if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i))
@@ -490,8 +508,8 @@ contains
         fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
         e_el = e_el + model%contact%elastic_energy(delta(i))
       end if
-      ke_legs = ke_legs + gear_relative_kinetic_energy(model%gear(i))
     end do
+    ke_legs = leg_energy(model, inp%simulation%gravity)
     call record(res, model, t, [0.0_wp, 0.0_wp, 0.0_wp], xd, fg, fn, delta, vd, w_normal, w_friction, w_thrust, &
                 ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
   end subroutine record_final
