@@ -108,10 +108,12 @@ contains
   pure subroutine body_step(body, dt)
     type(body_t), intent(inout) :: body   !! body
     real(wp), intent(in) :: dt            !! time step [s]
+    real(wp) :: e(3, 3)
     body%v = body%v + body%acc*dt
     body%x = body%x + body%v*dt
     body%omega = body%omega + body%alpha*dt
-    body%euler = body%euler + matmul(euler_rate_matrix(body%euler(2), body%euler(3)), body%omega)*dt
+    e = euler_rate_matrix(body%euler(2), body%euler(3))
+    body%euler = body%euler + matmul(e, body%omega)*dt
     body%r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))
   end subroutine body_step
 
@@ -128,7 +130,9 @@ contains
     type(body_t), intent(in) :: body  !! body
     real(wp), intent(in) :: p(3)      !! point, lander frame [m]
     real(wp) :: v(3)                  !! velocity, global [m/s]
-    v = body%v + matmul(body%r, cross3(body%omega, p - body%mc))
+    real(wp) :: w(3)
+    w = cross3(body%omega, p - body%mc)
+    v = body%v + matmul(body%r, w)
   end function body_point_velocity
 
   !> Acceleration of a body-fixed point, in lander axes.

@@ -527,7 +527,7 @@ contains
         s = g%sigma*(g%q([1, 4, 7]) - g%len0)
         res%stroke_final(:, i) = s
         res%crush_pos(:, i) = g%s_hismax
-        res%crush_neg(:, i) = -g%s_hismin
+        res%crush_neg(:, i) = 0.0_wp - g%s_hismin
         res%crush_net(:, i) = g%s_hismax + g%s_hismin
         res%crush_work(:, i) = g%work_crush
         do k = 1, 3

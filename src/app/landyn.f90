@@ -1,4 +1,151 @@
+!> landyn: runs one touchdown simulation of a legged lander.
+!!
+!!   landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]
+!!
+!! Exit status: 0 success (a tip-over is a result, not an error); 1 usage error; 2 invalid input;
+!! 3 the simulation failed (diverged); 4 the result file could not be written.
 program landyn
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use landyn_kinds, only: wp, msg_len
+  use landyn_config, only: landyn_input_t, default_input
+  use landyn_input, only: input_errors_t, load_input, resolve_input, validate_input, write_resolved_input
+  use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_output, only: write_result_file
+  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_report, only: write_summary_table
   implicit none
-  print '(a)', 'landyn: under construction'
+
+  type(landyn_input_t) :: inp
+  type(input_errors_t) :: errors
+  type(sim_result_t) :: res
+  character(len=:), allocatable :: deck, out_file, arg, cmd
+  logical :: check_only, quiet
+  integer :: i, n, stat, progress
+  character(len=msg_len) :: msg
+
+  deck = ''
+  out_file = ''
+  check_only = .false.
+  quiet = .false.
+  n = command_argument_count()
+  i = 0
+  do while (i < n)
+    i = i + 1
+    arg = get_arg(i)
+    select case (arg)
+    case ('-h', '--help')
+      call usage(output_unit)
+      stop
+    case ('-V', '--version')
+      write (output_unit, '(a)') 'landyn '//landyn_version_string//' ('//landyn_git_revision//')'
+      stop
+    case ('--check')
+      check_only = .true.
+    case ('-q', '--quiet')
+      quiet = .true.
+    case ('-o', '--output')
+      if (i == n) call die_usage('option '//arg//' needs a file name')
+      i = i + 1
+      out_file = get_arg(i)
+    case default
+      if (len(arg) > 0) then
+        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
+      end if
+      if (len(deck) > 0) call die_usage('more than one deck given ('//deck//', '//arg//')')
+      deck = arg
+    end select
+  end do
+
+  ! ---- input: the deck, or the built-in default (the paper's lander, load case LC-1)
+  if (len(deck) > 0) then
+    call load_input(deck, inp, errors, stat)
+  else
+    inp = default_input()
+    call resolve_input(inp, errors)
+    call validate_input(inp, errors)
+    stat = merge(0, 1, errors%count() == 0)
+  end if
+  if (stat /= 0 .or. errors%count() > 0) then
+    call errors%write(error_unit)
+    write (error_unit, '(a,i0,a)') 'landyn: ', errors%count(), ' input error(s); nothing was run and no file was written'
+    error stop 2
+  end if
+  if (check_only) then
+    call write_resolved_input(output_unit, inp)
+    stop
+  end if
+  if (len(out_file) == 0) out_file = trim(inp%output%file)
+
+  ! ---- run
+  progress = error_unit
+  if (quiet) progress = -1
+  if (.not. quiet) then
+    if (len(deck) > 0) then
+      write (error_unit, '(a)') 'landyn: running '//deck//' -> '//out_file
+    else
+      write (error_unit, '(a)') 'landyn: running the built-in default (paper lander, LC-1) -> '//out_file
+    end if
+  end if
+  call run_simulation(inp, res, stat, msg, progress)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'landyn: simulation failed: '//trim(msg)
+    write (error_unit, '(a)') 'landyn: no result file was written'
+    error stop 3
+  end if
+
+  ! ---- result file
+  cmd = command_line()
+  call write_result_file(out_file, inp, res, cmd, stat, msg)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
+    error stop 4
+  end if
+  call write_summary_table(output_unit, inp, res)
+  write (output_unit, '(a)') 'Results written to '//out_file
+
+contains
+
+  function get_arg(k) result(a)
+    integer, intent(in) :: k               !! argument index
+    character(len=:), allocatable :: a     !! the argument
+    integer :: l
+    call get_command_argument(k, length=l)
+    allocate (character(len=l) :: a)
+    if (l > 0) call get_command_argument(k, a)
+  end function get_arg
+
+  function command_line() result(c)
+    character(len=:), allocatable :: c     !! the whole command line
+    integer :: l
+    call get_command(length=l)
+    allocate (character(len=l) :: c)
+    if (l > 0) call get_command(c)
+  end function command_line
+
+  subroutine usage(u)
+    integer, intent(in) :: u               !! output unit
+    write (u, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]', &
+      '', &
+      'Simulates the touchdown of a legged planetary lander (Wang et al., Aerospace 2023, 10, 811).', &
+      'Without a deck, runs the built-in default: the paper''s 16 t lunar lander, load case LC-1.', &
+      '', &
+      '  DECK.nml        namelist input deck (see docs/input/); groups not given keep their defaults', &
+      '  -o, --output F  result file (HDF5, docs/output.md); default: the deck''s base name + .h5', &
+      '                  in the current directory, or &output file', &
+      '  --check         validate the deck and print the fully resolved input; run nothing', &
+      '  -q, --quiet     no progress messages on stderr', &
+      '  -V, --version   print the version', &
+      '  -h, --help      print this help', &
+      '', &
+      'Exit status: 0 success (a tip-over is a result), 1 usage error, 2 invalid input,', &
+      '3 simulation failed (diverged), 4 result file not written.'
+  end subroutine usage
+
+  subroutine die_usage(text)
+    character(len=*), intent(in) :: text   !! what is wrong
+    write (error_unit, '(a)') 'landyn: '//text
+    write (error_unit, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]'
+    error stop 1
+  end subroutine die_usage
+
 end program landyn

@@ -1,0 +1,189 @@
+!> Writes a run's result file following the schema of docs/output.md (schema version below).
+!! The file is written under a temporary name (<file>.partial) and renamed only when complete,
+!! so a run that fails or is killed leaves nothing that looks like a result.
+module landyn_output
+  use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
+  use landyn_kinds, only: wp, msg_len
+  use landyn_config, only: landyn_input_t
+  use landyn_version, only: landyn_version_string, landyn_git_revision, landyn_build_type, landyn_fflags
+  use landyn_input, only: resolved_input_text
+  use landyn_simulation, only: sim_result_t, n_energy, energy_names
+  use landyn_h5, only: h5_file_t, h5_create, h5_close, h5_write, h5_write_attr, rename_file, delete_file
+  implicit none
+  private
+
+  public :: write_result_file, schema_version, iso_timestamp
+
+  character(len=*), parameter :: schema_version = '1.0'  !! version of docs/output.md
+
+contains
+
+  !> Current date and time as ISO 8601 with the UTC offset.
+  function iso_timestamp() result(ts)
+    character(len=25) :: ts   !! e.g. 2026-11-22T10:15:00+00:00
+    character(len=8) :: d
+    character(len=10) :: t
+    character(len=5) :: z
+    call date_and_time(d, t, z)
+    ts = d(1:4)//'-'//d(5:6)//'-'//d(7:8)//'T'//t(1:2)//':'//t(3:4)//':'//t(5:6)//z(1:3)//':'//z(4:5)
+  end function iso_timestamp
+
+  !> Writes the result file `path` (via `path`.partial and a rename).
+  subroutine write_result_file(path, inp, res, command_line, stat, errmsg)
+    character(len=*), intent(in) :: path           !! result file name
+    type(landyn_input_t), intent(in) :: inp        !! resolved input
+    type(sim_result_t), intent(in) :: res          !! results
+    character(len=*), intent(in) :: command_line   !! the command that ran LANDYN
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message on failure
+    type(h5_file_t) :: f
+    character(len=:), allocatable :: tmp
+    integer :: st2
+    character(len=msg_len) :: m2
+
+    tmp = trim(path)//'.partial'
+    call h5_create(f, tmp, stat, errmsg)
+    if (stat /= 0) return
+    call write_all(f, inp, res, command_line, stat, errmsg)
+    if (stat /= 0) then
+      call h5_close(f, st2, m2)
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call h5_close(f, stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) call delete_file(tmp, st2, m2)
+  end subroutine write_result_file
+
+  subroutine write_all(f, inp, res, command_line, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file
+    type(landyn_input_t), intent(in) :: inp        !! resolved input
+    type(sim_result_t), intent(in) :: res          !! results
+    character(len=*), intent(in) :: command_line   !! command line
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message
+    integer :: n, k
+    n = res%n_out
+
+    ! ---- root attributes and /meta (provenance)
+    call h5_write_attr(f, '/', 'title', trim(inp%simulation%title), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg, &
+                  description='LANDYN version'); if (stat /= 0) return
+    call h5_write(f, '/meta/git_revision', landyn_git_revision, '-', stat, errmsg, &
+                  description='git describe of the source tree at build time'); if (stat /= 0) return
+    call h5_write(f, '/meta/build_type', landyn_build_type, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/compiler', compiler_version(), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/compiler_flags', landyn_fflags, '-', stat, errmsg, &
+                  description='flags of LANDYN sources as configured'); if (stat /= 0) return
+    call h5_write(f, '/meta/compiler_options', compiler_options(), '-', stat, errmsg, &
+                  description='compiler_options() of the module that writes this file'); if (stat /= 0) return
+    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg, description='time the file was written')
+    if (stat /= 0) return
+    call h5_write(f, '/meta/command_line', trim(command_line), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/deck_name', nonempty(inp%deck_name, '(built-in default)'), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/deck_text', nonempty(inp%deck_text, '(none: built-in default input)'), '-', stat, errmsg, &
+                  description='the input deck as given'); if (stat /= 0) return
+    call h5_write(f, '/meta/resolved_input', resolved_input_text(inp), '-', stat, errmsg, &
+                  description='fully resolved input as a namelist deck (angles in degrees)'); if (stat /= 0) return
+    call h5_write(f, '/meta/units', 'SI (m, kg, s, N, J); angles in deg; overload in g = 9.80665 m/s^2; '// &
+                  'global frame z down', '-', stat, errmsg); if (stat /= 0) return
+
+    ! ---- /timeseries
+    call h5_write(f, '/timeseries/time', res%t(1:n), 's', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/position', res%position(:, 1:n), 'm', stat, errmsg, &
+      description='lander-frame origin O_L, global frame (z down), shape (n, 3)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/mass_centre_position', res%mc_position(:, 1:n), 'm', stat, errmsg, &
+      description='mass centre, global frame'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/velocity', res%velocity(:, 1:n), 'm/s', stat, errmsg, &
+      description='mass-centre velocity, global frame (z down)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/euler_angles', res%euler(:, 1:n), 'deg', stat, errmsg, &
+      description='Z-Y-X Euler angles yaw, pitch, roll'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/angular_rate', res%rate(:, 1:n), 'deg/s', stat, errmsg, &
+      description='body rates p, q, r about the lander axes'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/overload', res%overload(:, 1:n), 'g', stat, errmsg, &
+      description='(a - g)/9.80665 at the mass centre in lander axes: what an accelerometer reads'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/strut_length', res%strut_length(:, :, 1:n), 'm', stat, errmsg, &
+      description='shape (n, n_gears, 3): primary, secondary left, secondary right'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/stroke', res%stroke(:, :, 1:n), 'm', stat, errmsg, &
+      description='primary: shortening positive; secondaries: lengthening positive (Table 3 sense)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/strut_force', res%strut_force(:, :, 1:n), 'N', stat, errmsg, &
+      description='axial buffer force, compression positive'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/footpad_position', res%footpad_position(:, :, 1:n), 'm', stat, errmsg, &
+      description='footpad ball joint, global frame (z down)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/ground_force', res%ground_force(:, :, 1:n), 'N', stat, errmsg, &
+      description='ground force on the footpad (normal + friction), global frame'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/normal_force', res%normal_force(:, 1:n), 'N', stat, errmsg, &
+      description='shape (n, n_gears)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/friction_force', res%friction_force(:, 1:n), 'N', stat, errmsg, &
+      description='magnitude of the friction force'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/penetration', res%penetration(:, 1:n), 'm', stat, errmsg, &
+      description='depth below the local surface along its normal (negative: above)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/slip_speed', res%slip_speed(:, 1:n), 'm/s', stat, errmsg, &
+      description='footpad speed tangential to the local surface'); if (stat /= 0) return
+    do k = 1, n_energy
+      call h5_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(k, 1:n), 'J', stat, errmsg)
+      if (stat /= 0) return
+    end do
+
+    ! ---- /summary
+    call h5_write(f, '/summary/crush_length', res%crush_net, 'm', stat, errmsg, &
+      description='signed net crush per gear and strut, shape (n_gears, 3): primary, secondary left, '// &
+                  'secondary right; primary shortening and secondary lengthening positive (Table 3 sense)')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/crushed_positive', res%crush_pos, 'm', stat, errmsg, &
+      description='crushed length toward + (primary shortening, secondary lengthening)'); if (stat /= 0) return
+    call h5_write(f, '/summary/crushed_negative', res%crush_neg, 'm', stat, errmsg, &
+      description='crushed length toward - (secondary shortening)'); if (stat /= 0) return
+    call h5_write(f, '/summary/stroke_final', res%stroke_final, 'm', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/stroke_margin', res%stroke_margin, 'm', stat, errmsg, &
+      description='stroke capacity minus crushed length, worst direction (negative: bottomed out)'); if (stat /= 0) return
+    call h5_write(f, '/summary/bottomed_out', res%bottomed, '-', stat, errmsg, &
+      description='1 where a stroke exceeded its capacity'); if (stat /= 0) return
+    call h5_write(f, '/summary/crush_work', res%crush_work, 'J', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg, &
+      description='largest |axial force| at the output samples'); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/time_of_peak_overload', res%t_peak_overload, 's', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_penetration', res%peak_penetration, 'm', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/slide_distance', res%slide_distance, 'm', stat, errmsg, &
+      description='path length of each footpad along the surface while in contact'); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_normal_force', res%peak_normal_force, 'N', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/final_attitude', res%final_euler, 'deg', stat, errmsg, &
+      description='Z-Y-X Euler angles yaw, pitch, roll at the end'); if (stat /= 0) return
+    call h5_write(f, '/summary/final_tilt', res%final_tilt, 'deg', stat, errmsg, &
+      description='angle between the lander z axis and the vertical at the end'); if (stat /= 0) return
+    call h5_write(f, '/summary/max_tilt', res%max_tilt, 'deg', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/tipped_over', res%tipped_over, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/at_rest', res%at_rest, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/end_reason', trim(res%end_reason), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/energy_input', res%energy_input, 'J', stat, errmsg, &
+      description='initial kinetic energy + potential energy released + thrust work'); if (stat /= 0) return
+    call h5_write(f, '/summary/energy_residual', res%energy_residual, '-', stat, errmsg, &
+      description='final energy-audit residual relative to energy_input'); if (stat /= 0) return
+    call h5_write(f, '/summary/max_constraint_violation', res%max_violation, 'm', stat, errmsg, &
+      description='largest constraint violation after correction'); if (stat /= 0) return
+    call h5_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg, &
+      description='largest constraint violation before correction (one step of drift)'); if (stat /= 0) return
+    call h5_write(f, '/summary/final_time', res%t_final, 's', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
+  end subroutine write_all
+
+  pure function nonempty(s, fallback) result(r)
+    character(len=*), intent(in) :: s          !! text
+    character(len=*), intent(in) :: fallback   !! used when s is empty
+    character(len=:), allocatable :: r         !! s or fallback
+    if (len_trim(s) > 0) then
+      r = s
+    else
+      r = fallback
+    end if
+  end function nonempty
+
+end module landyn_output
