@@ -68,11 +68,34 @@ module landyn_gear
     class(buffer_law_t), allocatable :: law
   end type buffer_slot_t
 
+  !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
+  type :: strut_kin_t
+    real(wp) :: p(3) = 0.0_wp     !! upper joint, gear frame [m]
+    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
+    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
+    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
+    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
+    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
+    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
+  end type strut_kin_t
+
   !> One landing gear: geometry, masses, buffers and state.
   type :: gear_t
     type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
     real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
     type(strut_mass_t) :: mass(3)                 !! primary, left, right
+    ! per-strut mass constants (set by gear_init): J(L) = j_0 + m_in (L - l_in)^2 + m_end L^2,
+    ! S1(L) = m_in (L - l_in) + m_end L (sliding parts' first moment), S(L) = s_0 + S1(L)
+    real(wp) :: m_s(3) = 0.0_wp                   !! sliding mass m_i + m_end [kg]
+    real(wp) :: m_tot(3) = 0.0_wp                 !! strut mass [kg]
+    real(wp) :: j_0(3) = 0.0_wp                   !! m_o l_o^2 + I_o + I_i [kg m^2]
+    real(wp) :: s_0(3) = 0.0_wp                   !! m_o l_o [kg m]
+    real(wp) :: m_in(3) = 0.0_wp                  !! m_i [kg]
+    real(wp) :: l_in(3) = 0.0_wp                  !! l_i [m]
+    real(wp) :: m_end(3) = 0.0_wp                 !! end mass [kg]
+    real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
+    real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
+    logical :: phq_ok = .false.                   !! phq is valid for the current q
     type(buffer_slot_t) :: buffer(3)              !! primary, left, right buffer laws
     real(wp) :: sigma(3) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
     real(wp) :: len0(3) = 0.0_wp                  !! nominal strut lengths [m]
@@ -110,12 +133,25 @@ contains
     gear%geom = geom
     gear%rot = rot
     gear%mass = mass
+    do k = 1, 3
+      gear%m_s(k) = mass(k)%m_i + mass(k)%m_end
+      gear%m_tot(k) = mass(k)%m_o + gear%m_s(k)
+      gear%j_0(k) = mass(k)%m_o*mass(k)%l_o**2 + mass(k)%i_o + mass(k)%i_i
+      gear%s_0(k) = mass(k)%m_o*mass(k)%l_o
+      gear%m_in(k) = mass(k)%m_i
+      gear%l_in(k) = mass(k)%l_i
+      gear%m_end(k) = mass(k)%m_end
+    end do
+    ! Phi_q entries are lug or strut lever arms (|dx/dtheta| <= distance to the joint) or unit
+    ! vectors; lock rows are 1. Twice the longest such distance bounds every entry.
+    gear%row_bound = 2.0_wp*max(1.0_wp, norm2(geom%e_loc), norm2(geom%f_loc), geom%L0, geom%Lb0, geom%Lc0)
     gear%len0 = [geom%L0, geom%Lb0, geom%Lc0]
     gear%q = 0.0_wp
     gear%q(idx_len) = gear%len0
     gear%qd = 0.0_wp
     gear%qdd = 0.0_wp
     gear%locked = .true.
+    gear%phq_ok = .false.
     gear%dir = 0
     gear%s_lock = 0.0_wp
     gear%s_hismin = 0.0_wp
@@ -151,32 +187,36 @@ contains
     vel = gear%qd(1)*u + gear%q(1)*(du1*gear%qd(2) + du2*gear%qd(3))
   end subroutine gear_footpad
 
+  !> Upper joint, axis and axis partials of each strut at q (computed once per use).
+  pure subroutine strut_kinematics(gear, q, sk)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
+    type(strut_kin_t), intent(out) :: sk(3) !! per-strut kinematics
+    sk(1)%p = gear%geom%a
+    sk(2)%p = gear%geom%b
+    sk(3)%p = gear%geom%c
+    call strut_axis_derivs(gear%geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
+    call strut_axis_derivs(gear%geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
+    call strut_axis_derivs(gear%geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+  end subroutine strut_kinematics
+
   !> Diagonal of the mass matrix M(q).
   pure function gear_mass_matrix(gear, q) result(mdiag)
     type(gear_t), intent(in) :: gear   !! gear
     real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
     real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
     integer :: k, i0
-    real(wp) :: jr, jp, c
+    real(wp) :: jr, c, len
     do k = 1, 3
       i0 = idx_len(k) - 1
-      call strut_inertia(gear%mass(k), q(i0 + 1), jr, jp)
+      len = q(i0 + 1)
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
       c = cos(q(i0 + 3))
-      mdiag(i0 + 1) = gear%mass(k)%m_i + gear%mass(k)%m_end
+      mdiag(i0 + 1) = gear%m_s(k)
       mdiag(i0 + 2) = jr*c*c
       mdiag(i0 + 3) = jr
     end do
   end function gear_mass_matrix
-
-  !> Rotational inertia J(L) about the upper joint and its derivative dJ/dL.
-  pure subroutine strut_inertia(m, len, jr, jp)
-    type(strut_mass_t), intent(in) :: m   !! strut mass properties
-    real(wp), intent(in) :: len           !! strut length [m]
-    real(wp), intent(out) :: jr           !! J(L) [kg m^2]
-    real(wp), intent(out) :: jp           !! dJ/dL [kg m]
-    jr = m%m_o*m%l_o**2 + m%i_o + m%m_i*(len - m%l_i)**2 + m%i_i + m%m_end*len**2
-    jp = 2.0_wp*m%m_i*(len - m%l_i) + 2.0_wp*m%m_end*len
-  end subroutine strut_inertia
 
   !> Generalized forces: velocity coupling (Q_ine), the uniform field (Q_grv) and the footpad force.
   pure subroutine gear_generalized_forces(gear, q, qd, f_field, f_foot, q_ine, q_grv, q_ext)
@@ -188,38 +228,42 @@ contains
     real(wp), intent(out) :: q_ine(n_q)  !! velocity-coupling generalized force [N, N m]
     real(wp), intent(out) :: q_grv(n_q)  !! field generalized force [N, N m]
     real(wp), intent(out) :: q_ext(n_q)  !! footpad-force generalized force [N, N m]
+    type(strut_kin_t) :: sk(3)
+    call strut_kinematics(gear, q, sk)
+    call generalized_forces(gear, q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+  end subroutine gear_generalized_forces
+
+  pure subroutine generalized_forces(gear, q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    type(gear_t), intent(in) :: gear       !! gear
+    real(wp), intent(in) :: q(n_q)         !! coordinates [m, rad]
+    real(wp), intent(in) :: qd(n_q)        !! velocities [m/s, rad/s]
+    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at q
+    real(wp), intent(in) :: f_field(3)     !! uniform field, gear frame [m/s^2]
+    real(wp), intent(in) :: f_foot(3)      !! footpad force, gear frame [N]
+    real(wp), intent(out) :: q_ine(n_q)    !! velocity coupling [N, N m]
+    real(wp), intent(out) :: q_grv(n_q)    !! field [N, N m]
+    real(wp), intent(out) :: q_ext(n_q)    !! footpad force [N, N m]
     integer :: k, i0
-    real(wp) :: jr, jp, c, sn, len, lend, t1d, t2d, ms, fm
-    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3)
-    q_ext = 0.0_wp
+    real(wp) :: jr, jp, c, sn, len, lend, t1d, t2d, fm
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1); lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
-      call strut_inertia(gear%mass(k), len, jr, jp)
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      jp = 2.0_wp*gear%m_in(k)*(len - gear%l_in(k)) + 2.0_wp*gear%m_end(k)*len
       c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
       q_ine(i0 + 1) = 0.5_wp*jp*(c*c*t1d*t1d + t2d*t2d)
       q_ine(i0 + 2) = -jp*lend*c*c*t1d + 2.0_wp*jr*c*sn*t1d*t2d
       q_ine(i0 + 3) = -jp*lend*t2d - jr*c*sn*t1d*t1d
-      select case (k)
-      case (1)
-        call strut_axis_derivs(gear%geom%R0p, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
-      case (2)
-        call strut_axis_derivs(gear%geom%R0b, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
-      case default
-        call strut_axis_derivs(gear%geom%R0c, q(i0 + 2), q(i0 + 3), u, du1, du2, d11, d12, d22)
-      end select
-      ms = gear%mass(k)%m_i + gear%mass(k)%m_end
-      fm = gear%mass(k)%m_o*gear%mass(k)%l_o + gear%mass(k)%m_i*(len - gear%mass(k)%l_i) + gear%mass(k)%m_end*len
-      q_grv(i0 + 1) = ms*dot_product(u, f_field)
-      q_grv(i0 + 2) = fm*dot_product(du1, f_field)
-      q_grv(i0 + 3) = fm*dot_product(du2, f_field)
-      if (k == 1) then
-        q_ext(1) = dot_product(u, f_foot)
-        q_ext(2) = len*dot_product(du1, f_foot)
-        q_ext(3) = len*dot_product(du2, f_foot)
-      end if
+      fm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      q_grv(i0 + 1) = gear%m_s(k)*dot_product(sk(k)%u, f_field)
+      q_grv(i0 + 2) = fm*dot_product(sk(k)%u1, f_field)
+      q_grv(i0 + 3) = fm*dot_product(sk(k)%u2, f_field)
     end do
-  end subroutine gear_generalized_forces
+    q_ext = 0.0_wp
+    q_ext(1) = dot_product(sk(1)%u, f_foot)
+    q_ext(2) = q(1)*dot_product(sk(1)%u1, f_foot)
+    q_ext(3) = q(1)*dot_product(sk(1)%u2, f_foot)
+  end subroutine generalized_forces
 
   !> Relative kinetic energy of the leg parts, 1/2 qd^T M qd.
   pure function gear_relative_kinetic_energy(gear) result(t)
@@ -252,13 +296,19 @@ contains
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
     real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand
     real(wp) :: f_rel(3), m_rel(3)
+    type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
     logical :: changed
 
     stat = 0
+    call strut_kinematics(gear, gear%q, sk)
     mdiag = gear_mass_matrix(gear, gear%q)
-    call gear_generalized_forces(gear, gear%q, gear%qd, f_field, f_foot, q_ine, q_grv, q_ext)
-    phq = gear_constraint_jacobian(gear%geom, gear%q)
+    call generalized_forces(gear, gear%q, gear%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    if (gear%phq_ok) then
+      phq = gear%phq
+    else
+      phq = gear_constraint_jacobian(gear%geom, gear%q)
+    end if
     gam = gear_constraint_gamma(gear%geom, gear%q, gear%qd)
     call strokes(gear, gear%q, gear%qd, s, sd)
     do k = 1, 3
@@ -328,40 +378,10 @@ contains
     ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
     ! included) receives the ground force minus the rate of the legs' relative momentum; in the
     ! massless-leg limit this is eq. 11's J^-T N applied at the footpad.
-    call gear_relative_inertia(gear, f_rel, m_rel)
+    call relative_inertia(gear, sk, f_rel, m_rel)
     gear%f_body = f_foot - f_rel
-    gear%m_body = cross3(pos_foot(gear), f_foot) - m_rel
+    gear%m_body = cross3(gear%geom%a + gear%q(1)*sk(1)%u, f_foot) - m_rel
   end subroutine gear_dynamics
-
-  !> Footpad position in the gear frame.
-  pure function pos_foot(gear) result(d)
-    type(gear_t), intent(in) :: gear   !! gear
-    real(wp) :: d(3)                   !! footpad joint, gear frame [m]
-    real(wp) :: v(3)
-    call gear_footpad(gear, d, v)
-  end function pos_foot
-
-  !> Upper joint and axis derivatives of strut k.
-  pure subroutine strut_frame(gear, k, q, p, u, u1, u2, u11, u12, u22)
-    type(gear_t), intent(in) :: gear     !! gear
-    integer, intent(in) :: k             !! strut: 1 primary, 2 left, 3 right
-    real(wp), intent(in) :: q(n_q)       !! coordinates [m, rad]
-    real(wp), intent(out) :: p(3)        !! upper joint, gear frame [m]
-    real(wp), intent(out) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)  !! axis and its partials [-]
-    integer :: i0
-    i0 = idx_len(k) - 1
-    select case (k)
-    case (1)
-      p = gear%geom%a
-      call strut_axis_derivs(gear%geom%R0p, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
-    case (2)
-      p = gear%geom%b
-      call strut_axis_derivs(gear%geom%R0b, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
-    case default
-      p = gear%geom%c
-      call strut_axis_derivs(gear%geom%R0c, q(i0 + 2), q(i0 + 3), u, u1, u2, u11, u12, u22)
-    end select
-  end subroutine strut_frame
 
   !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
   !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
@@ -372,29 +392,35 @@ contains
     type(gear_t), intent(in) :: gear    !! gear with qdd set
     real(wp), intent(out) :: f_rel(3)   !! relative momentum rate, gear frame [N]
     real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
+    type(strut_kin_t) :: sk(3)
+    call strut_kinematics(gear, gear%q, sk)
+    call relative_inertia(gear, sk, f_rel, m_rel)
+  end subroutine gear_relative_inertia
+
+  pure subroutine relative_inertia(gear, sk, f_rel, m_rel)
+    type(gear_t), intent(in) :: gear       !! gear with qdd set
+    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%q
+    real(wp), intent(out) :: f_rel(3)      !! relative momentum rate, gear frame [N]
+    real(wp), intent(out) :: m_rel(3)      !! relative angular momentum rate about O_L [N m]
     integer :: k, i0
-    real(wp) :: p(3), u(3), u1(3), u2(3), u11(3), u12(3), u22(3), ud(3), udd(3), f(3)
-    real(wp) :: len, ld, ldd, t1d, t2d, ms, sm, s1, jr, jp
+    real(wp) :: ud(3), udd(3), f(3), len, ld, ldd, t1d, t2d, sm, s1, jr
     f_rel = 0.0_wp
     m_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      call strut_frame(gear, k, gear%q, p, u, u1, u2, u11, u12, u22)
       len = gear%q(i0 + 1); ld = gear%qd(i0 + 1); ldd = gear%qdd(i0 + 1)
       t1d = gear%qd(i0 + 2); t2d = gear%qd(i0 + 3)
-      ud = u1*t1d + u2*t2d
-      udd = u1*gear%qdd(i0 + 2) + u2*gear%qdd(i0 + 3) + u11*t1d*t1d + 2.0_wp*u12*t1d*t2d + u22*t2d*t2d
-      associate (m => gear%mass(k))
-        ms = m%m_i + m%m_end
-        s1 = m%m_i*(len - m%l_i) + m%m_end*len
-        sm = m%m_o*m%l_o + s1
-      end associate
-      call strut_inertia(gear%mass(k), len, jr, jp)
-      f = ms*ldd*u + 2.0_wp*ms*ld*ud + sm*udd
+      ud = sk(k)%u1*t1d + sk(k)%u2*t2d
+      udd = sk(k)%u1*gear%qdd(i0 + 2) + sk(k)%u2*gear%qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
+            + 2.0_wp*sk(k)%u12*t1d*t2d + sk(k)%u22*t2d*t2d
+      s1 = gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      sm = gear%s_0(k) + s1
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      f = gear%m_s(k)*ldd*sk(k)%u + 2.0_wp*gear%m_s(k)*ld*ud + sm*udd
       f_rel = f_rel + f
-      m_rel = m_rel + cross3(p, f) + cross3(u, 2.0_wp*s1*ld*ud + jr*udd)
+      m_rel = m_rel + cross3(sk(k)%p, f) + cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
     end do
-  end subroutine gear_relative_inertia
+  end subroutine relative_inertia
 
   !> Relative linear momentum and first moment of mass of the leg parts (for the energy audit).
   pure subroutine gear_leg_momentum(gear, p_rel, first_moment, leg_mass)
@@ -402,25 +428,21 @@ contains
     real(wp), intent(out) :: p_rel(3)        !! sum m v_rel, gear frame [kg m/s]
     real(wp), intent(out) :: first_moment(3) !! sum m x, gear frame [kg m]
     real(wp), intent(out) :: leg_mass        !! sum m [kg]
+    type(strut_kin_t) :: sk(3)
     integer :: k, i0
-    real(wp) :: p(3), u(3), u1(3), u2(3), u11(3), u12(3), u22(3), ud(3), len, ms, sm, mt
+    real(wp) :: ud(3), len, sm
+    call strut_kinematics(gear, gear%q, sk)
     p_rel = 0.0_wp
     first_moment = 0.0_wp
-    leg_mass = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      call strut_frame(gear, k, gear%q, p, u, u1, u2, u11, u12, u22)
       len = gear%q(i0 + 1)
-      ud = u1*gear%qd(i0 + 2) + u2*gear%qd(i0 + 3)
-      associate (m => gear%mass(k))
-        ms = m%m_i + m%m_end
-        sm = m%m_o*m%l_o + m%m_i*(len - m%l_i) + m%m_end*len
-        mt = m%m_o + ms
-      end associate
-      p_rel = p_rel + ms*gear%qd(i0 + 1)*u + sm*ud
-      first_moment = first_moment + mt*p + sm*u
-      leg_mass = leg_mass + mt
+      ud = sk(k)%u1*gear%qd(i0 + 2) + sk(k)%u2*gear%qd(i0 + 3)
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      p_rel = p_rel + gear%m_s(k)*gear%qd(i0 + 1)*sk(k)%u + sm*ud
+      first_moment = first_moment + gear%m_tot(k)*sk(k)%p + sm*sk(k)%u
     end do
+    leg_mass = sum(gear%m_tot)
   end subroutine gear_leg_momentum
 
   !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
@@ -445,7 +467,7 @@ contains
       end do
     end do
     r(1:nrow) = matmul(aw(1:nrow, :), qf) - b(1:nrow)
-    call solve_spd(nrow, s(1:nrow, 1:nrow), r(1:nrow), stat, errmsg, 'gear DAE (A M^-1 A^T)')
+    call solve_spd(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
     if (stat /= 0) return
     lam(1:nrow) = r(1:nrow)
     qdd = (qf - matmul(lam(1:nrow), a(1:nrow, 1:n_q)))/mdiag
@@ -473,7 +495,7 @@ contains
     big(n_q + 1:n, 1:n_q) = a(1:nrow, 1:n_q)
     rhs(1:n_q) = qf
     rhs(n_q + 1:n) = b(1:nrow)
-    call solve_general(n, big(1:n, 1:n), rhs(1:n), stat, errmsg, 'gear DAE (augmented)')
+    call solve_general(n, big, n_q + max_rows, rhs, stat, errmsg, 'gear DAE (augmented)')
     if (stat /= 0) return
     qdd = rhs(1:n_q)
     lam(1:nrow) = rhs(n_q + 1:n)
@@ -510,6 +532,7 @@ contains
     gear%qd = qd_new
     ! Crush work during this step: the buffer force times the stroke increment, for sliding struts.
     gear%q = gear%q + gear%qd*dt
+    gear%phq_ok = .false.
     call strokes(gear, gear%q, gear%qd, s1, sd1)
     do k = 1, 3
       if (.not. gear%locked(k)) then
@@ -517,8 +540,9 @@ contains
       end if
     end do
 
-    ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r.
-    call build_rows(gear, gear%q, a, nrow)
+    ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A
+    ! are built only when a correction is needed (a locked gear at rest needs none).
+    nrow = n_phi + count(gear%locked)
     call position_residual(gear, gear%q, nrow, r)
     viol = maxval(abs(r(1:n_phi)))
     gear%max_drift = max(gear%max_drift, viol)
@@ -531,9 +555,9 @@ contains
     end if
     do iter = 1, max_iter
       if (maxval(abs(r(1:nrow))) <= tol) exit
+      call build_rows(gear, gear%q, a, nrow)
       call min_norm_correction(nrow, a, r, gear%q, stat, errmsg)
       if (stat /= 0) return
-      call build_rows(gear, gear%q, a, nrow)
       call position_residual(gear, gear%q, nrow, r)
       gear%n_correction_iter = max(gear%n_correction_iter, iter)
     end do
@@ -547,19 +571,25 @@ contains
     end if
     gear%max_violation = max(gear%max_violation, viol)
     ! Velocity correction: A qdot = 0 (constraints are scleronomic; locks hold the stroke rate at 0).
-    do iter = 1, max_iter
+    ! |A qdot| <= row_bound * sum|qdot|: when that bound is below the tolerance nothing is to do.
+    if (gear%row_bound*sum(abs(gear%qd)) > tol) then
+      call build_rows(gear, gear%q, a, nrow)
+      gear%phq = a(1:n_phi, :)
+      gear%phq_ok = .true.
+      do iter = 1, max_iter
+        r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
+        if (maxval(abs(r(1:nrow))) <= tol) exit
+        call min_norm_correction(nrow, a, r, gear%qd, stat, errmsg)
+        if (stat /= 0) return
+      end do
       r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
-      if (maxval(abs(r(1:nrow))) <= tol) exit
-      call min_norm_correction(nrow, a, r, gear%qd, stat, errmsg)
-      if (stat /= 0) return
-    end do
-    r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
-    if (maxval(abs(r(1:nrow))) > tol) then
-      stat = 3
-      write (buf, '(a,es10.3,a)') 'velocity constraint correction did not converge (violation ', &
-        maxval(abs(r(1:nrow))), ' m/s)'
-      errmsg = buf
-      return
+      if (maxval(abs(r(1:nrow))) > tol) then
+        stat = 3
+        write (buf, '(a,es10.3,a)') 'velocity constraint correction did not converge (violation ', &
+          maxval(abs(r(1:nrow))), ' m/s)'
+        errmsg = buf
+        return
+      end if
     end if
     ! Crush history.
     call strokes(gear, gear%q, gear%qd, s1, sd1)
@@ -621,7 +651,7 @@ contains
       end do
     end do
     y(1:nrow) = r(1:nrow)
-    call solve_spd(nrow, s(1:nrow, 1:nrow), y(1:nrow), stat, errmsg, 'constraint correction (Phi_q Phi_q^T)')
+    call solve_spd(nrow, s, max_rows, y, stat, errmsg, 'constraint correction (Phi_q Phi_q^T)')
     if (stat /= 0) return
     x = x - matmul(y(1:nrow), a(1:nrow, 1:n_q))
   end subroutine min_norm_correction

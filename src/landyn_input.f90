@@ -1327,7 +1327,7 @@ contains
     call require(errors, s%rest_speed > 0.0_wp, pre, g, 'rest_speed', fmt_real(s%rest_speed)//' m/s', &
                  'rest_speed > 0 m/s')
     call require(errors, s%rest_time >= 0.0_wp, pre, g, 'rest_time', fmt_real(s%rest_time)//' s', 'rest_time >= 0 s')
-    call require(errors, s%tipover_angle > 0.0_wp .and. s%tipover_angle*rad2deg <= 180.0_wp, pre, g, &
+    call require(errors, s%tipover_angle > 0.0_wp .and. s%tipover_angle <= deg_to_rad(180.0_wp), pre, g, &
                  'tipover_angle', fmt_angle(s%tipover_angle)//' deg', '0 < tipover_angle <= 180 deg')
     call require(errors, s%constraint_tol > 0.0_wp, pre, g, 'constraint_tol', fmt_real(s%constraint_tol), &
                  'constraint_tol > 0')
@@ -1425,26 +1425,9 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     character(len=*), parameter :: g = 'primary_strut'
-    integer :: i
-    character(len=:), allocatable :: si
     call require(errors, p%n_stages >= 1 .and. p%n_stages <= max_stages, pre, g, 'n_stages', fmt_int(p%n_stages), &
                  '1 <= n_stages <= '//fmt_int(max_stages))
-    do i = 1, min(max(p%n_stages, 0), max_stages)
-      si = '('//fmt_int(i)//')'
-      call require(errors, p%stage_force(i) > 0.0_wp, pre, g, 'stage_force'//si, fmt_real(p%stage_force(i))//' N', &
-                   'stage_force'//si//' > 0 N')
-      call require(errors, p%stage_end(i) > 0.0_wp, pre, g, 'stage_end'//si, fmt_real(p%stage_end(i))//' m', &
-                   'stage_end'//si//' > 0 m')
-    end do
-    do i = 2, min(p%n_stages, max_stages)
-      si = '('//fmt_int(i)//')'
-      call require(errors, p%stage_force(i) >= p%stage_force(i - 1), pre, g, 'stage_force'//si, &
-                   fmt_real(p%stage_force(i))//' N', 'stage_force'//si//' >= stage_force('//fmt_int(i - 1)// &
-                   ') = '//fmt_real(p%stage_force(i - 1))//' N (non-decreasing)')
-      call require(errors, p%stage_end(i) > p%stage_end(i - 1), pre, g, 'stage_end'//si, &
-                   fmt_real(p%stage_end(i))//' m', 'stage_end'//si//' > stage_end('//fmt_int(i - 1)// &
-                   ') = '//fmt_real(p%stage_end(i - 1))//' m (strictly increasing)')
-    end do
+    if (p%n_stages >= 1 .and. p%n_stages <= max_stages) call check_stages()
     call require(errors, p%stop_stiffness > 0.0_wp, pre, g, 'stop_stiffness', fmt_real(p%stop_stiffness)//' N/m', &
                  'stop_stiffness > 0 N/m')
     call require(errors, p%stop_damping >= 0.0_wp, pre, g, 'stop_damping', fmt_real(p%stop_damping)//' N s/m', &
@@ -1458,6 +1441,26 @@ contains
                    fmt_real(p%footpad_mass + p%inner_mass)//' kg', 'footpad_mass + inner_mass > 0 kg '// &
                    '(the footpad node needs mass)')
   contains
+    subroutine check_stages()
+      integer :: i
+      character(len=:), allocatable :: si
+      do i = 1, p%n_stages
+        si = '('//fmt_int(i)//')'
+        call require(errors, p%stage_force(i) > 0.0_wp, pre, g, 'stage_force'//si, fmt_real(p%stage_force(i))//' N', &
+                     'stage_force'//si//' > 0 N')
+        call require(errors, p%stage_end(i) > 0.0_wp, pre, g, 'stage_end'//si, fmt_real(p%stage_end(i))//' m', &
+                     'stage_end'//si//' > 0 m')
+      end do
+      do i = 2, p%n_stages
+        si = '('//fmt_int(i)//')'
+        call require(errors, p%stage_force(i) >= p%stage_force(i - 1), pre, g, 'stage_force'//si, &
+                     fmt_real(p%stage_force(i))//' N', 'stage_force'//si//' >= stage_force('//fmt_int(i - 1)// &
+                     ') = '//fmt_real(p%stage_force(i - 1))//' N (non-decreasing)')
+        call require(errors, p%stage_end(i) > p%stage_end(i - 1), pre, g, 'stage_end'//si, &
+                     fmt_real(p%stage_end(i))//' m', 'stage_end'//si//' > stage_end('//fmt_int(i - 1)// &
+                     ') = '//fmt_real(p%stage_end(i - 1))//' m (strictly increasing)')
+      end do
+    end subroutine check_stages
     subroutine part(m, cm, j, which)
       real(wp), intent(in) :: m, cm, j              !! mass [kg], mass-centre distance [m], inertia [kg m^2]
       character(len=*), intent(in) :: which         !! 'outer' or 'inner' [-]
@@ -1532,17 +1535,31 @@ contains
     character(len=:), allocatable :: si
     do i = 1, min(max(n_gears, 0), max_gears)
       si = '('//fmt_int(i)//')'
-      call require(errors, t%slope(i) >= 0.0_wp .and. t%slope(i)*rad2deg < 60.0_wp, pre, 'terrain', 'slope'//si, &
+      call require(errors, t%slope(i) >= 0.0_wp .and. t%slope(i) < deg_to_rad(60.0_wp), pre, 'terrain', 'slope'//si, &
                    fmt_angle(t%slope(i))//' deg', '0 <= slope < 60 deg')
     end do
     call require(errors, s%clearance >= 0.0_wp, pre, 'initial_state', 'clearance', fmt_real(s%clearance)//' m', &
                  'clearance >= 0 m')
-    call require(errors, abs(s%attitude(2)*rad2deg) < 90.0_wp, pre, 'initial_state', 'attitude(2)', &
+    call require(errors, abs(s%attitude(2)) < deg_to_rad(90.0_wp), pre, 'initial_state', 'attitude(2)', &
                  fmt_angle(s%attitude(2))//' deg', '-90 < pitch < 90 deg')
     i = count(is_set(s%position))
-    call require(errors, i == 0 .or. i == 3, pre, 'initial_state', 'position', 'given in part', &
-                 'all three components, or none to place the lander by clearance')
+    if (i /= 0 .and. i /= 3) &
+      call errors%add(pre//'&initial_state: position is given in part ('//given_elements(s%position)// &
+                      '); valid: all three components, or none to place the lander by clearance')
   end subroutine validate_terrain_initial
+
+  !> "position(1) = 3.0, position(3) = -2.0": the set elements of a partly given vector [m].
+  pure function given_elements(x) result(s)
+    real(wp), intent(in) :: x(:)           !! vector with unset elements [m]
+    character(len=:), allocatable :: s     !! text [-]
+    integer :: j
+    s = ''
+    do j = 1, size(x)
+      if (.not. is_set(x(j))) cycle
+      if (len(s) > 0) s = s//', '
+      s = s//'position('//fmt_int(j)//') = '//fmt_real(x(j))
+    end do
+  end function given_elements
 
   !> Append "&group: var = value is invalid; valid: condition" unless ok.
   subroutine require(errors, ok, pre, group, var, value, valid)
@@ -1676,6 +1693,10 @@ contains
     real(wp) :: cand(5), y
     integer :: d, k
     cand(1) = x*rad2deg
+    if (.not. abs(x) >= tiny(1.0_wp)) then   ! zero (or subnormal): no neighbours to try
+      s = fmt_real(cand(1))
+      return
+    end if
     cand(2) = nearest(cand(1), 1.0_wp)
     cand(3) = nearest(cand(1), -1.0_wp)
     cand(4) = nearest(cand(2), 1.0_wp)

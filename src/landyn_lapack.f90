@@ -1,6 +1,7 @@
 !> The one place where LANDYN calls LAPACK. Each wrapper turns LAPACK's INFO into a status
 !! and a message. Arrays are overwritten as LAPACK does (factorisation in A, solution in B).
-!! No allocation: the pivot workspace is an automatic array of the (small) system size.
+!! The matrix is passed with an explicit leading dimension so that callers hand over a whole
+!! (contiguous) work array and no temporary copy is made: no allocation in the time loop.
 module landyn_lapack
   use landyn_kinds, only: wp
   implicit none
@@ -28,15 +29,16 @@ module landyn_lapack
 contains
 
   !> Solves A X = B for a general square A by LU with partial pivoting (LAPACK dgesv).
-  subroutine solve_general(n, a, b, stat, errmsg, what)
+  subroutine solve_general(n, a, lda, b, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
-    real(wp), intent(inout) :: a(:, :)             !! n x n matrix; overwritten by its LU factors [any]
-    real(wp), intent(inout) :: b(:)                !! right-hand side in, solution out [any]
+    integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
+    real(wp), intent(inout) :: a(lda, n)           !! matrix in a(1:n,1:n); overwritten by its LU factors [any]
+    real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: ipiv(n), info
-    call dgesv(n, 1, a, size(a, 1), ipiv, b, size(b), info)
+    call dgesv(n, 1, a, lda, ipiv, b, n, info)
     stat = info
     if (info > 0) then
       write (errmsg, '(a,a,i0,a,i0,a)') trim(what), ': matrix is singular (LAPACK dgesv: U(', info, ',', &
@@ -47,15 +49,16 @@ contains
   end subroutine solve_general
 
   !> Solves A X = B for a symmetric positive-definite A by Cholesky (LAPACK dposv, upper triangle used).
-  subroutine solve_spd(n, a, b, stat, errmsg, what)
+  subroutine solve_spd(n, a, lda, b, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
-    real(wp), intent(inout) :: a(:, :)             !! n x n SPD matrix; overwritten by its factor [any]
-    real(wp), intent(inout) :: b(:)                !! right-hand side in, solution out [any]
+    integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
+    real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in a(1:n,1:n) (upper triangle used); overwritten by its factor [any]
+    real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
-    call dposv('U', n, 1, a, size(a, 1), b, size(b), info)
+    call dposv('U', n, 1, a, lda, b, n, info)
     stat = info
     if (info > 0) then
       write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dposv: leading minor ', &

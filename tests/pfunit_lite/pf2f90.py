@@ -46,8 +46,6 @@ RE_MODULE_START = re.compile(r"^\s*module\s+(?!(?:procedure|subroutine|function)
 RE_END_MODULE = re.compile(r"^\s*end\s*module\b", re.IGNORECASE)
 RE_USE_FUNIT = re.compile(r"^\s*use\s*(,\s*non_intrinsic\s*)?(::)?\s*funit\s*(!.*)?$", re.IGNORECASE)
 RE_KEYWORD = re.compile(r"^\s*([A-Za-z]\w*)\s*=(?!=)(.*)$", re.DOTALL)
-# Reserved names: what the real pFUnit generates for a module test_x.
-RESERVED_PREFIXES = ("wrap",)
 
 
 class TranslationError(Exception):
@@ -273,8 +271,6 @@ def translate(path, lines):
                 if module_name.lower() != base.lower():
                     raise TranslationError(path, lineno,
                                            f"module name '{module_name}' does not match file name '{base}'")
-                if module_name.lower().startswith(RESERVED_PREFIXES):
-                    raise TranslationError(path, lineno, "module names starting with 'Wrap' are reserved by pFUnit")
         elif not module_ended:
             if RE_END_MODULE.match(line):
                 module_ended = True
