@@ -18,6 +18,8 @@ module landyn_input
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, deg2rad, rad2deg, max_gears
+  use landyn_contact, only: contact_law_names
+  use landyn_friction, only: friction_law_names
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, engine_cfg_t, gears_cfg_t, &
                            primary_cfg_t, secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, &
                            initial_cfg_t, output_cfg_t, default_input, unset_real, is_set, max_stages, &
@@ -1504,8 +1506,8 @@ contains
     type(friction_cfg_t), intent(in) :: f          !! &friction
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require(errors, lower(trim(adjustl(c%law))) == 'base', pre, 'contact', 'law', quoted(trim(c%law)), &
-                 "one of 'base'")
+    call require(errors, in_name_list(c%law, contact_law_names), pre, 'contact', 'law', quoted(trim(c%law)), &
+                 'one of '//quoted_list(contact_law_names))
     call require(errors, c%stiffness > 0.0_wp, pre, 'contact', 'stiffness', fmt_real(c%stiffness)//' N/m^n', &
                  'stiffness > 0')
     call require(errors, c%exponent > 0.0_wp, pre, 'contact', 'exponent', fmt_real(c%exponent), 'exponent > 0')
@@ -1513,8 +1515,8 @@ contains
                  'damping >= 0 N s/m')
     call require(errors, c%damping_depth > 0.0_wp, pre, 'contact', 'damping_depth', &
                  fmt_real(c%damping_depth)//' m', 'damping_depth > 0 m')
-    call require(errors, lower(trim(adjustl(f%law))) == 'coulomb_step', pre, 'friction', 'law', &
-                 quoted(trim(f%law)), "one of 'coulomb_step'")
+    call require(errors, in_name_list(f%law, friction_law_names), pre, 'friction', 'law', &
+                 quoted(trim(f%law)), 'one of '//quoted_list(friction_law_names))
     call require(errors, f%mu_static >= 0.0_wp, pre, 'friction', 'mu_static', fmt_real(f%mu_static), &
                  'mu_static >= 0')
     call require(errors, f%mu_dynamic >= 0.0_wp, pre, 'friction', 'mu_dynamic', fmt_real(f%mu_dynamic), &
@@ -1560,6 +1562,47 @@ contains
       s = s//'position('//fmt_int(j)//') = '//fmt_real(x(j))
     end do
   end function given_elements
+
+  !> True when name (case-insensitive) is one of the comma- or blank-separated names in list.
+  pure function in_name_list(name, list) result(yes)
+    character(len=*), intent(in) :: name  !! law name as given [-]
+    character(len=*), intent(in) :: list  !! e.g. 'base' or 'a, b' [-]
+    logical :: yes                        !! name is in the list [-]
+    character(len=:), allocatable :: key, rest
+    integer :: p
+    key = lower(trim(adjustl(name)))
+    rest = lower(list)
+    yes = .false.
+    do while (len_trim(rest) > 0)
+      rest = adjustl(rest)
+      p = scan(rest, ', ')
+      if (p == 0) p = len(rest) + 1
+      if (rest(1:p - 1) == key .and. len(key) > 0) yes = .true.
+      if (p > len(rest)) exit
+      rest = rest(p + 1:)
+    end do
+  end function in_name_list
+
+  !> "'a', 'b'" from the list 'a, b'.
+  pure function quoted_list(list) result(s)
+    character(len=*), intent(in) :: list  !! comma- or blank-separated names [-]
+    character(len=:), allocatable :: s    !! quoted names [-]
+    character(len=:), allocatable :: rest
+    integer :: p
+    s = ''
+    rest = list
+    do while (len_trim(rest) > 0)
+      rest = adjustl(rest)
+      p = scan(rest, ', ')
+      if (p == 0) p = len(rest) + 1
+      if (p > 1) then
+        if (len(s) > 0) s = s//', '
+        s = s//quoted(rest(1:p - 1))
+      end if
+      if (p > len(rest)) exit
+      rest = rest(p + 1:)
+    end do
+  end function quoted_list
 
   !> Append "&group: var = value is invalid; valid: condition" unless ok.
   subroutine require(errors, ok, pre, group, var, value, valid)

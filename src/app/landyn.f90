@@ -6,13 +6,14 @@
 !! 3 the simulation failed (diverged); 4 the result file could not be written.
 program landyn
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: msg_len
   use landyn_config, only: landyn_input_t, default_input
   use landyn_input, only: input_errors_t, load_input, resolve_input, validate_input, write_resolved_input
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_output, only: write_result_file
   use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_report, only: write_summary_table
+  use landyn_process, only: terminate
   implicit none
 
   type(landyn_input_t) :: inp
@@ -35,10 +36,10 @@ program landyn
     select case (arg)
     case ('-h', '--help')
       call usage(output_unit)
-      stop
+      call terminate(0)
     case ('-V', '--version')
       write (output_unit, '(a)') 'landyn '//landyn_version_string//' ('//landyn_git_revision//')'
-      stop
+      call terminate(0)
     case ('--check')
       check_only = .true.
     case ('-q', '--quiet')
@@ -68,11 +69,11 @@ program landyn
   if (stat /= 0 .or. errors%count() > 0) then
     call errors%write(error_unit)
     write (error_unit, '(a,i0,a)') 'landyn: ', errors%count(), ' input error(s); nothing was run and no file was written'
-    error stop 2
+    call terminate(2)
   end if
   if (check_only) then
     call write_resolved_input(output_unit, inp)
-    stop
+    call terminate(0)
   end if
   if (len(out_file) == 0) out_file = trim(inp%output%file)
 
@@ -90,7 +91,7 @@ program landyn
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: simulation failed: '//trim(msg)
     write (error_unit, '(a)') 'landyn: no result file was written'
-    error stop 3
+    call terminate(3)
   end if
 
   ! ---- result file
@@ -98,7 +99,7 @@ program landyn
   call write_result_file(out_file, inp, res, cmd, stat, msg)
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
-    error stop 4
+    call terminate(4)
   end if
   call write_summary_table(output_unit, inp, res)
   write (output_unit, '(a)') 'Results written to '//out_file
@@ -145,7 +146,7 @@ contains
     character(len=*), intent(in) :: text   !! what is wrong
     write (error_unit, '(a)') 'landyn: '//text
     write (error_unit, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]'
-    error stop 1
+    call terminate(1)
   end subroutine die_usage
 
 end program landyn
