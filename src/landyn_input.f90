@@ -20,6 +20,7 @@ module landyn_input
   use landyn_kinds, only: wp, deg2rad, rad2deg, max_gears
   use landyn_contact, only: contact_law_names
   use landyn_friction, only: friction_law_names
+  use landyn_kinematics, only: rot_z
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, engine_cfg_t, gears_cfg_t, &
                            primary_cfg_t, secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, &
                            initial_cfg_t, output_cfg_t, default_input, unset_real, is_set, max_stages, &
@@ -1280,24 +1281,6 @@ contains
       l = l//name//'(:, '//fmt_int(i)//')'
     end subroutine append
   end function missing_list
-
-  !> Rotation about z by angle psi (standard right-handed matrix), exact for multiples of 90 deg.
-  pure function rot_z(psi) result(r)
-    real(wp), intent(in) :: psi  !! angle [rad]
-    real(wp) :: r(3, 3)          !! rotation matrix [-]
-    real(wp) :: c, s
-    c = snap(cos(psi))
-    s = snap(sin(psi))
-    r = reshape([c, s, 0.0_wp, -s, c, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], [3, 3])
-  contains
-    pure function snap(x) result(y)
-      real(wp), intent(in) :: x  !! cosine or sine [-]
-      real(wp) :: y              !! x, with round-off near 0 and +-1 removed [-]
-      y = x
-      if (abs(x) < 8.0_wp*epsilon(1.0_wp)) y = 0.0_wp
-      if (abs(abs(x) - 1.0_wp) < 8.0_wp*epsilon(1.0_wp)) y = sign(1.0_wp, x)
-    end function snap
-  end function rot_z
 
   !> Base name of the deck (no directory, no extension) + '.h5'; 'landyn.h5' without a deck.
   pure function default_output_file(deck) result(file)

@@ -232,12 +232,30 @@ contains
   ! Rotations, attitude, transforms
   ! =====================================================================================
 
+  !> cos and sin of an angle, with values within 4 ulp of zero set to exactly 0 (and the other
+  !! to exactly +-1): rotations by multiples of 90 deg are then exact, so a lander built by
+  !! rotating gear 1 is symmetric to the last bit and a symmetric landing stays symmetric.
+  pure subroutine exact_sincos(ang, c, s)
+    real(wp), intent(in) :: ang   !! angle [rad]
+    real(wp), intent(out) :: c    !! cos(ang) [-]
+    real(wp), intent(out) :: s    !! sin(ang) [-]
+    real(wp), parameter :: tiny_trig = 4.0_wp*epsilon(1.0_wp)
+    c = cos(ang); s = sin(ang)
+    if (abs(c) < tiny_trig) then
+      c = 0.0_wp
+      s = sign(1.0_wp, s)
+    else if (abs(s) < tiny_trig) then
+      s = 0.0_wp
+      c = sign(1.0_wp, c)
+    end if
+  end subroutine exact_sincos
+
   !> Elementary rotation about x: [[1,0,0],[0,c,-s],[0,s,c]].
   pure function rot_x(ang) result(r)
     real(wp), intent(in) :: ang  !! rotation angle [rad]
     real(wp) :: r(3,3)           !! rotation matrix [-]
     real(wp) :: c, s
-    c = cos(ang); s = sin(ang)
+    call exact_sincos(ang, c, s)
     r(1,1) = 1.0_wp; r(1,2) = 0.0_wp; r(1,3) = 0.0_wp
     r(2,1) = 0.0_wp; r(2,2) = c;      r(2,3) = -s
     r(3,1) = 0.0_wp; r(3,2) = s;      r(3,3) = c
@@ -249,7 +267,7 @@ contains
     real(wp), intent(in) :: ang  !! rotation angle [rad]
     real(wp) :: r(3,3)           !! rotation matrix [-]
     real(wp) :: c, s
-    c = cos(ang); s = sin(ang)
+    call exact_sincos(ang, c, s)
     r(1,1) = c;      r(1,2) = 0.0_wp; r(1,3) = s
     r(2,1) = 0.0_wp; r(2,2) = 1.0_wp; r(2,3) = 0.0_wp
     r(3,1) = -s;     r(3,2) = 0.0_wp; r(3,3) = c
@@ -260,7 +278,7 @@ contains
     real(wp), intent(in) :: ang  !! rotation angle [rad]
     real(wp) :: r(3,3)           !! rotation matrix [-]
     real(wp) :: c, s
-    c = cos(ang); s = sin(ang)
+    call exact_sincos(ang, c, s)
     r(1,1) = c;      r(1,2) = -s;     r(1,3) = 0.0_wp
     r(2,1) = s;      r(2,2) = c;      r(2,3) = 0.0_wp
     r(3,1) = 0.0_wp; r(3,2) = 0.0_wp; r(3,3) = 1.0_wp

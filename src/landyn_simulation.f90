@@ -220,7 +220,7 @@ contains
     real(wp) :: xd_prev(3, max_gears), delta_prev(max_gears), fn_prev(max_gears), fground_prev(3, max_gears)
     real(wp) :: xt_prev(3), thrust_prev(3), xt(3)
     real(wp) :: w_normal, w_friction, w_thrust, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
-    real(wp) :: speed_char, ovl(3)
+    real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears)
     logical :: touched
     integer(kind=8) :: c0, c1, crate
     character(len=msg_len) :: m2
@@ -309,10 +309,12 @@ contains
           call finish(model, res, t)
           return
         end if
-        fb_l = matmul(model%gear(i)%rot, model%gear(i)%f_body)
-        force = force + matmul(r, fb_l)
-        moment = moment + matmul(model%gear(i)%rot, model%gear(i)%m_body) - cross3(model%body%mc, fb_l)
+        gf(:, i) = matmul(model%gear(i)%rot, model%gear(i)%f_body)
+        gm(:, i) = matmul(model%gear(i)%rot, model%gear(i)%m_body)
       end do
+      fb_l = symmetric_sum(gf, ng)
+      force = force + matmul(r, fb_l)
+      moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust
       thrust_l = 0.0_wp
       if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) then
@@ -414,6 +416,28 @@ contains
     end subroutine wall
 
   end subroutine run_simulation
+
+  !> Sum of the gears' loads, adding diametrically opposed gears (i, i + n/2) first when n is even:
+  !! for a lander symmetric under rotation by 360/n deg their contributions then cancel exactly in
+  !! floating point, so a symmetric landing stays symmetric to the last bit instead of drifting by
+  !! round-off that the crush logic's discrete events would amplify.
+  pure function symmetric_sum(v, n) result(total)
+    real(wp), intent(in) :: v(:, :)   !! (3, >= n) vectors [any]
+    integer, intent(in) :: n          !! number of gears [-]
+    real(wp) :: total(3)              !! their sum [any]
+    integer :: i, h
+    total = 0.0_wp
+    if (mod(n, 2) == 0) then
+      h = n/2
+      do i = 1, h
+        total = total + (v(:, i) + v(:, i + h))
+      end do
+    else
+      do i = 1, n
+        total = total + v(:, i)
+      end do
+    end if
+  end function symmetric_sum
 
   !> Records one output sample.
   subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, &

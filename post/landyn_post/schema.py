@@ -326,6 +326,7 @@ class Result:
             ("git revision", self.data["git_revision"]),
             ("build type", self.data["build_type"]),
             ("compiler", self.data["compiler"]),
+            ("compiler flags", self.data["compiler_flags"]),
             ("written", self.data["date"]),
             ("deck", self.data["deck_name"]),
             ("command line", self.data["command_line"]),
@@ -476,18 +477,17 @@ class Result:
         label = key + (f"[{','.join(sel)}]" if sel else "")
         return Channel(key, gear, index, np.asarray(arr, dtype=float), s.units, label, column)
 
-    def channels(self, keys=None, gear: int | None = None, include_body: bool = True) -> list[Channel]:
+    def channels(self, keys=None, gears=None, include_body: bool = True) -> list[Channel]:
         """All scalar time histories (export order): body vectors, then per gear every gear dataset,
-        then the energy audit. ``gear`` restricts gear channels to one gear; ``include_body=False``
-        drops body and energy channels."""
+        then the energy audit. ``keys`` restricts the datasets, ``gears`` (1-based list) the gears
+        (None: all, []: none); ``include_body=False`` drops the body and energy channels."""
         out = []
         wanted = [d for d in DATASETS if d.is_timeseries and (keys is None or d.key in keys)]
         if include_body:
             for d in wanted:
                 if d.path.startswith("/timeseries/body/"):
                     out += [self._make_channel(d.key, None, i) for i in range(3)]
-        gears = range(1, self.n_gears + 1) if gear is None else [gear]
-        for g in gears:
+        for g in range(1, self.n_gears + 1) if gears is None else gears:
             for d in wanted:
                 if d.path.startswith("/timeseries/gears/"):
                     if d.shape[-1] == 3:

