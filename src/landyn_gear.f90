@@ -38,7 +38,8 @@ module landyn_gear
   use landyn_buffer, only: buffer_law_t, rigid_force
   use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, gear_constraints, gear_constraint_jacobian, &
                                gear_constraint_gamma, cross3
-  use landyn_lapack, only: solve_spd, solve_general
+  use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd, solve_factored_spd
+  use landyn_small_spd, only: small_spd_solve
   implicit none
   private
 
@@ -96,6 +97,15 @@ module landyn_gear
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
     logical :: phq_ok = .false.                   !! phq is valid for the current q
+    ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
+    ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
+    ! computed once and reused until a strut breaks loose.
+    logical :: rigid = .false.                    !! all struts locked and qd = 0
+    logical :: rigid_cache = .false.              !! the caches below are valid
+    type(strut_kin_t) :: sk_c(3)                  !! strut kinematics at the rigid q
+    real(wp) :: mdiag_c(n_q) = 0.0_wp             !! mass matrix diagonal at the rigid q
+    real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! constraint rows (Phi_q and three lock rows)
+    real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! Cholesky factor of A M^-1 A^T
     type(buffer_slot_t) :: buffer(3)              !! primary, left, right buffer laws
     real(wp) :: sigma(3) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
     real(wp) :: len0(3) = 0.0_wp                  !! nominal strut lengths [m]
@@ -152,6 +162,8 @@ contains
     gear%qdd = 0.0_wp
     gear%locked = .true.
     gear%phq_ok = .false.
+    gear%rigid = .true.
+    gear%rigid_cache = .false.
     gear%dir = 0
     gear%s_lock = 0.0_wp
     gear%s_hismin = 0.0_wp
@@ -298,9 +310,13 @@ contains
     real(wp) :: f_rel(3), m_rel(3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
-    logical :: changed
+    logical :: changed, done
 
     stat = 0
+    if (gear%rigid) then
+      call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg)
+      if (stat /= 0 .or. done) return
+    end if
     call strut_kinematics(gear, gear%q, sk)
     mdiag = gear_mass_matrix(gear, gear%q)
     call generalized_forces(gear, gear%q, gear%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
@@ -382,6 +398,65 @@ contains
     gear%f_body = f_foot - f_rel
     gear%m_body = cross3(gear%geom%a + gear%q(1)*sk(1)%u, f_foot) - m_rel
   end subroutine gear_dynamics
+
+  !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
+  !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
+  !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
+  subroutine rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg)
+    type(gear_t), intent(inout) :: gear          !! rigid gear
+    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+    real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
+    logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q)
+    real(wp) :: s(3), sd(3), fpos, fneg, demand
+    integer :: k, i, j, nrow
+    stat = 0
+    done = .false.
+    nrow = n_phi + 3
+    if (.not. gear%rigid_cache) then
+      call strut_kinematics(gear, gear%q, gear%sk_c)
+      gear%mdiag_c = gear_mass_matrix(gear, gear%q)
+      gear%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, gear%q)
+      do k = 1, 3
+        gear%a_c(n_phi + k, :) = 0.0_wp
+        gear%a_c(n_phi + k, idx_len(k)) = 1.0_wp
+      end do
+      do j = 1, nrow
+        do i = 1, j
+          gear%chol_c(i, j) = sum(gear%a_c(i, :)*gear%a_c(j, :)/gear%mdiag_c)
+        end do
+      end do
+      call factor_spd(nrow, gear%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
+      if (stat /= 0) return
+      gear%rigid_cache = .true.
+    end if
+    zero = 0.0_wp
+    call generalized_forces(gear, gear%q, zero, gear%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
+    qf = q_grv + q_ext
+    qf = qf/gear%mdiag_c
+    do i = 1, nrow
+      lam(i) = dot_product(gear%a_c(i, :), qf)
+    end do
+    call solve_factored_spd(nrow, gear%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
+    if (stat /= 0) return
+    call strokes(gear, gear%q, zero, s, sd)
+    do k = 1, 3
+      gear%axial(k) = -lam(n_phi + k)
+      call gear%buffer(k)%law%resistance(s(k), 0.0_wp, gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
+      demand = gear%sigma(k)*gear%axial(k)
+      if (-demand > fpos .or. demand > fneg) then
+        gear%rigid = .false.
+        gear%rigid_cache = .false.
+        return
+      end if
+    end do
+    gear%qdd = 0.0_wp
+    gear%f_body = f_foot
+    gear%m_body = cross3(gear%geom%a + gear%q(1)*gear%sk_c(1)%u, f_foot)
+    done = .true.
+  end subroutine rigid_dynamics
 
   !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
   !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
@@ -466,11 +541,17 @@ contains
         s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
       end do
     end do
-    r(1:nrow) = matmul(aw(1:nrow, :), qf) - b(1:nrow)
-    call solve_spd(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
+    do i = 1, nrow
+      r(i) = dot_product(aw(i, :), qf) - b(i)
+    end do
+    call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
     if (stat /= 0) return
     lam(1:nrow) = r(1:nrow)
-    qdd = (qf - matmul(lam(1:nrow), a(1:nrow, 1:n_q)))/mdiag
+    qdd = qf
+    do i = 1, nrow
+      qdd = qdd - lam(i)*a(i, 1:n_q)
+    end do
+    qdd = qdd/mdiag
   end subroutine solve_reduced
 
   !> The unreduced augmented system [[M, A^T],[A, 0]] [qdd; lam] = [Q; b] solved by LU (for checks).
@@ -517,6 +598,7 @@ contains
     character(len=msg_len) :: buf
 
     stat = 0
+    if (gear%rigid) return      ! no degree of freedom: q, qd and the crush history stay as they are
     call strokes(gear, gear%q, gear%qd, s0, sd0)
     qd_new = gear%qd + gear%qdd*dt
     call strokes(gear, gear%q, qd_new, s1, sd1)
@@ -577,12 +659,12 @@ contains
       gear%phq = a(1:n_phi, :)
       gear%phq_ok = .true.
       do iter = 1, max_iter
-        r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
+        call row_products(nrow, a, gear%qd, r)
         if (maxval(abs(r(1:nrow))) <= tol) exit
         call min_norm_correction(nrow, a, r, gear%qd, stat, errmsg)
         if (stat /= 0) return
       end do
-      r(1:nrow) = matmul(a(1:nrow, 1:n_q), gear%qd)
+      call row_products(nrow, a, gear%qd, r)
       if (maxval(abs(r(1:nrow))) > tol) then
         stat = 3
         write (buf, '(a,es10.3,a)') 'velocity constraint correction did not converge (violation ', &
@@ -595,6 +677,14 @@ contains
     call strokes(gear, gear%q, gear%qd, s1, sd1)
     gear%s_hismax = max(gear%s_hismax, s1)
     gear%s_hismin = min(gear%s_hismin, s1)
+    ! All struts locked: A (Phi_q and three lock rows) is square and regular, so A qd = 0 means
+    ! qd = 0 exactly; the gear becomes rigid.
+    if (all(gear%locked)) then
+      gear%qd = 0.0_wp
+      gear%qdd = 0.0_wp
+      gear%rigid = .true.
+      gear%rigid_cache = .false.
+    end if
   end subroutine gear_integrate
 
   !> Rows of the correction: Phi_q and one row per locked strut.
@@ -635,6 +725,18 @@ contains
     if (row /= nrow) r(row + 1:) = 0.0_wp
   end subroutine position_residual
 
+  !> r = A x for the first nrow rows.
+  pure subroutine row_products(nrow, a, x, r)
+    integer, intent(in) :: nrow                  !! rows
+    real(wp), intent(in) :: a(max_rows, n_q)     !! rows
+    real(wp), intent(in) :: x(n_q)               !! vector
+    real(wp), intent(out) :: r(max_rows)         !! products
+    integer :: i
+    do i = 1, nrow
+      r(i) = dot_product(a(i, :), x)
+    end do
+  end subroutine row_products
+
   !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
   subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
     integer, intent(in) :: nrow                  !! rows
@@ -651,9 +753,15 @@ contains
       end do
     end do
     y(1:nrow) = r(1:nrow)
-    call solve_spd(nrow, s, max_rows, y, stat, errmsg, 'constraint correction (Phi_q Phi_q^T)')
-    if (stat /= 0) return
-    x = x - matmul(y(1:nrow), a(1:nrow, 1:n_q))
+    call small_spd_solve(nrow, s, max_rows, y, stat)
+    if (stat /= 0) then
+      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
+        '): redundant constraints or a singular configuration'
+      return
+    end if
+    do i = 1, nrow
+      x = x - y(i)*a(i, 1:n_q)
+    end do
   end subroutine min_norm_correction
 
 end module landyn_gear

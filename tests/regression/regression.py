@@ -9,8 +9,9 @@ Checks (issue "Touchdown dynamics", item 8):
     LC-3 and LC-4 rms error <= 35 mm, same sign on every strut, same gear crushing most;
   * energy audit residual <= 0.5 % of the input energy; constraint violation after correction
     <= 1e-10 m;
-  * the stored baseline (tests/regression/baselines/<case>.h5), quantity by quantity, at the
-    explicit tolerances of TOLERANCES below (absolute, in the dataset's units, plus relative).
+  * the stored baseline (tests/regression/baselines/<case>.h5), quantity by quantity, at explicit
+    tolerances stored with the baseline: max(FLOORS below, 3 x the spread that round-off alone
+    causes, measured when the baseline is made).
 The numbers found are printed whether the checks pass or not.
 """
 import argparse
@@ -23,28 +24,37 @@ import tempfile
 import numpy as np
 import h5py
 
-# dataset: (absolute tolerance, relative tolerance). Time series are compared at the baseline's
-# sample times (every BASELINE_STRIDE-th output sample).
-TOLERANCES = {
-    "summary/crush_length": (5e-5, 0.0),          # 0.05 mm
-    "summary/crushed_positive": (5e-5, 0.0),
-    "summary/crushed_negative": (5e-5, 0.0),
-    "summary/stroke_final": (5e-5, 0.0),
-    "summary/peak_overload": (0.0, 1e-3),         # g
-    "summary/peak_penetration": (1e-6, 1e-3),     # m
-    "summary/slide_distance": (1e-3, 0.0),        # m
-    "summary/final_attitude": (1e-2, 0.0),        # deg
-    "summary/max_tilt": (1e-2, 0.0),              # deg
-    "summary/energy_residual": (2e-4, 0.0),       # fraction of the input energy
-    "summary/tipped_over": (0, 0.0),
-    "timeseries/gears/stroke": (1e-4, 0.0),       # m
-    "timeseries/gears/strut_force": (2e3, 1e-2),  # N (crush logic switches are sharp)
-    "timeseries/body/position": (1e-4, 0.0),      # m
-    "timeseries/body/velocity": (1e-3, 0.0),      # m/s
-    "timeseries/body/euler_angles": (1e-2, 0.0),  # deg
-    "timeseries/gears/footpad_position": (1e-4, 0.0),
+# Compared datasets with their floor tolerance (absolute, in the dataset's units). The tolerance
+# actually used is max(floor, 3 x spread), where the spread is measured when the baseline is made
+# (--update): the case is rerun with dt perturbed by +-1e-10 (relative), a physically meaningless
+# change that exposes how far round-off alone moves each quantity. Late in some landings (the
+# lander hops after the first crush and lands again on slack legs) crush events are sensitive to
+# round-off; the measured spreads are stored with the baseline (attribute "tolerance") and printed.
+# Time series are compared over the first touchdown and crush (t <= TS_WINDOW), sampled every
+# BASELINE_STRIDE-th output sample.
+FLOORS = {
+    "summary/crush_length": 5e-5,          # m (0.05 mm)
+    "summary/crushed_positive": 5e-5,
+    "summary/crushed_negative": 5e-5,
+    "summary/stroke_final": 5e-5,
+    "summary/peak_overload": 1e-3,         # g
+    "summary/peak_penetration": 1e-6,      # m
+    "summary/slide_distance": 1e-3,        # m
+    "summary/final_attitude": 1e-2,        # deg
+    "summary/max_tilt": 1e-2,              # deg
+    "summary/energy_residual": 2e-4,       # fraction of the input energy
+    "summary/tipped_over": 0.0,
+    "summary/peak_strut_force": 1.0,       # N
+    "timeseries/gears/stroke": 1e-5,       # m
+    "timeseries/body/position": 1e-5,      # m
+    "timeseries/body/velocity": 1e-4,      # m/s
+    "timeseries/body/euler_angles": 1e-3,  # deg
+    "timeseries/gears/footpad_position": 1e-5,
+    "timeseries/gears/normal_force": 100.0,  # N
 }
 BASELINE_STRIDE = 10
+TS_WINDOW = 0.3   # s
+PERTURBATIONS = (1.0 + 1e-10, 1.0 - 1e-10)
 
 FAILS = []
 
@@ -107,20 +117,24 @@ def paper_checks(case, f, theory):
 def subsample(f, name):
     d = f[name][()]
     if name.startswith("timeseries/"):
-        return d[::BASELINE_STRIDE]
+        t = f["timeseries/time"][()]
+        return d[:np.searchsorted(t, TS_WINDOW + 1e-6)][::BASELINE_STRIDE]
     return d
 
 
-def write_baseline(f, path):
+def write_baseline(f, path, spreads):
     with h5py.File(path, "w") as b:
-        b.attrs["note"] = ("LANDYN regression baseline: summary and time series subsampled every %d output "
-                           "samples; regenerate with tests/regression/regression.py --update" % BASELINE_STRIDE)
+        b.attrs["note"] = ("LANDYN regression baseline: summary, and time series for t <= %g s subsampled every "
+                           "%d output samples; tolerance = max(floor, 3 x round-off spread); regenerate with "
+                           "tests/regression/regression.py --update" % (TS_WINDOW, BASELINE_STRIDE))
         b.attrs["code_version"] = f["meta/code_version"][()]
         b.attrs["git_revision"] = f["meta/git_revision"][()]
         b["timeseries/time"] = subsample(f, "timeseries/time")
-        for name in TOLERANCES:
+        for name, floor in FLOORS.items():
             b[name] = subsample(f, name)
             b[name].attrs["units"] = f[name].attrs["units"]
+            b[name].attrs["roundoff_spread"] = spreads[name]
+            b[name].attrs["tolerance"] = max(floor, 3.0 * spreads[name])
     print("baseline written: " + path)
 
 
@@ -132,18 +146,35 @@ def baseline_checks(f, path):
         tb, tr = b["timeseries/time"][()], subsample(f, "timeseries/time")
         check(tb.shape == tr.shape and np.allclose(tb, tr, atol=1e-12, rtol=0),
               "time samples match the baseline")
-        for name, (atol, rtol) in TOLERANCES.items():
-            ref = b[name][()]
-            val = subsample(f, name)
-            if np.shape(ref) != np.shape(val):
-                check(False, "%s: shape %s vs baseline %s" % (name, np.shape(val), np.shape(ref)))
+        for name in FLOORS:
+            ref = np.asarray(b[name][()], dtype=float)
+            val = np.asarray(subsample(f, name), dtype=float)
+            tol = float(b[name].attrs["tolerance"])
+            if ref.shape != val.shape:
+                check(False, "%s: shape %s vs baseline %s" % (name, val.shape, ref.shape))
                 continue
-            ref = np.asarray(ref, dtype=float)
-            val = np.asarray(val, dtype=float)
-            err = np.abs(val - ref)
-            allowed = atol + rtol * np.abs(ref)
-            check(np.all(err <= allowed), "%s within atol %g, rtol %g of the baseline (max |diff| %.3g)"
-                  % (name, atol, rtol, float(err.max()) if err.size else 0.0))
+            err = float(np.max(np.abs(val - ref))) if ref.size else 0.0
+            check(err <= tol, "%s: max |diff| %.3g <= tolerance %.3g (round-off spread %.3g, %s)"
+                  % (name, err, tol, float(b[name].attrs["roundoff_spread"]), b[name].attrs["units"].decode()))
+
+
+def roundoff_spreads(exe, deck_text, d, reference):
+    """Rerun with dt perturbed by +-1e-10 and return each compared quantity's largest deviation."""
+    spreads = {name: 0.0 for name in FLOORS}
+    for k, factor in enumerate(PERTURBATIONS):
+        text = deck_text.replace("dt = 5.0e-6", "dt = %.12e" % (5.0e-6 * factor))
+        if text == deck_text:
+            raise SystemExit("the deck does not state dt = 5.0e-6")
+        deck = os.path.join(d, "perturbed%d.nml" % k)
+        open(deck, "w").write(text)
+        out = os.path.join(d, "perturbed%d.h5" % k)
+        subprocess.run([exe, deck, "-q", "-o", out], check=True, capture_output=True)
+        with h5py.File(out, "r") as g:
+            for name in FLOORS:
+                a = np.asarray(subsample(reference, name), dtype=float)
+                b = np.asarray(subsample(g, name), dtype=float)
+                spreads[name] = max(spreads[name], float(np.max(np.abs(a - b))) if a.size else 0.0)
+    return spreads
 
 
 def main():
@@ -166,7 +197,7 @@ def main():
             paper_checks(a.case, f, load_theory(a.src, a.case))
             if a.update:
                 os.makedirs(os.path.dirname(base), exist_ok=True)
-                write_baseline(f, base)
+                write_baseline(f, base, roundoff_spreads(a.exe, open(deck).read(), d, f))
             baseline_checks(f, base)
     print("%d failed" % len(FAILS))
     sys.exit(1 if FAILS else 0)
