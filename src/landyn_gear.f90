@@ -100,7 +100,8 @@ module landyn_gear
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.
-    logical :: rigid = .false.                    !! all struts locked and qd = 0
+    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
+                                                  !! changing locked or qd from outside requires rigid = .false.)
     logical :: rigid_cache = .false.              !! the caches below are valid
     type(strut_kin_t) :: sk_c(3)                  !! strut kinematics at the rigid q
     real(wp) :: mdiag_c(n_q) = 0.0_wp             !! mass matrix diagonal at the rigid q
@@ -162,7 +163,7 @@ contains
     gear%qdd = 0.0_wp
     gear%locked = .true.
     gear%phq_ok = .false.
-    gear%rigid = .true.
+    gear%rigid = .false.          ! entered by gear_integrate once all struts are locked
     gear%rigid_cache = .false.
     gear%dir = 0
     gear%s_lock = 0.0_wp
@@ -313,7 +314,7 @@ contains
     logical :: changed, done
 
     stat = 0
-    if (gear%rigid) then
+    if (gear%rigid .and. all(gear%locked)) then
       call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg)
       if (stat /= 0 .or. done) return
     end if
@@ -598,7 +599,8 @@ contains
     character(len=msg_len) :: buf
 
     stat = 0
-    if (gear%rigid) return      ! no degree of freedom: q, qd and the crush history stay as they are
+    if (gear%rigid .and. all(gear%locked)) return   ! no degree of freedom: nothing moves
+    gear%rigid = .false.
     call strokes(gear, gear%q, gear%qd, s0, sd0)
     qd_new = gear%qd + gear%qdd*dt
     call strokes(gear, gear%q, qd_new, s1, sd1)
