@@ -9,7 +9,7 @@
 !! first, then positions with the new velocities), the "direct integration" of the paper.
 module landyn_body
   use landyn_kinds, only: wp
-  use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3
+  use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3, mv3, mtv3
   implicit none
   private
 
@@ -100,8 +100,8 @@ contains
     real(wp), intent(in) :: moment(3)     !! total moment about the mass centre, lander axes [N m]
     real(wp) :: h(3)
     body%acc = force/body%mass
-    h = matmul(body%inertia, body%omega)
-    body%alpha = matmul(body%inv_inertia, moment - cross3(body%omega, h))
+    h = mv3(body%inertia, body%omega)
+    body%alpha = mv3(body%inv_inertia, moment - cross3(body%omega, h))
   end subroutine body_accelerations
 
   !> One semi-implicit Euler step with the accelerations already set.
@@ -113,7 +113,7 @@ contains
     body%x = body%x + body%v*dt
     body%omega = body%omega + body%alpha*dt
     e = euler_rate_matrix(body%euler(2), body%euler(3))
-    body%euler = body%euler + matmul(e, body%omega)*dt
+    body%euler = body%euler + mv3(e, body%omega)*dt
     body%r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))
   end subroutine body_step
 
@@ -122,7 +122,7 @@ contains
     type(body_t), intent(in) :: body  !! body
     real(wp), intent(in) :: p(3)      !! point, lander frame [m]
     real(wp) :: x(3)                  !! point, global [m]
-    x = body%x + matmul(body%r, p - body%mc)
+    x = body%x + mv3(body%r, p - body%mc)
   end function body_point_position
 
   !> Global velocity of a body-fixed point given in the lander frame.
@@ -132,7 +132,7 @@ contains
     real(wp) :: v(3)                  !! velocity, global [m/s]
     real(wp) :: w(3)
     w = cross3(body%omega, p - body%mc)
-    v = body%v + matmul(body%r, w)
+    v = body%v + mv3(body%r, w)
   end function body_point_velocity
 
   !> Acceleration of a body-fixed point, in lander axes.
@@ -142,7 +142,7 @@ contains
     real(wp) :: a(3)                  !! acceleration, lander axes [m/s^2]
     real(wp) :: rr(3)
     rr = p - body%mc
-    a = matmul(transpose(body%r), body%acc) + cross3(body%alpha, rr) + cross3(body%omega, cross3(body%omega, rr))
+    a = mtv3(body%r, body%acc) + cross3(body%alpha, rr) + cross3(body%omega, cross3(body%omega, rr))
   end function body_point_acceleration
 
   !> Kinetic energy of the body.

@@ -63,7 +63,7 @@ module landyn_kinematics
   private
 
   ! --- small linear algebra
-  public :: cross3, skew3, norm3, det3, inv3, solve3
+  public :: cross3, skew3, norm3, det3, inv3, solve3, mv3, mtv3
   ! --- rotations, attitude and transforms
   public :: rot_x, rot_y, rot_z, rot_zyx, euler_zyx_from_matrix
   public :: transform_from, transform_compose, transform_inverse, transform_point
@@ -138,6 +138,27 @@ contains
     c(2) = a(3)*b(1) - a(1)*b(3)
     c(3) = a(1)*b(2) - a(2)*b(1)
   end function cross3
+
+  !> Matrix-vector product a x for 3x3 a, written out (the inner loop calls it; gfortran would
+  !! otherwise call its library matmul for component and transposed arguments).
+  pure function mv3(a, x) result(y)
+    real(wp), intent(in) :: a(3,3)  !! matrix [any unit]
+    real(wp), intent(in) :: x(3)    !! vector [any unit]
+    real(wp) :: y(3)                !! a x [unit(a) unit(x)]
+    y(1) = a(1,1)*x(1) + a(1,2)*x(2) + a(1,3)*x(3)
+    y(2) = a(2,1)*x(1) + a(2,2)*x(2) + a(2,3)*x(3)
+    y(3) = a(3,1)*x(1) + a(3,2)*x(2) + a(3,3)*x(3)
+  end function mv3
+
+  !> Transposed matrix-vector product a^T x for 3x3 a, written out.
+  pure function mtv3(a, x) result(y)
+    real(wp), intent(in) :: a(3,3)  !! matrix [any unit]
+    real(wp), intent(in) :: x(3)    !! vector [any unit]
+    real(wp) :: y(3)                !! a^T x [unit(a) unit(x)]
+    y(1) = a(1,1)*x(1) + a(2,1)*x(2) + a(3,1)*x(3)
+    y(2) = a(1,2)*x(1) + a(2,2)*x(2) + a(3,2)*x(3)
+    y(3) = a(1,3)*x(1) + a(2,3)*x(2) + a(3,3)*x(3)
+  end function mtv3
 
   !> Skew-symmetric matrix of w: skew3(w) x = w x x.
   pure function skew3(w) result(s)

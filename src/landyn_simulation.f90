@@ -12,7 +12,7 @@ module landyn_simulation
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len, max_gears, g_earth, rad2deg
   use landyn_config, only: landyn_input_t, is_set
-  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3
+  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3, mtv3
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
   use landyn_gear, only: gear_t, strut_mass_t, gear_init, gear_dynamics, gear_integrate, gear_footpad, &
@@ -213,7 +213,7 @@ contains
 
     type(model_t), target :: model
     integer :: ng, n_cap, nstep, n, i, next_progress
-    real(wp) :: dt, t, t_next_out, r(3, 3), rg(3, 3)
+    real(wp) :: dt, t, t_next_out, r(3, 3)
     real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
     real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
     real(wp) :: vslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
@@ -261,9 +261,9 @@ contains
       ! ---- Step 2: footpads and ground forces
       do i = 1, ng
         call gear_footpad(model%gear(i), pos_g, vel_g)
-        d_l = matmul(model%gear(i)%rot, pos_g)
+        d_l = mv3(model%gear(i)%rot, pos_g)
         xd(:, i) = body_point_position(model%body, d_l)
-        vd(:, i) = body_point_velocity(model%body, d_l) + matmul(r, matmul(model%gear(i)%rot, vel_g))
+        vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
         delta(i) = penetration(model%plane(i), xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), vd(:, i))
         if (delta(i) > 0.0_wp) then
@@ -299,21 +299,19 @@ contains
       force = model%body%mass*model%g_vec
       moment = 0.0_wp
       do i = 1, ng
-        rg = matmul(r, model%gear(i)%rot)
-        field = matmul(transpose(model%gear(i)%rot), matmul(transpose(r), model%g_vec) &
-                - body_point_acceleration(model%body, model%point_a(:, i)))
-        ffoot = matmul(transpose(rg), fground(:, i))
+        field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(model%body, model%point_a(:, i)))
+        ffoot = mtv3(model%gear(i)%rot, mtv3(r, fground(:, i)))
         call gear_dynamics(model%gear(i), ffoot, field, stat, m2)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           call finish(model, res, t)
           return
         end if
-        gf(:, i) = matmul(model%gear(i)%rot, model%gear(i)%f_body)
-        gm(:, i) = matmul(model%gear(i)%rot, model%gear(i)%m_body)
+        gf(:, i) = mv3(model%gear(i)%rot, model%gear(i)%f_body)
+        gm(:, i) = mv3(model%gear(i)%rot, model%gear(i)%m_body)
       end do
       fb_l = symmetric_sum(gf, ng)
-      force = force + matmul(r, fb_l)
+      force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust
       thrust_l = 0.0_wp
@@ -321,12 +319,12 @@ contains
         thrust_l = inp%engine%thrust*inp%engine%direction
         moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
       end if
-      thrust_g = matmul(r, thrust_l)
+      thrust_g = mv3(r, thrust_l)
       force = force + thrust_g
       thrust_prev = thrust_g
       ! ---- Step 6: body accelerations
       call body_accelerations(model%body, force, moment)
-      ovl = matmul(transpose(r), model%body%acc - model%g_vec)/g_earth
+      ovl = mtv3(r, model%body%acc - model%g_vec)/g_earth
       if (norm2(ovl) > res%peak_overload) then
         res%peak_overload = norm2(ovl)
         res%t_peak_overload = t

@@ -18,6 +18,7 @@ import math
 import os
 import re
 import sys
+import textwrap
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -81,6 +82,12 @@ def _read_csv_rows(path: str) -> tuple[list[str], list[tuple[int, list[str]]]]:
     return header, rows
 
 
+def _preview(names: list[str], n: int = 8) -> str:
+    """The first n names, comma-separated, and how many more."""
+    more = f", ... ({len(names)} columns)" if len(names) > n else ""
+    return ", ".join(names[:n]) + more
+
+
 def _number(path: str, lineno: int, col: str, text: str) -> float:
     try:
         v = float(text)
@@ -107,8 +114,10 @@ def read_strut_csv(path: str, n_gears: int, load_case: str | None = None,
     cols = {c.lower(): i for i, c in enumerate(header)}
     keys = {"load_case", "measure", "gear", "strut"}
     if "measure" not in cols and not {"gear", "strut"} <= set(cols):
+        hint = ("; it looks like a time-history CSV: add --timeseries"
+                if {"time_s", "time", "t"} & set(cols) else "")
         raise LandynPostError(f"{path}: needs a 'measure' column or 'gear' and 'strut' columns "
-                              f"(header: {', '.join(header)})")
+                              f"(header: {_preview(header)}){hint}")
     value_cols = [c for c in header if c.lower() not in keys]
     if column:
         cands = [c for c in header if c.lower() in (column.lower(), column.lower() + "_mm")]
@@ -241,7 +250,7 @@ def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_colum
             low = [c.lower() for c in header]
             time_column = next((header[low.index(c)] for c in ("time_s", "time", "t") if c in low), header[0])
     if time_column not in header:
-        raise LandynPostError(f"{path}: no time column {time_column!r} (columns: {', '.join(header)})")
+        raise LandynPostError(f"{path}: no time column {time_column!r} (columns: {_preview(header)})")
     t_ref = data[:, header.index(time_column)] * time_factor
     if not np.all(np.isfinite(t_ref)) or np.any(np.diff(t_ref) <= 0):
         raise LandynPostError(f"{path}: time column {time_column!r} is not strictly increasing")
@@ -254,7 +263,7 @@ def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_colum
     out = []
     for e in entries:
         if e.ref_column not in header:
-            raise LandynPostError(f"{path}: no column {e.ref_column!r} (named in the map; columns: {', '.join(header)})")
+            raise LandynPostError(f"{path}: no column {e.ref_column!r} (named in the map; columns: {_preview(header)})")
         ch = res.channel(e.channel)
         y_ref = data[:, header.index(e.ref_column)] * e.factor
         ok = np.isfinite(y_ref)
@@ -419,7 +428,7 @@ def write_plots(outdir: str, rows: list[CrushRow], stats: list[SeriesStats], ref
         ax2.set_xticklabels([f"{r.measure}\nG{r.gear}{'PLR'[r.strut]}" for r in rows], fontsize=7)
         ax2.set_xlabel("measure (Table 3)")
         ax2.grid(True, axis="y", alpha=0.3)
-        fig.suptitle(f"Crush lengths: {res.title}\nvs {ref_label}", fontsize=9)
+        fig.suptitle("\n".join(textwrap.wrap(f"Crush lengths: {res.title}", 100) + [f"vs {ref_label}"]), fontsize=9)
         fig.tight_layout()
         fn = os.path.join(outdir, "compare_crush_lengths.png")
         fig.savefig(fn, dpi=110)
@@ -501,6 +510,8 @@ def _main(argv=None) -> int:
             {measure_number(g + 1, k): float(ref.crush_length[g, k]) for g in range(ref.n_gears) for k in range(3)},
             ref_label)) if ref.n_gears == res.n_gears else []
         series = h5_series(res, ref, a.channels)
+    elif a.channels:
+        p.error("--channels applies to .h5 references (a CSV's channels come from its columns or --map)")
     elif a.timeseries:
         series = read_timeseries_csv(ref_path, res, a.map, a.time_column, a.time_factor)
         ref_label = os.path.basename(ref_path)

@@ -32,7 +32,8 @@ def _plt():
 
 
 def _title(fig, res: Result, what: str) -> None:
-    fig.suptitle(f"{what}\n{res.title}", fontsize=10)
+    import textwrap
+    fig.suptitle("\n".join([what] + textwrap.wrap(res.title, 90)), fontsize=10)
 
 
 def _gear_color(i: int) -> str:
@@ -104,9 +105,11 @@ def fig_crush_lengths(res: Result):
     net = res.crush_length.reshape(-1) * MM
     colors = [STRUT_COLORS[k] for _ in range(g) for k in range(3)]
     bars = ax.bar(x, net, color=colors, edgecolor="k", lw=0.5, zorder=2)
-    for b, v in zip(bars, net):
-        ax.annotate(f"{v:.1f}", (b.get_x() + b.get_width() / 2, v), ha="center",
-                    va="bottom" if v >= 0 else "top", fontsize=7, xytext=(0, 2 if v >= 0 else -2),
+    low = -res.crushed_negative.reshape(-1) * MM
+    for b, v, lo in zip(bars, net, low):
+        y = v if v >= 0 else min(v, lo)          # below the "crushed toward -" marker
+        ax.annotate(f"{v:.1f}", (b.get_x() + b.get_width() / 2, y), ha="center",
+                    va="bottom" if v >= 0 else "top", fontsize=7, xytext=(0, 2 if v >= 0 else -5),
                     textcoords="offset points")
     cp = cap[:, :, 0].reshape(-1) * MM
     cn = -cap[:, :, 1].reshape(-1) * MM
@@ -219,20 +222,20 @@ def fig_footpad_paths(res: Result):
     ax.plot(pos[:, 1], pos[:, 0], color="k", lw=1, label="lander origin O_L")
     try:
         terr = res.terrain()
-        if np.any(terr[:, 1] != 0):
-            az = np.radians(terr[0, 2])
-            span = float(np.ptp(fp[0, :, 0])) or 5.0
-            ax.annotate("", xy=(np.sin(az) * 0.25 * span, np.cos(az) * 0.25 * span), xytext=(0, 0),
-                        arrowprops=dict(arrowstyle="->", color="saddlebrown"))
-            ax.annotate(f"uphill ({terr[0, 1]:.1f} deg)", (np.sin(az) * 0.27 * span, np.cos(az) * 0.27 * span),
-                        color="saddlebrown", fontsize=8)
-    except Exception:  # the terrain arrow is decoration only
-        pass
+    except LandynFileError:   # the uphill arrow is decoration only
+        terr = np.zeros((res.n_gears, 3))
+    if terr[0, 1] != 0:
+        az = np.radians(terr[0, 2] + (180.0 if terr[0, 1] < 0 else 0.0))
+        span = float(np.ptp(fp[0, :, 0])) or 5.0
+        tip = np.array([np.sin(az), np.cos(az)]) * 0.25 * span     # (y, x) in the plan view
+        ax.annotate("", xy=tuple(tip), xytext=(0, 0), arrowprops=dict(arrowstyle="->", color="saddlebrown"))
+        note = "" if np.allclose(terr, terr[0]) else " (footpad 1's plane)"
+        ax.annotate(f"uphill {abs(terr[0, 1]):.1f} deg{note}", tuple(tip * 1.08), color="saddlebrown", fontsize=8)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("global y [m]")
     ax.set_ylabel("global x [m]")
     ax.set_title("plan view from above (x up, y right, z down)\nopen: start, filled: end", fontsize=9)
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=3)
     ax.grid(True, alpha=0.3)
 
     ax = axs[1]
@@ -247,7 +250,8 @@ def fig_footpad_paths(res: Result):
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("displacement y [mm]")
     ax.set_ylabel("displacement x [mm]")
-    ax.set_title("horizontal footpad displacement since touchdown", fontsize=9)
+    ax.set_title("horizontal footpad displacement since its first contact\n(includes motion after a lift-off)",
+                 fontsize=9)
     ax.legend(fontsize=7)
     ax.grid(True, alpha=0.3)
     _title(fig, res, "Footpad paths on the ground")

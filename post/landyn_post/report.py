@@ -14,8 +14,8 @@ def crush_table_lines(res: Result) -> list[str]:
     """Crush lengths in Table 3's layout (one row per measure) with margins and peak forces."""
     cap = res.strut_capacity()
     head = (f"{'No.':>3} {'gear':>4}  {'strut':<16}{'crush':>8}{'(+)':>8}{'(-)':>8}"
-            f"{'capacity':>10}{'margin':>8}{'peak F':>8}{'work':>8}")
-    units = f"{'':>3} {'':>4}  {'':<16}{'[mm]':>8}{'[mm]':>8}{'[mm]':>8}{'[mm]':>10}{'[mm]':>8}{'[kN]':>8}{'[kJ]':>8}"
+            f"{'capacity':>12}{'margin':>8}{'peak F':>8}{'work':>8}")
+    units = f"{'':>3} {'':>4}  {'':<16}{'[mm]':>8}{'[mm]':>8}{'[mm]':>8}{'[mm]':>12}{'[mm]':>8}{'[kN]':>8}{'[kJ]':>8}"
     lines = [head, units, "-" * len(head)]
     for i in range(res.n_gears):
         for k in range(3):
@@ -25,7 +25,7 @@ def crush_table_lines(res: Result) -> list[str]:
             lines.append(
                 f"{measure_number(i + 1, k):>3} {i + 1:>4}  {STRUT_LABELS[STRUTS[k]]:<16}"
                 f"{res.crush_length[i, k] * MM:8.1f}{res.crushed_positive[i, k] * MM:8.1f}"
-                f"{res.crushed_negative[i, k] * MM:8.1f}{capt:>10}{res.stroke_margin[i, k] * MM:8.1f}"
+                f"{res.crushed_negative[i, k] * MM:8.1f}{capt:>12}{res.stroke_margin[i, k] * MM:8.1f}"
                 f"{res.peak_strut_force[i, k] / 1e3:8.1f}{res.crush_work[i, k] / 1e3:8.2f}{flag}")
     return lines
 

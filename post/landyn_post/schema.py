@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -29,7 +29,8 @@ from .namelist import Namelist, NamelistError, parse_namelist
 __all__ = [
     "SCHEMA_VERSION", "SUPPORTED_MAJOR", "STRUTS", "STRUT_LABELS", "ENERGY_NAMES", "DATASETS",
     "DatasetSpec", "Channel", "Result", "LandynPostError", "LandynFileError", "load", "is_hdf5",
-    "measure_number", "measure_gear_strut", "parse_channel_spec", "units_token",
+    "measure_number", "measure_gear_strut", "parse_channel_spec", "units_token", "strut_index",
+    "ROOT_ATTRIBUTES", "META",
 ]
 
 SCHEMA_VERSION = "1.0"     #: the schema version this package was written for
@@ -71,7 +72,6 @@ class DatasetSpec:
     kind: str
     meaning: str
     components: tuple = ()
-    group: str = field(default="", compare=False)
 
     @property
     def is_timeseries(self) -> bool:
@@ -194,11 +194,6 @@ ROOT_ATTRIBUTES = (
 )
 
 _BY_KEY = {d.key: d for d in DATASETS}
-
-
-def spec(key: str) -> DatasetSpec:
-    """The dataset description for a key (e.g. ``stroke``)."""
-    return _BY_KEY[key]
 
 
 def units_token(units: str) -> str:
@@ -451,27 +446,32 @@ class Result:
         return self._make_channel(name, gear, index)
 
     def _make_channel(self, key: str, gear: int | None, index: int | None) -> Channel:
+        """Channel of dataset `key`, gear (1-based or None), last-axis index (or None).
+
+        Column names: [body_ | gear<i>_] [<strut>_] <dataset> [_<component>] _<units>, e.g.
+        body_velocity_z_m_per_s, gear1_primary_stroke_m, gear2_footpad_position_x_m, energy_friction_J.
+        """
         s = _BY_KEY[key]
         arr = self.data[key]
         sel, parts = [], []
+        if s.path.startswith("/timeseries/body/"):
+            parts.append("body")
         if gear is not None:
             arr = arr[:, gear - 1]
             sel.append(f"gear={gear}")
             parts.append(f"gear{gear}")
-        if index is not None:
+        name = key.replace("/", "_")
+        if index is None:
+            parts.append(name)
+        else:
             arr = arr[..., index]
             lab = s.components[index]
-            sel.append(("strut=" if s.components == STRUTS else "comp=") + lab)
-        body = key.replace("/", "_")
-        if s.path.startswith("/timeseries/body/"):
-            parts.insert(0, "body")
-        if index is not None and s.components == STRUTS:
-            parts.append(s.components[index])
-            parts.append(key)
-        else:
-            parts.append(body)
-            if index is not None:
-                parts.append(s.components[index])
+            if s.components == STRUTS:
+                sel.append("strut=" + lab)
+                parts += [lab, name]
+            else:
+                sel.append("comp=" + lab)
+                parts += [name, lab]
         tok = units_token(s.units)
         column = "_".join(parts + ([tok] if tok else []))
         label = key + (f"[{','.join(sel)}]" if sel else "")

@@ -1,8 +1,9 @@
 """Fixtures: result files produced by the LANDYN executable itself.
 
-The executable is $LANDYN_EXE, else the newest <repo>/build*/landyn, else `landyn` on PATH; the
-tests are skipped (with the reason) when none is found. Runs are shortened to t_end = 0.4 s
-except the full LC-1 run that is compared with the paper's Table 3.
+The executable is $LANDYN_EXE, else the newest <repo>/build*/landyn or <repo>/build*/*/landyn
+(e.g. build/release/landyn), else `landyn` on PATH; the tests are skipped (with the reason) when
+none is found. Runs are shortened to t_end = 0.4 s, except the full LC-1 run that is compared
+with the paper's Table 3.
 """
 from __future__ import annotations
 
@@ -18,7 +19,6 @@ import pytest
 
 POST = Path(__file__).resolve().parents[1]
 REPO = POST.parent
-DATA = Path(__file__).resolve().parent / "data"
 sys.path.insert(0, str(POST))
 
 TOOLS = ("plot", "animate", "compare", "export")
@@ -30,7 +30,8 @@ def _find_landyn() -> tuple[str | None, str]:
         if os.path.isfile(env) and os.access(env, os.X_OK):
             return env, ""
         pytest.fail(f"LANDYN_EXE={env} is not an executable file")
-    cands = [p for p in glob.glob(str(REPO / "build*" / "landyn")) if os.access(p, os.X_OK)]
+    cands = [p for pat in ("build*/landyn", "build*/*/landyn") for p in glob.glob(str(REPO / pat))
+             if os.path.isfile(p) and os.access(p, os.X_OK)]
     if cands:
         return max(cands, key=os.path.getmtime), ""
     on_path = shutil.which("landyn")
@@ -86,7 +87,11 @@ def lc1_full(landyn_exe, tmp_path_factory) -> Path:
 
 @pytest.fixture(scope="session")
 def table3_csv() -> Path:
-    return DATA / "table3_crush_lengths.csv"
+    """The paper's Table 3 (theory and Adams crush lengths, mm), as kept for the regression tests."""
+    p = REPO / "tests" / "regression" / "data" / "table3_crush_lengths.csv"
+    if not p.is_file():
+        pytest.skip(f"{p} not found")
+    return p
 
 
 class ToolRun:

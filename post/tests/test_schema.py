@@ -1,0 +1,123 @@
+"""The reader against files LANDYN writes: schema drift, shapes, input read-back, geometry."""
+from __future__ import annotations
+
+import h5py
+import numpy as np
+import pytest
+
+from conftest import REPO
+from landyn_post import load
+from landyn_post.geometry import lander_geometry, lug_length_error
+from landyn_post.namelist import parse_namelist
+from landyn_post.schema import DATASETS, ROOT_ATTRIBUTES, SCHEMA_VERSION, LandynPostError
+
+
+def _file_datasets(path):
+    out = {}
+    with h5py.File(path, "r") as f:
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset):
+                u = obj.attrs.get("units")
+                out["/" + name] = u.decode() if isinstance(u, bytes) else str(u)
+        f.visititems(visit)
+        attrs = set(f.attrs)
+        version = f.attrs["schema_version"]
+    return out, attrs, version.decode() if isinstance(version, bytes) else str(version)
+
+
+@pytest.mark.parametrize("case", ["lc1_short", "lc3_short"])
+def test_file_matches_schema_exactly(case, request):
+    """Every dataset LANDYN writes is in schema.DATASETS with the same units, and vice versa."""
+    path = request.getfixturevalue(case)
+    found, attrs, version = _file_datasets(path)
+    expected = {d.path: d.units for d in DATASETS}
+    assert set(found) == set(expected), (f"only in file: {sorted(set(found) - set(expected))}, "
+                                         f"only in schema.py: {sorted(set(expected) - set(found))}")
+    assert {p: u for p, u in found.items()} == expected
+    assert {a for a, _ in ROOT_ATTRIBUTES} <= attrs
+    assert version == SCHEMA_VERSION
+
+
+def test_docs_describe_every_dataset():
+    text = (REPO / "docs" / "output.md").read_text()
+    missing = [d.path for d in DATASETS if f"`{d.path}`" not in text]
+    assert not missing, f"docs/output.md does not describe {missing}"
+    assert "schema_version" in text
+
+
+def test_shapes_and_values(lc3_short):
+    r = load(lc3_short)
+    n, g = r.n_samples, r.n_gears
+    assert g == 4 and n == 401
+    assert r.time.shape == (n,) and r.time[-1] == pytest.approx(0.4)
+    assert r.stroke.shape == (n, g, 3)
+    assert r.footpad_position.shape == (n, g, 3)
+    assert r.normal_force.shape == (n, g)
+    assert r.crush_length.shape == (g, 3)
+    assert r.final_attitude.shape == (3,)
+    assert isinstance(r.tipped_over, bool) and isinstance(r.end_reason, str)
+    assert r.schema_version == SCHEMA_VERSION and r.producer.startswith("LANDYN")
+    # summary consistent with the time series: net crush = crushed(+) - crushed(-)
+    np.testing.assert_allclose(r.crush_length, r.crushed_positive - r.crushed_negative, atol=1e-12)
+    assert set(r.energy) >= {"honeycomb_work", "residual", "input"}
+
+
+def test_capacities_and_terrain_from_resolved_input(lc3_short):
+    r = load(lc3_short)
+    cap = r.strut_capacity()
+    np.testing.assert_allclose(cap[:, 0, 0], 0.475)
+    assert np.all(np.isnan(cap[:, 0, 1]))
+    np.testing.assert_allclose(cap[:, 1:, :], 0.27)
+    np.testing.assert_allclose(r.terrain()[:, 1], 8.0)
+    hp = r.hard_points()
+    np.testing.assert_allclose(hp["a"][1], [0.0, 3.89, -2.18], atol=1e-12)   # gear 2 = gear 1 turned 90 deg
+    np.testing.assert_allclose(hp["rotation"], [0, 90, 180, 270])
+
+
+def test_geometry_rebuild_reproduces_strut_lengths(lc3_short):
+    """The lugs rebuilt on the primary's outer tube give the stored secondary lengths exactly."""
+    r = load(lc3_short)
+    geom = lander_geometry(r)
+    assert lug_length_error(r, geom) < 1e-8
+    lp = np.linalg.norm(geom.footpad - geom.upper[:, :, 0], axis=-1)
+    np.testing.assert_allclose(lp, r.strut_length[:, :, 0], atol=1e-9)
+
+
+def test_channels(lc1_short):
+    r = load(lc1_short)
+    c = r.channel("stroke[gear=2,strut=left]")
+    assert c.column == "gear2_secondary_left_stroke_m" and c.units == "m"
+    np.testing.assert_array_equal(c.values, r.stroke[:, 1, 1])
+    assert r.channel("body/velocity[comp=z]").column == "body_velocity_z_m_per_s"
+    assert r.channel("energy/friction").column == "energy_friction_J"
+    for bad in ("stroke[gear=9,strut=primary]", "stroke[gear=1]", "nonsense", "velocity[comp=w]"):
+        with pytest.raises(LandynPostError):
+            r.channel(bad)
+
+
+def test_namelist_subset():
+    nl = parse_namelist("""
+! comment
+&gears
+  n_gears = 2
+  rotation(1:2) = 0.0, 180.0   ! deg
+  point_a(:, 2) = -3.89, 0.0, -2.18
+/
+&terrain
+  height = 4*0.5, 2*0.0
+  slope = 1.0d0, 2.5e-1
+/
+&simulation
+  title = 'it''s a test, with comma! not a comment'
+  stop_at_rest = .true.
+/
+""")
+    assert nl.get("simulation", "title") == "it's a test, with comma! not a comment"
+    assert nl.get("simulation", "stop_at_rest") is True
+    np.testing.assert_allclose(nl.array("gears", "rotation", (2,)), [0, 180])
+    a = nl.array("gears", "point_a", (3, 2))
+    np.testing.assert_allclose(a[:, 1], [-3.89, 0, -2.18])
+    assert np.all(np.isnan(a[:, 0]))
+    np.testing.assert_allclose(nl.array("terrain", "height", (6,)), [0.5] * 4 + [0, 0])
+    np.testing.assert_allclose(nl.array("terrain", "slope", (2,)), [1.0, 0.25])
+    assert nl.get("gears", "n_gears") == 2
