@@ -96,7 +96,8 @@ module landyn_gear
     real(wp) :: m_end(3) = 0.0_wp                 !! end mass [kg]
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
-    logical :: phq_ok = .false.                   !! phq is valid for the current q
+    logical :: phq_ok = .false.                   !! phq was evaluated at phq_q
+    real(wp) :: phq_q(n_q) = 0.0_wp               !! the q at which phq was evaluated [m, rad]
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.
@@ -175,6 +176,7 @@ contains
     gear%work_crush = 0.0_wp
     gear%max_violation = 0.0_wp
     gear%max_drift = 0.0_wp
+    gear%n_correction_iter = 0
     do k = 1, 3
       if (.not. allocated(gear%buffer(k)%law)) then
         stat = 1
@@ -321,7 +323,7 @@ contains
     call strut_kinematics(gear, gear%q, sk)
     mdiag = gear_mass_matrix(gear, gear%q)
     call generalized_forces(gear, gear%q, gear%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
-    if (gear%phq_ok) then
+    if (gear%phq_ok .and. maxval(abs(gear%q - gear%phq_q)) <= 0.0_wp) then
       phq = gear%phq
     else
       phq = gear_constraint_jacobian(gear%geom, gear%q)
@@ -659,6 +661,7 @@ contains
     if (gear%row_bound*sum(abs(gear%qd)) > tol) then
       call build_rows(gear, gear%q, a, nrow)
       gear%phq = a(1:n_phi, :)
+      gear%phq_q = gear%q
       gear%phq_ok = .true.
       do iter = 1, max_iter
         call row_products(nrow, a, gear%qd, r)
