@@ -127,7 +127,7 @@ contains
     call h5_write(f, '/timeseries/gears/slip_speed', res%slip_speed(:, 1:n), 'm/s', stat, errmsg, &
       description='footpad speed tangential to the local surface'); if (stat /= 0) return
     do k = 1, n_energy
-      call h5_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(k, 1:n), 'J', stat, errmsg)
+      call h5_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(1:n, k), 'J', stat, errmsg)
       if (stat /= 0) return
     end do
 

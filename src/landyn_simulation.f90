@@ -60,7 +60,7 @@ module landyn_simulation
     real(wp), allocatable :: friction_force(:, :)          !! (n_gears, n) magnitude [N]
     real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
     real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
-    real(wp), allocatable :: energy(:, :)                  !! (n_energy, n) audit channels [J]
+    real(wp), allocatable :: energy(:, :)                  !! (n, n_energy) audit channels, one column each [J]
     ! summary
     real(wp), allocatable :: crush_net(:, :)               !! (3, n_gears) signed net crush [m]
     real(wp), allocatable :: crush_pos(:, :)               !! (3, n_gears) crushed toward +s [m]
@@ -489,18 +489,18 @@ contains
     ke = body_kinetic_energy(model%body)
     pe = -model%body%mass*gravity*model%body%x(3)
     e_in = ke0 + (pe0 - pe) + w_thrust
-    res%energy(1, k) = ke
-    res%energy(2, k) = ke_legs
-    res%energy(3, k) = pe0 - pe
-    res%energy(4, k) = crush
-    res%energy(5, k) = w_normal - e_el
-    res%energy(6, k) = e_el
-    res%energy(7, k) = w_friction
-    res%energy(8, k) = w_thrust
-    res%energy(9, k) = ke0 + (pe0 - pe) + w_thrust
-    res%energy(10, k) = e_in - (ke + ke_legs + crush + w_normal + w_friction)
+    res%energy(k, 1) = ke
+    res%energy(k, 2) = ke_legs
+    res%energy(k, 3) = pe0 - pe
+    res%energy(k, 4) = crush
+    res%energy(k, 5) = w_normal - e_el
+    res%energy(k, 6) = e_el
+    res%energy(k, 7) = w_friction
+    res%energy(k, 8) = w_thrust
+    res%energy(k, 9) = ke0 + (pe0 - pe) + w_thrust
+    res%energy(k, 10) = e_in - (ke + ke_legs + crush + w_normal + w_friction)
     res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
-    res%energy_residual = res%energy(10, k)/res%energy_input
+    res%energy_residual = res%energy(k, 10)/res%energy_input
   end subroutine record
 
   !> Records a final sample when the run ends between output times.
@@ -578,7 +578,7 @@ contains
     allocate (res%strut_length(3, ng, n_cap), res%stroke(3, ng, n_cap), res%strut_force(3, ng, n_cap), &
               res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
     allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
-              res%slip_speed(ng, n_cap), res%energy(n_energy, n_cap))
+              res%slip_speed(ng, n_cap), res%energy(n_cap, n_energy))
     allocate (res%crush_net(3, ng), res%crush_pos(3, ng), res%crush_neg(3, ng), res%stroke_final(3, ng), &
               res%stroke_margin(3, ng), res%crush_work(3, ng), res%bottomed(3, ng), res%peak_strut_force(3, ng))
     allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))
