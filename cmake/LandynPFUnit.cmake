@@ -110,6 +110,8 @@ function(landyn_add_pfunit_test name pf_file)
       set_tests_properties(${name} PROPERTIES WILL_FAIL TRUE)
     endif()
   endif()
+  # Tests that read shipped files (input decks) find the source tree through this variable.
+  set_tests_properties(${name} PROPERTIES ENVIRONMENT "LANDYN_SOURCE_DIR=${CMAKE_SOURCE_DIR}")
 endfunction()
 
 # Self-tests of the in-tree translator/runtime (only meaningful without real pFUnit).
