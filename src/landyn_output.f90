@@ -166,6 +166,11 @@ contains
       description='initial kinetic energy + potential energy released + thrust work'); if (stat /= 0) return
     call h5_write(f, '/summary/energy_residual', res%energy_residual, '-', stat, errmsg, &
       description='final energy-audit residual relative to energy_input'); if (stat /= 0) return
+    do k = 1, n_energy
+      call h5_write(f, '/summary/energy_audit/'//trim(energy_names(k)), res%energy(n, k), 'J', stat, errmsg, &
+        description='final value of /timeseries/energy/'//trim(energy_names(k)))
+      if (stat /= 0) return
+    end do
     call h5_write(f, '/summary/max_constraint_violation', res%max_violation, 'm', stat, errmsg, &
       description='largest constraint violation after correction'); if (stat /= 0) return
     call h5_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg, &

@@ -176,6 +176,11 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
                     "initial kinetic energy + potential energy released + thrust work"),
         DatasetSpec("energy_residual", "/summary/energy_residual", "-", (), "real",
                     "final energy-audit residual relative to energy_input"),
+    ] + [
+        DatasetSpec("energy_audit/" + e, "/summary/energy_audit/" + e, "J", (), "real",
+                    "final value of /timeseries/energy/" + e)
+        for e in ENERGY_NAMES
+    ] + [
         DatasetSpec("max_constraint_violation", "/summary/max_constraint_violation", "m", (), "real",
                     "largest constraint violation after correction"),
         DatasetSpec("max_constraint_drift", "/summary/max_constraint_drift", "m", (), "real",

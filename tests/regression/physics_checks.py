@@ -70,6 +70,27 @@ def t_free_fall(exe, src, d):
     check(np.max(np.abs(f["timeseries/gears/stroke"][()][pre])) < 1e-12, "no stroke before touchdown")
 
 
+def t_thrust(exe, src, d):
+    # Thrust equal to the weight (16000 kg x 1.62 m/s^2 = 25,920 N) along lander -z (up), cut off at
+    # 0.05 s: the descent speed stays 4 m/s until the cut-off, then grows at g; touchdown from 0.4 m.
+    f = run(exe, d, "thrust", "&simulation t_end = 0.12 /\n&initial_state clearance = 0.4 /\n"
+                              "&engine thrust = 25920.0, direction = 0.0, 0.0, -1.0, cutoff_time = 0.05 /\n")
+    t = f["timeseries/time"][()]
+    v = f["timeseries/body/velocity"][()][:, 2]
+    on = t < 0.05 - 1e-9
+    check(np.max(np.abs(v[on] - 4.0)) < 1e-9, "hover thrust: constant 4 m/s descent (max change %.2e m/s)"
+          % np.max(np.abs(v[on] - 4.0)))
+    after = (t > 0.05 + 1e-9) & (t < 0.08)
+    check(np.max(np.abs(v[after] - (4.0 + 1.62 * (t[after] - 0.05)))) < 2e-5,
+          "after cut-off the speed grows at g (max error %.2e m/s)" % np.max(np.abs(v[after] - (4.0 + 1.62 * (t[after] - 0.05)))))
+    w = f["timeseries/energy/thrust_work"][()]
+    drop = 4.0 * 0.05   # metres descended under thrust
+    check(abs(w[-1] + 25920.0 * drop) < 1e-3 * 25920.0 * drop,
+          "thrust work = -T x distance descended under thrust (%.1f J vs %.1f J)" % (w[-1], -25920.0 * drop))
+    check(abs(f["summary/energy_residual"][()]) < 0.005, "energy audit closes with thrust (%.4f %%)"
+          % (100 * f["summary/energy_residual"][()]))
+
+
 def t_symmetric_landing(exe, src, d):
     f = run(exe, d, "lc1", deck_path=os.path.join(src, "input", "lc1.nml"))
     c = f["summary/crush_length"][()]
