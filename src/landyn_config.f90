@@ -80,6 +80,14 @@ module landyn_config
     real(wp) :: inner_cm = 0.9_wp           !! distance of the inner tube's mass centre from the footpad joint [m]
     real(wp) :: inner_inertia = 4.05_wp     !! transverse inertia of the inner tube about its mass centre [kg m^2]
     real(wp) :: footpad_mass = 15.0_wp      !! footpad, lumped at the footpad joint [kg]
+    ! Tube friction between the outer and inner tubes (eqs. 23-26, landyn_tube_friction). Default
+    ! lengths from the Table 1 geometry, see docs/input/primary_strut.md.
+    logical  :: tube_friction = .false.     !! add eta u_1 N_E/F to the primary's crush bounds
+    real(wp) :: mu_tube = 0.1_wp            !! tube friction coefficient u_1 (Table 1) [-]
+    real(wp) :: tube_outer_length = 2.0_wp  !! L_O: outer tube, upper joint a to its lower end [m]
+    real(wp) :: tube_inner_length = 2.8_wp  !! L_I: inner tube, footpad joint d to its upper end [m]
+    real(wp) :: tube_leg_length = 3.5018_wp !! L_L: primary length a-d at which the overlap is taken [m]
+    real(wp) :: tube_lever = 1.5_wp         !! L_O1: inner tube exposed below the outer tube (load to nearest bearing) [m]
   end type primary_cfg_t
 
   !> &secondary_strut: two-direction honeycomb (levels named by the motion they resist) and part masses.
@@ -104,7 +112,15 @@ module landyn_config
     real(wp) :: stiffness = 3.16227766016838e9_wp  !! K_g [N/m^exponent]
     real(wp) :: exponent = 1.5_wp                  !! n [-]
     real(wp) :: damping = 1.0e4_wp                 !! C_g [N s/m]
-    real(wp) :: damping_depth = 1.0e-4_wp          !! D1: penetration at which full damping applies [m]
+    real(wp) :: damping_depth = 1.0e-4_wp          !! D1 (base), d_max (adams_impact), d (kelvin_voigt_step) [m]
+    real(wp) :: damping2 = 1.0e4_wp                !! D2 of kelvin_voigt_bilinear (Table 5) [N s^2/m^2]
+    real(wp) :: restitution = 0.5_wp               !! e of hunt_crossley (used when hc_alpha = 0) [-]
+    real(wp) :: hc_alpha = 0.0_wp                  !! alpha of hunt_crossley's c_r = 1 - alpha v_impact; 0: use restitution [s/m]
+    real(wp) :: min_impact_speed = 0.1_wp          !! floor of the impact speed in hunt_crossley's chi [m/s]
+    real(wp) :: soil_stiffness = 5.24e5_wp         !! K_b of regolith, F_p = K_b z^n_b [N/m^soil_exponent]
+    real(wp) :: soil_exponent = 1.0_wp             !! n_b of regolith [-]
+    real(wp) :: soil_drag = 1.0e3_wp               !! alpha of regolith's inertial drag alpha v^2 (eq. 1) [kg/m]
+    real(wp) :: soil_unload_stiffness = 1.0e8_wp   !! regolith unloading/reloading stiffness [N/m]
   end type contact_cfg_t
 
   !> &friction: footpad-ground friction.
@@ -114,6 +130,12 @@ module landyn_config
     real(wp) :: mu_dynamic = 0.4_wp         !! dynamic coefficient [-]
     real(wp) :: v_static = 0.1_wp           !! stiction transition slip speed [m/s]
     real(wp) :: v_dynamic = 1.0_wp          !! friction transition slip speed [m/s]
+    real(wp) :: viscous = 100.0_wp          !! C_v of ty2, ty5, ty6 (Table 8 TY-2) [N s/m]
+    real(wp) :: stribeck_speed = unset_real !! v_S of ty5/ty6; unset: 1.0 for ty5, 0.1 for ty6 (Table 8) [m/s]
+    real(wp) :: stribeck_exponent = 0.85_wp !! delta of ty5/ty6 (Table 8) [-]
+    real(wp) :: stribeck_decay = 0.85_wp    !! epsilon of ty6 (Table 8) [-]
+    real(wp) :: stick_stiffness = 1.0e8_wp  !! tangential stiffness of the stick state (stiction laws) [N/m]
+    real(wp) :: stick_damping = 1.0e5_wp    !! tangential damping of the stick state (stiction laws) [N s/m]
   end type friction_cfg_t
 
   !> &terrain: one plane per footpad (column/entry i is footpad i). Plane i passes through the

@@ -40,18 +40,21 @@ module landyn_gear
                                gear_constraint_gamma, cross3
   use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd, solve_factored_spd
   use landyn_small_spd, only: small_spd_solve
+  use landyn_tube_friction, only: tube_friction_t, tube_friction_bound, add_tube_bound
   implicit none
   private
 
   public :: gear_t, strut_mass_t, buffer_slot_t
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
+  public :: gear_relative_momenta
   public :: n_q, n_phi
 
   integer, parameter :: n_q = 9      !! generalized coordinates per gear
   integer, parameter :: n_phi = 6    !! holonomic constraints per gear
   integer, parameter :: max_rows = n_phi + 3
   integer, parameter :: idx_len(3) = [1, 4, 7]   !! index of each strut's length in q
+  real(wp), parameter :: impulse_tol = 1.0e-9_wp  !! velocity change [m/s, rad/s] below which a correction exchanges no impulse
 
   !> Mass properties of one strut.
   type :: strut_mass_t
@@ -98,6 +101,15 @@ module landyn_gear
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
     logical :: phq_ok = .false.                   !! phq was evaluated at phq_q
     real(wp) :: phq_q(n_q) = 0.0_wp               !! the q at which phq was evaluated [m, rad]
+    ! Relative momenta of the leg parts just before and after Step 4's correction in gear_integrate:
+    ! the correction (a strut locking or meeting a rigid stop is a plastic impact) changes them, and
+    ! the caller passes the opposite impulse to the body so that momentum is conserved.
+    real(wp) :: p_pre(3) = 0.0_wp                 !! sum m v_rel before the correction, gear frame [kg m/s]
+    real(wp) :: p_post(3) = 0.0_wp                !! ... after [kg m/s]
+    real(wp) :: h_pre(3) = 0.0_wp                 !! relative angular momentum about O_L before, gear axes [kg m^2/s]
+    real(wp) :: h_post(3) = 0.0_wp                !! ... after [kg m^2/s]
+    real(wp) :: t_pre = 0.0_wp                    !! relative kinetic energy before [J]
+    real(wp) :: t_post = 0.0_wp                   !! ... after [J]
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.
@@ -109,6 +121,8 @@ module landyn_gear
     real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! constraint rows (Phi_q and three lock rows)
     real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! Cholesky factor of A M^-1 A^T
     type(buffer_slot_t) :: buffer(3)              !! primary, left, right buffer laws
+    type(tube_friction_t) :: tube                 !! friction between the primary's tubes (eqs. 23-26)
+    real(wp) :: tube_bound = 0.0_wp               !! its extra bound on the primary this step [N]
     real(wp) :: sigma(3) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
     real(wp) :: len0(3) = 0.0_wp                  !! nominal strut lengths [m]
     ! state
@@ -133,15 +147,19 @@ module landyn_gear
 contains
 
   !> Sets up a gear at its nominal configuration, all struts locked and at rest.
-  subroutine gear_init(gear, geom, rot, mass, stat, errmsg)
+  subroutine gear_init(gear, geom, rot, mass, stat, errmsg, tube)
     type(gear_t), intent(inout) :: gear          !! gear to initialise (buffers must already be allocated)
     type(gear_geometry_t), intent(in) :: geom    !! geometry in the gear frame
     real(wp), intent(in) :: rot(3, 3)            !! gear frame -> lander frame [-]
     type(strut_mass_t), intent(in) :: mass(3)    !! strut mass properties
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
     integer :: k
     stat = 0
+    gear%tube = tube_friction_t()
+    if (present(tube)) gear%tube = tube
+    gear%tube_bound = 0.0_wp
     gear%geom = geom
     gear%rot = rot
     gear%mass = mass
@@ -316,6 +334,9 @@ contains
     logical :: changed, done
 
     stat = 0
+    ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
+    ! secondary forces (landyn_tube_friction). Off by default: then nothing here runs.
+    if (gear%tube%on) call update_tube_bound(gear)
     if (gear%rigid .and. all(gear%locked)) then
       call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg)
       if (stat /= 0 .or. done) return
@@ -333,6 +354,7 @@ contains
     do k = 1, 3
       call gear%buffer(k)%law%resistance(s(k), sd(k), gear%s_hismin(k), gear%s_hismax(k), fpos(k), fneg(k))
     end do
+    if (gear%tube%on) call add_tube_bound(gear%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
     ! Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
     ! into a rigid stop is locked (plastic impact on the stop).
     do k = 1, 3
@@ -402,6 +424,15 @@ contains
     gear%m_body = cross3(gear%geom%a + gear%q(1)*sk(1)%u, f_foot) - m_rel
   end subroutine gear_dynamics
 
+  !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
+  !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
+  pure subroutine update_tube_bound(gear)
+    type(gear_t), intent(inout) :: gear    !! gear; tube_bound is updated
+    type(strut_kin_t) :: sk(3)
+    call strut_kinematics(gear, gear%q, sk)
+    gear%tube_bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%axial(2), gear%axial(3))
+  end subroutine update_tube_bound
+
   !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
   !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
   !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
@@ -448,6 +479,7 @@ contains
     do k = 1, 3
       gear%axial(k) = -lam(n_phi + k)
       call gear%buffer(k)%law%resistance(s(k), 0.0_wp, gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%tube_bound, fpos, fneg)   ! tube friction (eq. 24)
       demand = gear%sigma(k)*gear%axial(k)
       if (-demand > fpos .or. demand > fneg) then
         gear%rigid = .false.
@@ -499,6 +531,45 @@ contains
       m_rel = m_rel + cross3(sk(k)%p, f) + cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
     end do
   end subroutine relative_inertia
+
+  !> Relative linear momentum, relative angular momentum about the lander origin and relative
+  !! kinetic energy of the leg parts: per strut p = m_s Ld u + S udot and
+  !! h = P x p + J(L) u x udot (spin about the axis neglected, as in the mass matrix).
+  pure subroutine gear_relative_momenta(gear, p_rel, h_rel, t_rel)
+    type(gear_t), intent(in) :: gear      !! gear
+    real(wp), intent(out) :: p_rel(3)     !! sum m v_rel, gear frame [kg m/s]
+    real(wp), intent(out) :: h_rel(3)     !! relative angular momentum about O_L, gear axes [kg m^2/s]
+    real(wp), intent(out) :: t_rel        !! relative kinetic energy 1/2 qd^T M qd [J]
+    type(strut_kin_t) :: sk(3)
+    call strut_kinematics(gear, gear%q, sk)
+    call momenta(gear, sk, gear%qd, p_rel, h_rel, t_rel)
+  end subroutine gear_relative_momenta
+
+  pure subroutine momenta(gear, sk, qd, p_rel, h_rel, t_rel)
+    type(gear_t), intent(in) :: gear       !! gear (configuration gear%q)
+    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%q
+    real(wp), intent(in) :: qd(n_q)        !! generalized velocities [m/s, rad/s]
+    real(wp), intent(out) :: p_rel(3)      !! sum m v_rel, gear frame [kg m/s]
+    real(wp), intent(out) :: h_rel(3)      !! relative angular momentum about O_L [kg m^2/s]
+    real(wp), intent(out) :: t_rel         !! relative kinetic energy [J]
+    integer :: k, i0
+    real(wp) :: ud(3), p(3), len, sm, jr, c
+    p_rel = 0.0_wp
+    h_rel = 0.0_wp
+    t_rel = 0.0_wp
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      len = gear%q(i0 + 1)
+      ud = sk(k)%u1*qd(i0 + 2) + sk(k)%u2*qd(i0 + 3)
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      p = gear%m_s(k)*qd(i0 + 1)*sk(k)%u + sm*ud
+      p_rel = p_rel + p
+      h_rel = h_rel + cross3(sk(k)%p, p) + jr*cross3(sk(k)%u, ud)
+      c = cos(gear%q(i0 + 3))
+      t_rel = t_rel + 0.5_wp*(gear%m_s(k)*qd(i0 + 1)**2 + jr*(c*c*qd(i0 + 2)**2 + qd(i0 + 3)**2))
+    end do
+  end subroutine momenta
 
   !> Relative linear momentum and first moment of mass of the leg parts (for the energy audit).
   pure subroutine gear_leg_momentum(gear, p_rel, first_moment, leg_mass)
@@ -595,13 +666,18 @@ contains
     real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q)
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), qd_pre(n_q)
+    type(strut_kin_t) :: sk(3)
     real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg
     integer :: k, iter, nrow
     character(len=msg_len) :: buf
 
     stat = 0
-    if (gear%rigid .and. all(gear%locked)) return   ! no degree of freedom: nothing moves
+    if (gear%rigid .and. all(gear%locked)) then   ! no degree of freedom: nothing moves
+      gear%p_pre = 0.0_wp; gear%p_post = 0.0_wp; gear%h_pre = 0.0_wp; gear%h_post = 0.0_wp
+      gear%t_pre = 0.0_wp; gear%t_post = 0.0_wp
+      return
+    end if
     gear%rigid = .false.
     call strokes(gear, gear%q, gear%qd, s0, sd0)
     qd_new = gear%qd + gear%qdd*dt
@@ -611,6 +687,7 @@ contains
     do k = 1, 3
       if (gear%locked(k)) cycle
       call gear%buffer(k)%law%resistance(s0(k), sd0(k), gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%tube_bound, fpos, fneg)   ! tube friction sticks too
       if (gear%dir(k) > 0 .and. sd1(k) <= 0.0_wp .and. fpos > 0.0_wp) gear%locked(k) = .true.
       if (gear%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%locked(k) = .true.
       if (gear%locked(k)) gear%s_lock(k) = s0(k)
@@ -656,6 +733,7 @@ contains
       return
     end if
     gear%max_violation = max(gear%max_violation, viol)
+    qd_pre = gear%qd
     ! Velocity correction: A qdot = 0 (constraints are scleronomic; locks hold the stroke rate at 0).
     ! |A qdot| <= row_bound * sum|qdot|: when that bound is below the tolerance nothing is to do.
     if (gear%row_bound*sum(abs(gear%qd)) > tol) then
@@ -689,6 +767,18 @@ contains
       gear%qdd = 0.0_wp
       gear%rigid = .true.
       gear%rigid_cache = .false.
+    end if
+    ! Momenta before and after the velocity correction, both with the corrected configuration's
+    ! kinematics (the position correction moves q by at most the tolerance).
+    ! Corrections that change no velocity by more than impulse_tol (the routine 1e-10-level
+    ! projections of smooth motion; momentum changes below ~1e-7 N s) are not exchanged.
+    if (maxval(abs(gear%qd - qd_pre)) > impulse_tol) then
+      call strut_kinematics(gear, gear%q, sk)
+      call momenta(gear, sk, qd_pre, gear%p_pre, gear%h_pre, gear%t_pre)
+      call momenta(gear, sk, gear%qd, gear%p_post, gear%h_post, gear%t_post)
+    else
+      gear%p_pre = 0.0_wp; gear%p_post = 0.0_wp; gear%h_pre = 0.0_wp; gear%h_post = 0.0_wp
+      gear%t_pre = 0.0_wp; gear%t_post = 0.0_wp
     end if
   end subroutine gear_integrate
 

@@ -19,7 +19,7 @@ module landyn_input
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, deg2rad, rad2deg, max_gears
   use landyn_contact, only: contact_law_names
-  use landyn_friction, only: friction_law_names
+  use landyn_friction, only: friction_law_names, default_stribeck_speed
   use landyn_kinematics, only: rot_z
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, engine_cfg_t, gears_cfg_t, &
                            primary_cfg_t, secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, &
@@ -29,7 +29,7 @@ module landyn_input
   private
 
   public :: input_errors_t
-  public :: read_input_file, read_input_text, resolve_input, validate_input, load_input
+  public :: read_input_file, read_input_text, apply_input_text, resolve_input, validate_input, load_input
   public :: write_resolved_input, resolved_input_text
 
   !> One message (deferred length, so nothing is truncated).
@@ -121,7 +121,13 @@ module landyn_input
     var_t(g_primary, 'inner_mass', 'kg', 'a real number', 'inner tube'), &
     var_t(g_primary, 'inner_cm', 'm', 'a real number', 'inner tube mass centre from the footpad joint'), &
     var_t(g_primary, 'inner_inertia', 'kg m^2', 'a real number', 'inner tube transverse inertia about its mass centre'), &
-    var_t(g_primary, 'footpad_mass', 'kg', 'a real number', 'footpad, lumped at the footpad joint')]
+    var_t(g_primary, 'footpad_mass', 'kg', 'a real number', 'footpad, lumped at the footpad joint'), &
+    var_t(g_primary, 'tube_friction', '', 'a logical (.true. or .false.)', 'friction between the tubes (eqs. 23-26)'), &
+    var_t(g_primary, 'mu_tube', '-', 'a real number', 'tube friction coefficient u_1'), &
+    var_t(g_primary, 'tube_outer_length', 'm', 'a real number', 'L_O: outer tube, upper joint to its lower end'), &
+    var_t(g_primary, 'tube_inner_length', 'm', 'a real number', 'L_I: inner tube, footpad joint to its upper end'), &
+    var_t(g_primary, 'tube_leg_length', 'm', 'a real number', 'L_L: primary length at which the overlap is taken'), &
+    var_t(g_primary, 'tube_lever', 'm', 'a real number', 'L_O1: lever arm of the lateral load (exposed inner tube)')]
   type(var_t), parameter :: vars_secondary(*) = [ &
     var_t(g_secondary, 'force_lengthening', 'N', 'a real number', 'crush force resisting lengthening (F_com)'), &
     var_t(g_secondary, 'force_shortening', 'N', 'a real number', 'crush force resisting shortening (F_ten)'), &
@@ -140,13 +146,27 @@ module landyn_input
     var_t(g_contact, 'stiffness', 'N/m^n', 'a real number', 'K_g'), &
     var_t(g_contact, 'exponent', '-', 'a real number', 'penetration exponent n'), &
     var_t(g_contact, 'damping', 'N s/m', 'a real number', 'C_g'), &
-    var_t(g_contact, 'damping_depth', 'm', 'a real number', 'D1: penetration at which full damping applies')]
+    var_t(g_contact, 'damping_depth', 'm', 'a real number', 'D1 (base), d_max (adams_impact), d (kelvin_voigt_step)'), &
+    var_t(g_contact, 'damping2', 'N s^2/m^2', 'a real number', 'D2 of kelvin_voigt_bilinear'), &
+    var_t(g_contact, 'restitution', '-', 'a real number', 'e of hunt_crossley (when hc_alpha = 0)'), &
+    var_t(g_contact, 'hc_alpha', 's/m', 'a real number', 'hunt_crossley c_r = 1 - alpha v_impact; 0: use e'), &
+    var_t(g_contact, 'min_impact_speed', 'm/s', 'a real number', 'floor of the impact speed in hunt_crossley'), &
+    var_t(g_contact, 'soil_stiffness', 'N/m^n_b', 'a real number', 'K_b of regolith, F_p = K_b z^n_b'), &
+    var_t(g_contact, 'soil_exponent', '-', 'a real number', 'n_b of regolith'), &
+    var_t(g_contact, 'soil_drag', 'kg/m', 'a real number', 'alpha of regolith, drag alpha v^2 (eq. 1)'), &
+    var_t(g_contact, 'soil_unload_stiffness', 'N/m', 'a real number', 'regolith unloading/reloading stiffness')]
   type(var_t), parameter :: vars_friction(*) = [ &
     var_t(g_friction, 'law', '', 'a quoted character string', 'friction law'), &
     var_t(g_friction, 'mu_static', '-', 'a real number', 'static friction coefficient'), &
     var_t(g_friction, 'mu_dynamic', '-', 'a real number', 'dynamic friction coefficient'), &
     var_t(g_friction, 'v_static', 'm/s', 'a real number', 'stiction transition slip speed'), &
-    var_t(g_friction, 'v_dynamic', 'm/s', 'a real number', 'friction transition slip speed')]
+    var_t(g_friction, 'v_dynamic', 'm/s', 'a real number', 'friction transition slip speed'), &
+    var_t(g_friction, 'viscous', 'N s/m', 'a real number', 'C_v of ty2, ty5, ty6'), &
+    var_t(g_friction, 'stribeck_speed', 'm/s', 'a real number', 'v_S of ty5, ty6 (default 1.0 for ty5, 0.1 for ty6)'), &
+    var_t(g_friction, 'stribeck_exponent', '-', 'a real number', 'delta of ty5, ty6'), &
+    var_t(g_friction, 'stribeck_decay', '-', 'a real number', 'epsilon of ty6'), &
+    var_t(g_friction, 'stick_stiffness', 'N/m', 'a real number', 'tangential stiffness of the stick state'), &
+    var_t(g_friction, 'stick_damping', 'N s/m', 'a real number', 'tangential damping of the stick state')]
   type(var_t), parameter :: vars_terrain(*) = [ &
     var_t(g_terrain, 'height', 'm', 'up to 8 real numbers, one per footpad', 'surface elevation at the global origin (up +)'), &
     var_t(g_terrain, 'slope', 'deg', 'up to 8 real numbers, one per footpad', 'slope angle'), &
@@ -272,6 +292,24 @@ contains
     stat = merge(0, 1, errors%count() == n0)
   end subroutine read_input_text
 
+  !> Apply a deck fragment on top of an input already read (not yet resolved): only the variables
+  !! the fragment names change, and a group may be given again. Used for study variants.
+  !! The fragment is appended to inp%deck_text after a comment naming `fragment_name`.
+  !! stat = 0 when no error was found, 1 otherwise.
+  subroutine apply_input_text(text, fragment_name, inp, errors, stat)
+    character(len=*), intent(in) :: text           !! deck fragment (namelist groups) [-]
+    character(len=*), intent(in) :: fragment_name  !! name for messages [-]
+    type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    integer, intent(out) :: stat                   !! 0 ok, 1 errors found [-]
+    integer :: n0
+    n0 = errors%count()
+    call parse_deck(text, fragment_name, inp, errors)
+    if (.not. allocated(inp%deck_text)) inp%deck_text = ''
+    inp%deck_text = inp%deck_text//new_line('a')//'! ---- applied on top: '//trim(fragment_name)//new_line('a')//text
+    stat = merge(0, 1, errors%count() == n0)
+  end subroutine apply_input_text
+
   !> Read, resolve and validate a deck in one call. stat = 0 when the input is ready to run,
   !! 1 when `errors` holds problems of the deck, 2 when the file cannot be opened or read.
   subroutine load_input(path, inp, errors, stat)
@@ -309,6 +347,8 @@ contains
     end if
     inp%contact%law = lower(adjustl(inp%contact%law))
     inp%friction%law = lower(adjustl(inp%friction%law))
+    if (.not. is_set(inp%friction%stribeck_speed)) &
+      inp%friction%stribeck_speed = default_stribeck_speed(inp%friction%law)
     if (len_trim(inp%output%file) == 0) then
       if (allocated(inp%deck_name)) then
         inp%output%file = default_output_file(inp%deck_name)
@@ -441,6 +481,12 @@ contains
       call put_var(text, g_primary, 'inner_cm', fmt_real(p%inner_cm))
       call put_var(text, g_primary, 'inner_inertia', fmt_real(p%inner_inertia))
       call put_var(text, g_primary, 'footpad_mass', fmt_real(p%footpad_mass))
+      call put_var(text, g_primary, 'tube_friction', fmt_logical(p%tube_friction))
+      call put_var(text, g_primary, 'mu_tube', fmt_real(p%mu_tube))
+      call put_var(text, g_primary, 'tube_outer_length', fmt_real(p%tube_outer_length))
+      call put_var(text, g_primary, 'tube_inner_length', fmt_real(p%tube_inner_length))
+      call put_var(text, g_primary, 'tube_leg_length', fmt_real(p%tube_leg_length))
+      call put_var(text, g_primary, 'tube_lever', fmt_real(p%tube_lever))
       call put(text, '/')
     end associate
 
@@ -468,6 +514,14 @@ contains
       call put_var(text, g_contact, 'exponent', fmt_real(c%exponent))
       call put_var(text, g_contact, 'damping', fmt_real(c%damping))
       call put_var(text, g_contact, 'damping_depth', fmt_real(c%damping_depth))
+      call put_var(text, g_contact, 'damping2', fmt_real(c%damping2))
+      call put_var(text, g_contact, 'restitution', fmt_real(c%restitution))
+      call put_var(text, g_contact, 'hc_alpha', fmt_real(c%hc_alpha))
+      call put_var(text, g_contact, 'min_impact_speed', fmt_real(c%min_impact_speed))
+      call put_var(text, g_contact, 'soil_stiffness', fmt_real(c%soil_stiffness))
+      call put_var(text, g_contact, 'soil_exponent', fmt_real(c%soil_exponent))
+      call put_var(text, g_contact, 'soil_drag', fmt_real(c%soil_drag))
+      call put_var(text, g_contact, 'soil_unload_stiffness', fmt_real(c%soil_unload_stiffness))
       call put(text, '/')
     end associate
 
@@ -478,6 +532,12 @@ contains
       call put_var(text, g_friction, 'mu_dynamic', fmt_real(f%mu_dynamic))
       call put_var(text, g_friction, 'v_static', fmt_real(f%v_static))
       call put_var(text, g_friction, 'v_dynamic', fmt_real(f%v_dynamic))
+      call put_var(text, g_friction, 'viscous', fmt_real(f%viscous))
+      call put_partial(text, g_friction, 'stribeck_speed', [f%stribeck_speed], 0, .false.)
+      call put_var(text, g_friction, 'stribeck_exponent', fmt_real(f%stribeck_exponent))
+      call put_var(text, g_friction, 'stribeck_decay', fmt_real(f%stribeck_decay))
+      call put_var(text, g_friction, 'stick_stiffness', fmt_real(f%stick_stiffness))
+      call put_var(text, g_friction, 'stick_damping', fmt_real(f%stick_damping))
       call put(text, '/')
     end associate
 
@@ -1007,9 +1067,11 @@ contains
     integer :: n_stages
     real(wp) :: stage_force(max_stages), stage_end(max_stages)
     real(wp) :: stop_stiffness, stop_damping, outer_mass, outer_cm, outer_inertia, inner_mass, inner_cm, &
-                inner_inertia, footpad_mass
+                inner_inertia, footpad_mass, mu_tube, tube_outer_length, tube_inner_length, tube_leg_length, tube_lever
+    logical :: tube_friction
     namelist /primary_strut/ n_stages, stage_force, stage_end, stop_stiffness, stop_damping, outer_mass, &
-      outer_cm, outer_inertia, inner_mass, inner_cm, inner_inertia, footpad_mass
+      outer_cm, outer_inertia, inner_mass, inner_cm, inner_inertia, footpad_mass, tube_friction, mu_tube, &
+      tube_outer_length, tube_inner_length, tube_leg_length, tube_lever
     n_stages = cfg%n_stages
     stage_force = cfg%stage_force
     stage_end = cfg%stage_end
@@ -1022,10 +1084,17 @@ contains
     inner_cm = cfg%inner_cm
     inner_inertia = cfg%inner_inertia
     footpad_mass = cfg%footpad_mass
+    tube_friction = cfg%tube_friction
+    mu_tube = cfg%mu_tube
+    tube_outer_length = cfg%tube_outer_length
+    tube_inner_length = cfg%tube_inner_length
+    tube_leg_length = cfg%tube_leg_length
+    tube_lever = cfg%tube_lever
     read (buffer, nml=primary_strut, iostat=ios, iomsg=msg)
     if (ios /= 0) return
     if (.not. plausible([stage_force, stage_end, stop_stiffness, stop_damping, outer_mass, outer_cm, &
-                         outer_inertia, inner_mass, inner_cm, inner_inertia, footpad_mass])) then
+                         outer_inertia, inner_mass, inner_cm, inner_inertia, footpad_mass, mu_tube, &
+                         tube_outer_length, tube_inner_length, tube_leg_length, tube_lever])) then
       ios = ios_implausible
       return
     end if
@@ -1041,6 +1110,12 @@ contains
     cfg%inner_cm = inner_cm
     cfg%inner_inertia = inner_inertia
     cfg%footpad_mass = footpad_mass
+    cfg%tube_friction = tube_friction
+    cfg%mu_tube = mu_tube
+    cfg%tube_outer_length = tube_outer_length
+    cfg%tube_inner_length = tube_inner_length
+    cfg%tube_leg_length = tube_leg_length
+    cfg%tube_lever = tube_lever
   end subroutine read_primary
 
   subroutine read_secondary(buffer, cfg, ios, msg)
@@ -1092,16 +1167,27 @@ contains
     integer, intent(out) :: ios                  !! iostat [-]
     character(len=*), intent(inout) :: msg       !! iomsg [-]
     character(len=name_len) :: law
-    real(wp) :: stiffness, exponent, damping, damping_depth
-    namelist /contact/ law, stiffness, exponent, damping, damping_depth
+    real(wp) :: stiffness, exponent, damping, damping_depth, damping2, restitution, hc_alpha, min_impact_speed, &
+                soil_stiffness, soil_exponent, soil_drag, soil_unload_stiffness
+    namelist /contact/ law, stiffness, exponent, damping, damping_depth, damping2, restitution, hc_alpha, &
+      min_impact_speed, soil_stiffness, soil_exponent, soil_drag, soil_unload_stiffness
     law = cfg%law
     stiffness = cfg%stiffness
     exponent = cfg%exponent
     damping = cfg%damping
     damping_depth = cfg%damping_depth
+    damping2 = cfg%damping2
+    restitution = cfg%restitution
+    hc_alpha = cfg%hc_alpha
+    min_impact_speed = cfg%min_impact_speed
+    soil_stiffness = cfg%soil_stiffness
+    soil_exponent = cfg%soil_exponent
+    soil_drag = cfg%soil_drag
+    soil_unload_stiffness = cfg%soil_unload_stiffness
     read (buffer, nml=contact, iostat=ios, iomsg=msg)
     if (ios /= 0) return
-    if (.not. plausible([stiffness, exponent, damping, damping_depth])) then
+    if (.not. plausible([stiffness, exponent, damping, damping_depth, damping2, restitution, hc_alpha, &
+                         min_impact_speed, soil_stiffness, soil_exponent, soil_drag, soil_unload_stiffness])) then
       ios = ios_implausible
       return
     end if
@@ -1110,6 +1196,14 @@ contains
     cfg%exponent = exponent
     cfg%damping = damping
     cfg%damping_depth = damping_depth
+    cfg%damping2 = damping2
+    cfg%restitution = restitution
+    cfg%hc_alpha = hc_alpha
+    cfg%min_impact_speed = min_impact_speed
+    cfg%soil_stiffness = soil_stiffness
+    cfg%soil_exponent = soil_exponent
+    cfg%soil_drag = soil_drag
+    cfg%soil_unload_stiffness = soil_unload_stiffness
   end subroutine read_contact
 
   subroutine read_friction(buffer, cfg, ios, msg)
@@ -1118,16 +1212,25 @@ contains
     integer, intent(out) :: ios                  !! iostat [-]
     character(len=*), intent(inout) :: msg       !! iomsg [-]
     character(len=name_len) :: law
-    real(wp) :: mu_static, mu_dynamic, v_static, v_dynamic
-    namelist /friction/ law, mu_static, mu_dynamic, v_static, v_dynamic
+    real(wp) :: mu_static, mu_dynamic, v_static, v_dynamic, viscous, stribeck_speed, stribeck_exponent, &
+                stribeck_decay, stick_stiffness, stick_damping
+    namelist /friction/ law, mu_static, mu_dynamic, v_static, v_dynamic, viscous, stribeck_speed, &
+      stribeck_exponent, stribeck_decay, stick_stiffness, stick_damping
     law = cfg%law
     mu_static = cfg%mu_static
     mu_dynamic = cfg%mu_dynamic
     v_static = cfg%v_static
     v_dynamic = cfg%v_dynamic
+    viscous = cfg%viscous
+    stribeck_speed = cfg%stribeck_speed
+    stribeck_exponent = cfg%stribeck_exponent
+    stribeck_decay = cfg%stribeck_decay
+    stick_stiffness = cfg%stick_stiffness
+    stick_damping = cfg%stick_damping
     read (buffer, nml=friction, iostat=ios, iomsg=msg)
     if (ios /= 0) return
-    if (.not. plausible([mu_static, mu_dynamic, v_static, v_dynamic])) then
+    if (.not. plausible([mu_static, mu_dynamic, v_static, v_dynamic, viscous, stribeck_speed, stribeck_exponent, &
+                         stribeck_decay, stick_stiffness, stick_damping])) then
       ios = ios_implausible
       return
     end if
@@ -1136,6 +1239,12 @@ contains
     cfg%mu_dynamic = mu_dynamic
     cfg%v_static = v_static
     cfg%v_dynamic = v_dynamic
+    cfg%viscous = viscous
+    cfg%stribeck_speed = stribeck_speed
+    cfg%stribeck_exponent = stribeck_exponent
+    cfg%stribeck_decay = stribeck_decay
+    cfg%stick_stiffness = stick_stiffness
+    cfg%stick_damping = stick_damping
   end subroutine read_friction
 
   subroutine read_terrain(buffer, cfg, ios, msg)
@@ -1425,6 +1534,19 @@ contains
       call require(errors, p%footpad_mass + p%inner_mass > 0.0_wp, pre, g, 'footpad_mass + inner_mass', &
                    fmt_real(p%footpad_mass + p%inner_mass)//' kg', 'footpad_mass + inner_mass > 0 kg '// &
                    '(the footpad node needs mass)')
+    call require(errors, p%mu_tube >= 0.0_wp, pre, g, 'mu_tube', fmt_real(p%mu_tube), 'mu_tube >= 0')
+    call require(errors, p%tube_outer_length > 0.0_wp, pre, g, 'tube_outer_length', &
+                 fmt_real(p%tube_outer_length)//' m', 'tube_outer_length > 0 m')
+    call require(errors, p%tube_inner_length > 0.0_wp, pre, g, 'tube_inner_length', &
+                 fmt_real(p%tube_inner_length)//' m', 'tube_inner_length > 0 m')
+    call require(errors, p%tube_leg_length > 0.0_wp, pre, g, 'tube_leg_length', &
+                 fmt_real(p%tube_leg_length)//' m', 'tube_leg_length > 0 m')
+    call require(errors, p%tube_lever >= 0.0_wp, pre, g, 'tube_lever', fmt_real(p%tube_lever)//' m', &
+                 'tube_lever >= 0 m')
+    if (p%tube_outer_length > 0.0_wp .and. p%tube_inner_length > 0.0_wp .and. p%tube_leg_length > 0.0_wp) &
+      call require(errors, p%tube_outer_length + p%tube_inner_length > p%tube_leg_length, pre, g, &
+                   'tube_leg_length', fmt_real(p%tube_leg_length)//' m', 'tube_leg_length < tube_outer_length + '// &
+                   'tube_inner_length = '//fmt_real(p%tube_outer_length + p%tube_inner_length)//' m (the tubes overlap)')
   contains
     subroutine check_stages()
       integer :: i
@@ -1498,6 +1620,22 @@ contains
                  'damping >= 0 N s/m')
     call require(errors, c%damping_depth > 0.0_wp, pre, 'contact', 'damping_depth', &
                  fmt_real(c%damping_depth)//' m', 'damping_depth > 0 m')
+    call require(errors, c%damping2 >= 0.0_wp, pre, 'contact', 'damping2', fmt_real(c%damping2)//' N s^2/m^2', &
+                 'damping2 >= 0 N s^2/m^2')
+    call require(errors, c%restitution >= 0.0_wp .and. c%restitution <= 1.0_wp, pre, 'contact', 'restitution', &
+                 fmt_real(c%restitution), '0 <= restitution <= 1')
+    call require(errors, c%hc_alpha >= 0.0_wp, pre, 'contact', 'hc_alpha', fmt_real(c%hc_alpha)//' s/m', &
+                 'hc_alpha >= 0 s/m')
+    call require(errors, c%min_impact_speed > 0.0_wp, pre, 'contact', 'min_impact_speed', &
+                 fmt_real(c%min_impact_speed)//' m/s', 'min_impact_speed > 0 m/s')
+    call require(errors, c%soil_stiffness > 0.0_wp, pre, 'contact', 'soil_stiffness', fmt_real(c%soil_stiffness), &
+                 'soil_stiffness > 0')
+    call require(errors, c%soil_exponent > 0.0_wp, pre, 'contact', 'soil_exponent', fmt_real(c%soil_exponent), &
+                 'soil_exponent > 0')
+    call require(errors, c%soil_drag >= 0.0_wp, pre, 'contact', 'soil_drag', fmt_real(c%soil_drag)//' kg/m', &
+                 'soil_drag >= 0 kg/m')
+    call require(errors, c%soil_unload_stiffness > 0.0_wp, pre, 'contact', 'soil_unload_stiffness', &
+                 fmt_real(c%soil_unload_stiffness)//' N/m', 'soil_unload_stiffness > 0 N/m')
     call require(errors, in_name_list(f%law, friction_law_names), pre, 'friction', 'law', &
                  quoted(trim(f%law)), 'one of '//quoted_list(friction_law_names))
     call require(errors, f%mu_static >= 0.0_wp, pre, 'friction', 'mu_static', fmt_real(f%mu_static), &
@@ -1508,6 +1646,23 @@ contains
                  'v_static > 0 m/s')
     call require(errors, f%v_dynamic > f%v_static, pre, 'friction', 'v_dynamic', fmt_real(f%v_dynamic)//' m/s', &
                  'v_dynamic > v_static = '//fmt_real(f%v_static)//' m/s')
+    call require(errors, f%viscous >= 0.0_wp, pre, 'friction', 'viscous', fmt_real(f%viscous)//' N s/m', &
+                 'viscous >= 0 N s/m')
+    if (is_set(f%stribeck_speed)) &
+      call require(errors, f%stribeck_speed > 0.0_wp, pre, 'friction', 'stribeck_speed', &
+                   fmt_real(f%stribeck_speed)//' m/s', 'stribeck_speed > 0 m/s')
+    call require(errors, f%stribeck_exponent > 0.0_wp, pre, 'friction', 'stribeck_exponent', &
+                 fmt_real(f%stribeck_exponent), 'stribeck_exponent > 0')
+    call require(errors, f%stribeck_decay >= 0.0_wp, pre, 'friction', 'stribeck_decay', fmt_real(f%stribeck_decay), &
+                 'stribeck_decay >= 0')
+    call require(errors, f%stick_stiffness > 0.0_wp, pre, 'friction', 'stick_stiffness', &
+                 fmt_real(f%stick_stiffness)//' N/m', 'stick_stiffness > 0 N/m')
+    call require(errors, f%stick_damping >= 0.0_wp, pre, 'friction', 'stick_damping', &
+                 fmt_real(f%stick_damping)//' N s/m', 'stick_damping >= 0 N s/m')
+    if (in_name_list(f%law, 'ty4, ty5, ty6')) &
+      call require(errors, f%mu_dynamic <= f%mu_static, pre, 'friction', 'mu_dynamic', fmt_real(f%mu_dynamic), &
+                   'mu_dynamic <= mu_static = '//fmt_real(f%mu_static)//' for law '//quoted(trim(f%law))// &
+                   ' (stiction)')
   end subroutine validate_contact_friction
 
   subroutine validate_terrain_initial(t, s, n_gears, pre, errors)

@@ -22,6 +22,7 @@ module landyn_simulation
                             to_global
   use landyn_contact, only: contact_law_t, make_contact_law
   use landyn_friction, only: friction_law_t, make_friction_law
+  use landyn_tube_friction, only: tube_friction_t, make_tube_friction
   implicit none
   private
 
@@ -33,8 +34,10 @@ module landyn_simulation
     type(body_t) :: body
     type(gear_t) :: gear(max_gears)
     type(terrain_plane_t) :: plane(max_gears)
-    class(contact_law_t), allocatable :: contact
-    class(friction_law_t), allocatable :: friction
+    ! One law instance per footpad, allocated here once: laws with history (contact) or a stick
+    ! state (friction) keep their footpad's state in their instance; the others are plain copies.
+    class(contact_law_t), allocatable :: contact(:)    !! normal contact law of footpad i
+    class(friction_law_t), allocatable :: friction(:)  !! friction law of footpad i
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
@@ -91,10 +94,10 @@ module landyn_simulation
     real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
   end type sim_result_t
 
-  integer, parameter, public :: n_energy = 10
+  integer, parameter, public :: n_energy = 11
   character(len=24), parameter, public :: energy_names(n_energy) = [character(len=24) :: &
     'kinetic_body', 'kinetic_legs', 'potential_released', 'honeycomb_work', 'contact_damping', &
-    'contact_elastic', 'friction', 'thrust_work', 'input', 'residual']
+    'contact_elastic', 'friction', 'strut_impacts', 'thrust_work', 'input', 'residual']
 
 contains
 
@@ -106,6 +109,9 @@ contains
     character(len=*), intent(inout) :: errmsg   !! message on failure
     type(gear_geometry_t) :: geom
     type(strut_mass_t) :: sm(3)
+    type(tube_friction_t) :: tube
+    class(contact_law_t), allocatable :: contact
+    class(friction_law_t), allocatable :: friction
     real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
     integer :: i, k
     character(len=msg_len) :: m2
@@ -113,9 +119,15 @@ contains
     stat = 0
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_contact_law(inp%contact, model%contact, stat, m2)
+    call make_contact_law(inp%contact, contact, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
-    call make_friction_law(inp%friction, model%friction, stat, m2)
+    allocate (model%contact(model%n_gears), source=contact)
+    call make_friction_law(inp%friction, friction, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    allocate (model%friction(model%n_gears), source=friction)
+    call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
+                            inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
+                            tube, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
     call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
@@ -150,7 +162,7 @@ contains
           stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
           k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping))
       end do
-      call gear_init(model%gear(i), geom, rot, sm, stat, m2)
+      call gear_init(model%gear(i), geom, rot, sm, stat, m2, tube)
       if (stat /= 0) then; errmsg = m2; return; end if
     end do
 
@@ -216,10 +228,10 @@ contains
     real(wp) :: dt, t, t_next_out, r(3, 3)
     real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
     real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
-    real(wp) :: vslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
+    real(wp) :: vslip(2), dslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
     real(wp) :: xd_prev(3, max_gears), delta_prev(max_gears), fn_prev(max_gears), fground_prev(3, max_gears)
     real(wp) :: xt_prev(3), thrust_prev(3), xt(3)
-    real(wp) :: w_normal, w_friction, w_thrust, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
+    real(wp) :: w_normal, w_friction, w_thrust, w_impact, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
     real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears)
     logical :: touched
     integer(kind=8) :: c0, c1, crate
@@ -245,7 +257,7 @@ contains
 
     ke0 = body_kinetic_energy(model%body)
     pe0 = -model%body%mass*inp%simulation%gravity*model%body%x(3)
-    w_normal = 0.0_wp; w_friction = 0.0_wp; w_thrust = 0.0_wp
+    w_normal = 0.0_wp; w_friction = 0.0_wp; w_thrust = 0.0_wp; w_impact = 0.0_wp
     fn_prev = 0.0_wp; fground_prev = 0.0_wp; thrust_prev = 0.0_wp
     delta_prev = 0.0_wp; xd_prev = 0.0_wp
     xt_prev = body_point_position(model%body, inp%engine%point)
@@ -266,14 +278,22 @@ contains
         vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
         delta(i) = penetration(model%plane(i), xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), vd(:, i))
+        if (model%contact(i)%has_history) call model%contact(i)%update(delta(i), delta_dot(i))
         if (delta(i) > 0.0_wp) then
-          fn(i) = model%contact%normal_force(delta(i), delta_dot(i))
+          fn(i) = model%contact(i)%normal_force(delta(i), delta_dot(i))
           touched = .true.
         else
           fn(i) = 0.0_wp
         end if
         vslip = slip_velocity(model%plane(i), vd(:, i))
-        ft = model%friction%friction_force(vslip, fn(i))
+        if (model%friction(i)%has_stiction) then
+          ! stick state: advanced with the footpad's tangential displacement over the last step
+          dslip = 0.0_wp
+          if (n > 0) dslip = slip_velocity(model%plane(i), xd(:, i) - xd_prev(:, i))
+          call model%friction(i)%stick_slip_force(vslip, dslip, fn(i), ft)
+        else
+          ft = model%friction(i)%friction_force(vslip, fn(i))
+        end if
         fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
       end do
       ! ---- energy audit: work of the ground forces over the last step (force x displacement)
@@ -335,9 +355,9 @@ contains
         ke_legs = leg_energy(model, inp%simulation%gravity)
         e_el = 0.0_wp
         do i = 1, ng
-          if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i))
+          if (delta(i) > 0.0_wp) e_el = e_el + model%contact(i)%elastic_energy(delta(i))
         end do
-        call record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, &
+        call record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
                     ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
         t_next_out = t_next_out + inp%output%interval
       end if
@@ -354,6 +374,7 @@ contains
           return
         end if
       end do
+      call correction_impulses(model, w_impact)
       res%n_steps = n + 1
 
       ! ---- divergence, tip-over and rest checks
@@ -370,7 +391,7 @@ contains
       if (tilt > inp%simulation%tipover_angle) then
         res%tipped_over = .true.
         res%end_reason = 'tipped over'
-        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
         call finish(model, res, t + dt)
         call wall(res, c0, crate)
         return
@@ -384,7 +405,7 @@ contains
       if (inp%simulation%stop_at_rest .and. rest_clock >= inp%simulation%rest_time) then
         res%at_rest = .true.
         res%end_reason = 'at rest'
-        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
         call finish(model, res, t + dt)
         call wall(res, c0, crate)
         return
@@ -437,8 +458,40 @@ contains
     end if
   end function symmetric_sum
 
+  !> Momentum exchange of Step 4's correction. When the velocity correction changes the legs'
+  !! relative momentum (a strut locking, or a free strut meeting a rigid stop, is a plastic impact),
+  !! the body receives the opposite impulse, so the system's linear and angular momentum are
+  !! conserved; the kinetic energy such impacts dissipate is added to w_impact.
+  subroutine correction_impulses(model, w_impact)
+    type(model_t), intent(inout) :: model      !! model after the gear steps
+    real(wp), intent(inout) :: w_impact        !! energy dissipated in strut impacts [J]
+    real(wp) :: dp(3, max_gears), dh(3, max_gears), dp_l(3), dh_l(3), e0, e1
+    integer :: i, ng
+    ng = model%n_gears
+    do i = 1, ng
+      dp(:, i) = mv3(model%gear(i)%rot, model%gear(i)%p_post - model%gear(i)%p_pre)
+      dh(:, i) = mv3(model%gear(i)%rot, model%gear(i)%h_post - model%gear(i)%h_pre)
+    end do
+    dp_l = symmetric_sum(dp, ng)
+    dh_l = symmetric_sum(dh, ng)
+    if (maxval(abs(dp_l)) <= 0.0_wp .and. maxval(abs(dh_l)) <= 0.0_wp) return
+    e0 = body_kinetic_energy(model%body)
+    do i = 1, ng
+      e0 = e0 + model%gear(i)%t_pre + dot_product(body_point_velocity(model%body, model%point_a(:, i)), &
+           mv3(model%body%r, mv3(model%gear(i)%rot, model%gear(i)%p_pre)))
+    end do
+    model%body%v = model%body%v - mv3(model%body%r, dp_l)/model%body%mass
+    model%body%omega = model%body%omega - mv3(model%body%inv_inertia, dh_l - cross3(model%body%mc, dp_l))
+    e1 = body_kinetic_energy(model%body)
+    do i = 1, ng
+      e1 = e1 + model%gear(i)%t_post + dot_product(body_point_velocity(model%body, model%point_a(:, i)), &
+           mv3(model%body%r, mv3(model%gear(i)%rot, model%gear(i)%p_post)))
+    end do
+    w_impact = w_impact + (e0 - e1)
+  end subroutine correction_impulses
+
   !> Records one output sample.
-  subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, &
+  subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
                     ke0, pe0, ke_legs, e_el, gravity)
     type(sim_result_t), intent(inout) :: res      !! result
     type(model_t), intent(in) :: model            !! model
@@ -452,6 +505,7 @@ contains
     real(wp), intent(in) :: w_normal              !! work into the ground (normal) [J]
     real(wp), intent(in) :: w_friction            !! friction dissipation [J]
     real(wp), intent(in) :: w_thrust              !! thrust work [J]
+    real(wp), intent(in) :: w_impact              !! energy dissipated in strut impacts [J]
     real(wp), intent(in) :: ke0                   !! initial kinetic energy [J]
     real(wp), intent(in) :: pe0                   !! initial potential energy [J]
     real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
@@ -496,21 +550,23 @@ contains
     res%energy(k, 5) = w_normal - e_el
     res%energy(k, 6) = e_el
     res%energy(k, 7) = w_friction
-    res%energy(k, 8) = w_thrust
-    res%energy(k, 9) = ke0 + (pe0 - pe) + w_thrust
-    res%energy(k, 10) = e_in - (ke + ke_legs + crush + w_normal + w_friction)
+    res%energy(k, 8) = w_impact
+    res%energy(k, 9) = w_thrust
+    res%energy(k, 10) = ke0 + (pe0 - pe) + w_thrust
+    res%energy(k, 11) = e_in - (ke + ke_legs + crush + w_normal + w_friction + w_impact)
     res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
-    res%energy_residual = res%energy(k, 10)/res%energy_input
+    res%energy_residual = res%energy(k, 11)/res%energy_input
   end subroutine record
 
   !> Records a final sample when the run ends between output times.
-  subroutine record_final(res, model, t, inp, ke0, pe0, w_normal, w_friction, w_thrust)
+  subroutine record_final(res, model, t, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
     type(sim_result_t), intent(inout) :: res      !! result
     type(model_t), intent(in) :: model            !! model
     real(wp), intent(in) :: t                     !! time [s]
     type(landyn_input_t), intent(in) :: inp       !! input
     real(wp), intent(in) :: ke0, pe0              !! initial energies [J]
     real(wp), intent(in) :: w_normal, w_friction, w_thrust  !! accumulated works [J]
+    real(wp), intent(in) :: w_impact              !! energy dissipated in strut impacts [J]
     real(wp) :: xd(3, max_gears), vd(3, max_gears), fg(3, max_gears), fn(max_gears), delta(max_gears)
     real(wp) :: pos_g(3), vel_g(3), d_l(3), ke_legs, e_el
     integer :: i
@@ -527,12 +583,12 @@ contains
       fn(i) = 0.0_wp
       fg(:, i) = 0.0_wp
       if (delta(i) > 0.0_wp) then
-        fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
-        e_el = e_el + model%contact%elastic_energy(delta(i))
+        fn(i) = model%contact(i)%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
+        e_el = e_el + model%contact(i)%elastic_energy(delta(i))
       end if
     end do
     ke_legs = leg_energy(model, inp%simulation%gravity)
-    call record(res, model, t, [0.0_wp, 0.0_wp, 0.0_wp], xd, fg, fn, delta, vd, w_normal, w_friction, w_thrust, &
+    call record(res, model, t, [0.0_wp, 0.0_wp, 0.0_wp], xd, fg, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
                 ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
   end subroutine record_final
 

@@ -261,7 +261,8 @@ def fig_footpad_paths(res: Result):
 
 ENERGY_STACK = (("kinetic_body", "body kinetic"), ("kinetic_legs", "legs (relative)"),
                 ("honeycomb_work", "honeycomb crush"), ("contact_damping", "contact damping"),
-                ("contact_elastic", "contact elastic"), ("friction", "friction"))
+                ("contact_elastic", "contact elastic"), ("friction", "friction"),
+                ("strut_impacts", "strut impacts"))
 
 
 def fig_energy(res: Result):

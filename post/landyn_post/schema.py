@@ -44,7 +44,7 @@ _STRUT_ALIASES = {"primary": 0, "p": 0, "1": 0, "secondary_left": 1, "left": 1, 
 
 #: energy-audit channels, in the order LANDYN writes them
 ENERGY_NAMES = ("kinetic_body", "kinetic_legs", "potential_released", "honeycomb_work", "contact_damping",
-                "contact_elastic", "friction", "thrust_work", "input", "residual")
+                "contact_elastic", "friction", "strut_impacts", "thrust_work", "input", "residual")
 
 _XYZ = ("x", "y", "z")
 

@@ -154,7 +154,7 @@ def baseline_checks(f, path):
                 check(False, "%s: shape %s vs baseline %s" % (name, val.shape, ref.shape))
                 continue
             err = float(np.max(np.abs(val - ref))) if ref.size else 0.0
-            check(err <= tol, "%s: max |diff| %.3g <= tolerance %.3g (round-off spread %.3g, %s)"
+            check(err <= tol, "%s: max |diff| %.3g vs tolerance %.3g (round-off spread %.3g, %s)"
                   % (name, err, tol, float(b[name].attrs["roundoff_spread"]), b[name].attrs["units"].decode()))
 
 

@@ -1,0 +1,206 @@
+!> landyn_batch: campaigns of LANDYN runs (grids, Monte Carlo dispersions, case lists) on
+!! one or many MPI ranks, and the serial pieces for Slurm job arrays. See docs/campaign.md.
+!!
+!!   mpirun -np N landyn_batch DECK [--resume] [--force] [--stop-after N] [-o FILE] [--dedicated-master] [-q]
+!!   landyn_batch DECK --case K[:L] [-o FILE] [-q]     (no MPI: rows of cases K..L to a file of their own)
+!!   landyn_batch --merge OUT IN...                    (no MPI: combine summary files)
+!!   landyn_batch DECK --check | --list-cases          (no MPI)
+!!
+!! Exit status: 0 success (failed cases are results, not errors); 1 usage error; 2 invalid
+!! campaign (deck, base deck, case list) or files of another campaign; 4 a file could not be
+!! written; 5 stopped early (--stop-after) or merged summary incomplete.
+program landyn_batch
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_campaign_tasks, only: exit_ok, check_campaign, list_cases, run_case_range, merge_summaries
+  use landyn_campaign_parallel, only: batch_options_t, run_campaign
+  implicit none
+
+  type(batch_options_t) :: opts
+  character(len=:), allocatable :: deck, arg, out_file, task, range_text
+  character(len=1024), allocatable :: inputs(:)
+  integer :: i, n, code, k1, k2, ios, p
+
+  deck = ''
+  out_file = ''
+  task = 'campaign'
+  range_text = ''
+  opts%summary_file = ''
+  opts%command_line = command_line()
+  n = command_argument_count()
+  i = 0
+  do while (i < n)
+    i = i + 1
+    arg = get_arg(i)
+    select case (arg)
+    case ('-h', '--help')
+      call usage(output_unit)
+      stop
+    case ('-V', '--version')
+      write (output_unit, '(a)') 'landyn_batch '//landyn_version_string//' ('//landyn_git_revision//')'
+      stop
+    case ('--resume')
+      opts%resume = .true.
+    case ('--force')
+      opts%force = .true.
+    case ('-q', '--quiet')
+      opts%quiet = .true.
+    case ('--dedicated-master')
+      opts%dedicated_master = .true.
+    case ('--check')
+      call set_task('check')
+    case ('--list-cases')
+      call set_task('list')
+    case ('--stop-after')
+      if (i == n) call die_usage('option --stop-after needs a number of cases')
+      i = i + 1
+      arg = get_arg(i)
+      read (arg, *, iostat=ios) opts%stop_after
+      if (ios /= 0 .or. opts%stop_after < 1) call die_usage('--stop-after needs a positive number, got '//arg)
+    case ('-o', '--output')
+      if (i == n) call die_usage('option '//arg//' needs a file name')
+      i = i + 1
+      out_file = get_arg(i)
+    case ('--case')
+      if (i == n) call die_usage('option --case needs a case id K or a range K:L')
+      call set_task('case')
+      i = i + 1
+      range_text = get_arg(i)
+    case ('--merge')
+      call set_task('merge')
+      if (n - i < 2) call die_usage('--merge needs an output file and at least one input file')
+      out_file = get_arg(i + 1)
+      allocate (inputs(n - i - 1))
+      do p = 1, size(inputs)
+        inputs(p) = get_arg(i + 1 + p)
+        if (len(get_arg(i + 1 + p)) > len(inputs(p))) call die_usage('file name too long: '//get_arg(i + 1 + p))
+      end do
+      i = n
+    case default
+      if (len(arg) > 0) then
+        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
+      end if
+      if (len(deck) > 0) call die_usage('more than one deck given ('//deck//', '//arg//')')
+      deck = arg
+    end select
+  end do
+
+  code = exit_ok
+  select case (task)
+  case ('merge')
+    if (len(deck) > 0) call die_usage('--merge takes no deck: landyn_batch --merge OUT IN...')
+    call merge_summaries(out_file, inputs, opts%command_line, output_unit, error_unit, code)
+  case ('check')
+    call need_deck()
+    call check_campaign(deck, output_unit, error_unit, code)
+  case ('list')
+    call need_deck()
+    call list_cases(deck, output_unit, error_unit, code)
+  case ('case')
+    call need_deck()
+    p = index(range_text, ':')
+    if (p == 0) then
+      read (range_text, *, iostat=ios) k1
+      k2 = k1
+    else
+      read (range_text(1:p - 1), *, iostat=ios) k1
+      if (ios == 0) read (range_text(p + 1:), *, iostat=ios) k2
+    end if
+    if (ios /= 0 .or. verify(range_text, '0123456789:') /= 0) &
+      call die_usage('--case needs a case id K or a range K:L, got '//range_text)
+    call run_case_range(deck, k1, k2, out_file, opts%quiet, opts%command_line, output_unit, error_unit, code)
+  case default
+    call need_deck()
+    opts%summary_file = out_file
+    if (opts%resume .and. opts%force) call die_usage('--resume and --force exclude each other')
+    call run_campaign(deck, opts, output_unit, error_unit, code)
+  end select
+
+  select case (code)
+  case (0)
+    continue
+  case (1)
+    error stop 1
+  case (2)
+    error stop 2
+  case (4)
+    error stop 4
+  case (5)
+    stop 5   ! not an error: the summary is incomplete (--stop-after, or --merge with cases missing)
+  case default
+    error stop 3
+  end select
+
+contains
+
+  subroutine set_task(t)
+    character(len=*), intent(in) :: t      !! task name
+    if (task /= 'campaign' .and. task /= t) call die_usage('--check, --list-cases, --case and --merge exclude '// &
+                                                          'each other')
+    task = t
+  end subroutine set_task
+
+  subroutine need_deck()
+    if (len(deck) == 0) call die_usage('no campaign deck given')
+  end subroutine need_deck
+
+  function get_arg(k) result(a)
+    integer, intent(in) :: k               !! argument index
+    character(len=:), allocatable :: a     !! the argument
+    integer :: l
+    call get_command_argument(k, length=l)
+    allocate (character(len=l) :: a)
+    if (l > 0) call get_command_argument(k, a)
+  end function get_arg
+
+  function command_line() result(c)
+    character(len=:), allocatable :: c     !! the whole command line
+    integer :: l
+    call get_command(length=l)
+    allocate (character(len=l) :: c)
+    if (l > 0) call get_command(c)
+  end function command_line
+
+  subroutine usage(u)
+    integer, intent(in) :: u               !! output unit
+    write (u, '(a)') &
+      'usage: mpirun -np N landyn_batch DECK [--resume | --force] [--stop-after N] [-o FILE]', &
+      '                                      [--dedicated-master] [-q]', &
+      '       landyn_batch DECK --case K[:L] [-o FILE] [-q]', &
+      '       landyn_batch --merge OUT IN...', &
+      '       landyn_batch DECK --check | --list-cases', &
+      '', &
+      'Runs a LANDYN campaign (grid, Monte Carlo dispersion or case list; docs/campaign.md): every case', &
+      'is the campaign''s base run deck with the case''s inputs, run exactly as landyn runs it.', &
+      'Rank 0 hands out the cases; all rows go to one HDF5 summary file.', &
+      '', &
+      '  DECK                campaign deck (&campaign, &parameter, &criteria)', &
+      '  -o, --output F      summary file (default: &campaign summary_file, or DECK''s base name + .h5);', &
+      '                      with --case: the file of the cases'' rows; with --merge: see below', &
+      '  --resume            continue the campaign of the summary file and its journal, skipping', &
+      '                      finished cases; the result equals an uninterrupted run', &
+      '  --force             overwrite an existing summary file and journal', &
+      '  --stop-after N      stop after N rows are written, as if killed (to test --resume)', &
+      '  --dedicated-master  rank 0 only hands out cases (default: it runs cases too up to 16 ranks)', &
+      '  --case K[:L]        without MPI: run cases K..L and write their rows to their own file', &
+      '                      (default <summary>.case<K>.h5); for Slurm job arrays', &
+      '  --merge OUT IN...   without MPI: combine summary files of one campaign into OUT', &
+      '  --check             validate the deck and describe the campaign; run nothing', &
+      '  --list-cases        print every case''s inputs as CSV; run nothing', &
+      '  -q, --quiet         no progress messages on stderr', &
+      '  -V, --version       print the version', &
+      '  -h, --help          print this help', &
+      '', &
+      'Exit status: 0 success (failed cases are results), 1 usage error, 2 invalid campaign or files of', &
+      'another campaign, 4 a file not written, 5 stopped early (--stop-after) or merged summary incomplete.'
+  end subroutine usage
+
+  subroutine die_usage(text)
+    character(len=*), intent(in) :: text   !! what is wrong
+    write (error_unit, '(a)') 'landyn_batch: '//text
+    write (error_unit, '(a)') 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... '// &
+      '(landyn_batch --help)'
+    error stop 1
+  end subroutine die_usage
+
+end program landyn_batch

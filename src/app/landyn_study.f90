@@ -1,0 +1,196 @@
+!> landyn_study: runs a sensitivity study (the paper's section 4: contact laws, friction laws,
+!! tube friction) and writes one HDF5 file and one CSV table of crush lengths.
+!!
+!!   landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]
+!!
+!! Exit status: 0 every run completed (a tip-over is a result); 1 usage error; 2 invalid study
+!! deck or run input (nothing is run); 3 some runs failed (diverged; the files are written, their
+!! status says which); 4 an output file could not be written.
+program landyn_study_main
+  use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use landyn_kinds, only: wp, msg_len
+  use landyn_input, only: input_errors_t
+  use landyn_study, only: study_t, read_study, prepare_study, run_study, write_study_csv, write_study_h5, &
+                          status_failed
+  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_process, only: terminate
+  implicit none
+
+  type(study_t) :: study
+  type(input_errors_t) :: errors
+  character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd
+  logical :: check_only, quiet
+  integer :: i, n, stat, run_stat, c, v, progress
+  character(len=msg_len) :: msg
+
+  deck = ''
+  h5_file = ''
+  csv_file = ''
+  check_only = .false.
+  quiet = .false.
+  n = command_argument_count()
+  i = 0
+  do while (i < n)
+    i = i + 1
+    arg = get_arg(i)
+    select case (arg)
+    case ('-h', '--help')
+      call usage(output_unit)
+      call terminate(0)
+    case ('-V', '--version')
+      write (output_unit, '(a)') 'landyn_study '//landyn_version_string//' ('//landyn_git_revision//')'
+      call terminate(0)
+    case ('--check')
+      check_only = .true.
+    case ('-q', '--quiet')
+      quiet = .true.
+    case ('-o', '--output')
+      if (i == n) call die_usage('option '//arg//' needs a file name')
+      i = i + 1
+      h5_file = get_arg(i)
+    case ('--csv')
+      if (i == n) call die_usage('option '//arg//' needs a file name')
+      i = i + 1
+      csv_file = get_arg(i)
+    case default
+      if (len(arg) > 0) then
+        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
+      end if
+      if (len(deck) > 0) call die_usage('more than one study deck given ('//deck//', '//arg//')')
+      deck = arg
+    end select
+  end do
+  if (len(deck) == 0) call die_usage('no study deck given')
+
+  ! ---- the study deck and every run's input, all checked before anything runs
+  call read_study(deck, study, errors, stat)
+  ! prepared also after errors in the study deck, to report every problem at once
+  if (stat /= 2 .and. study%n_cases > 0 .and. study%n_variants > 0) call prepare_study(study, errors, i)
+  if (stat /= 0 .or. errors%count() > 0) then
+    call errors%write(error_unit)
+    write (error_unit, '(a,i0,a)') 'landyn_study: ', errors%count(), ' input error(s); nothing was run and no file '// &
+      'was written'
+    call terminate(2)
+  end if
+  if (len(h5_file) == 0) h5_file = trim(study%output)
+  if (len(csv_file) == 0) csv_file = trim(study%csv)
+  if (check_only) then
+    write (output_unit, '(a)') 'landyn_study: '//trim(study%title)
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        write (output_unit, '(a)') '  '//trim(study%variant(v)%label)//' on '//trim(study%case_label(c))//' ('// &
+          trim(study%case_deck(c))//'): contact '''//trim(study%inp(c, v)%contact%law)//''', friction '''// &
+          trim(study%inp(c, v)%friction%law)//''', tube friction '//merge('on ', 'off', &
+          study%inp(c, v)%primary%tube_friction)
+      end do
+    end do
+    write (output_unit, '(a)') '  results would go to '//h5_file//' and '//csv_file
+    call terminate(0)
+  end if
+
+  ! ---- run
+  progress = error_unit
+  if (quiet) progress = -1
+  cmd = command_line()
+  msg = ''
+  call run_study(study, progress, cmd, run_stat, msg)
+  if (run_stat == 4) then
+    write (error_unit, '(a)') 'landyn_study: '//trim(msg)
+    call terminate(4)
+  end if
+
+  ! ---- files
+  call write_study_h5(study, h5_file, cmd, stat, msg)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the result file: '//trim(msg)
+    call terminate(4)
+  end if
+  call write_study_csv(study, csv_file, stat, msg)
+  if (stat /= 0) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the table: '//trim(msg)
+    call terminate(4)
+  end if
+  call write_table(output_unit)
+  write (output_unit, '(a)') 'Results written to '//h5_file//' and '//csv_file
+  if (run_stat == status_failed) then
+    write (error_unit, '(a)') 'landyn_study: some runs failed (status 3 in the result file)'
+    call terminate(3)
+  end if
+  call terminate(0)
+
+contains
+
+  !> The crush-length table on a unit (mm), as in the CSV.
+  subroutine write_table(u)
+    integer, intent(in) :: u               !! output unit
+    integer :: m, vv
+    character(len=*), parameter :: sn(3) = [character(len=15) :: 'primary', 'secondary left', 'secondary right']
+    write (u, '(a)') ''
+    write (u, '(a)') 'Crush lengths [mm]: '//trim(study%title)
+    write (u, '(a)', advance='no') '  opt  case        gear strut          '
+    do vv = 1, study%n_variants
+      write (u, '(1x,a14)', advance='no') adjustr(study%variant(vv)%label(1:min(14, len_trim(study%variant(vv)%label))))
+    end do
+    write (u, '(a)') ''
+    do m = 1, study%n_measures
+      write (u, '(2x,i3,2x,a12,i4,1x,a15)', advance='no') m, study%case_label(study%measure(1, m)), &
+        study%measure(2, m), sn(study%measure(3, m))
+      do vv = 1, study%n_variants
+        associate (r => study%run(study%measure(1, m), vv))
+          if (r%status == 0) then
+            write (u, '(f15.1)', advance='no') 1000.0_wp*r%crush(study%measure(3, m), study%measure(2, m))
+          else
+            write (u, '(a15)', advance='no') 'failed'
+          end if
+        end associate
+      end do
+      write (u, '(a)') ''
+    end do
+  end subroutine write_table
+
+  function get_arg(k) result(a)
+    integer, intent(in) :: k               !! argument index
+    character(len=:), allocatable :: a     !! the argument
+    integer :: l
+    call get_command_argument(k, length=l)
+    allocate (character(len=l) :: a)
+    if (l > 0) call get_command_argument(k, a)
+  end function get_arg
+
+  function command_line() result(c_line)
+    character(len=:), allocatable :: c_line  !! the whole command line
+    integer :: l
+    call get_command(length=l)
+    allocate (character(len=l) :: c_line)
+    if (l > 0) call get_command(c_line)
+  end function command_line
+
+  subroutine usage(u)
+    integer, intent(in) :: u               !! output unit
+    write (u, '(a)') 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]', &
+      '', &
+      'Runs a sensitivity study: each &variant of the study deck (contact, friction or tube-friction', &
+      'laws, or any other input) on each load-case deck of &study base_deck, and writes the crush', &
+      'lengths in the layout of the paper''s Tables 6, 9 and 10 (docs/study.md).', &
+      '', &
+      '  STUDY.nml       study deck (&study and &variant groups); decks for the paper''s studies:', &
+      '                  input/study_contact.nml, input/study_friction.nml, input/study_tube.nml', &
+      '  -o, --output F  HDF5 file; default: &study output, or the study deck''s base name + .h5', &
+      '  --csv F         CSV table; default: &study csv, or the study deck''s base name + .csv', &
+      '  --check         validate the study and every run''s input, list the runs; run nothing', &
+      '  -q, --quiet     no progress messages on stderr', &
+      '  -V, --version   print the version', &
+      '  -h, --help      print this help', &
+      '', &
+      'Exit status: 0 success, 1 usage error, 2 invalid input (nothing run), 3 some runs failed,', &
+      '4 a file could not be written.'
+  end subroutine usage
+
+  subroutine die_usage(text)
+    character(len=*), intent(in) :: text   !! what is wrong
+    write (error_unit, '(a)') 'landyn_study: '//text
+    write (error_unit, '(a)') 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]'
+    call terminate(1)
+  end subroutine die_usage
+
+end program landyn_study_main

@@ -1,0 +1,842 @@
+!> Campaign results on disk: the summary file (HDF5, one row per case; docs/campaign.md), the
+!! journal (one text line per finished case, flushed at once, so a killed campaign loses only
+!! the cases in flight), and the success probability with its Wilson score interval.
+!!
+!! The summary file is always written whole, under <file>.partial and renamed, so a file named
+!! <file> is always complete and valid; while a campaign runs it is rewritten every
+!! checkpoint_interval seconds and at the end. `--resume` reads the rows of both the summary
+!! file and the journal.
+!!
+!! Journal lines: a header `LANDYN campaign journal v1 fingerprint=<16 hex> n_par=<n> n_gears=<n>`,
+!! then per case `R`, the row's integers (i11 each), its reals as IEEE bit patterns (z16 each),
+!! the text part (message, end reason, history file, lengths among the integers) and ` $`.
+!! A line that does not parse (a torn last line) is ignored.
+!!
+!! Library code: nothing here stops or prints.
+module landyn_campaign_store
+  use, intrinsic :: iso_fortran_env, only: int64
+  use landyn_kinds, only: wp, ip, msg_len
+  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_output, only: iso_timestamp
+  use landyn_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_write, h5_write_attr, h5_read, &
+                       h5_read_attr, h5_exists, rename_file, delete_file
+  use landyn_campaign_nml, only: int_text, real_text_short
+  use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
+  use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row, status_ok
+  implicit none
+  private
+
+  public :: summary_meta_t, meta_from_campaign, write_summary, read_summary
+  public :: journal_open, journal_append, journal_read
+  public :: success_probability, wilson_interval, schema_version
+  public :: results_t, results_init, results_add, results_rows, results_missing
+
+  character(len=*), parameter :: schema_version = 'landyn-campaign-1.0'  !! layout of docs/campaign.md
+  character(len=*), parameter :: journal_magic = 'LANDYN campaign journal v1'
+  real(wp), parameter :: z95 = 1.959963984540054_wp   !! two-sided 95 % normal quantile [-]
+  integer, parameter :: text_len = 2048               !! longest stored string of a row [-]
+
+  !> Everything a summary file says about its campaign besides the rows (enough to merge
+  !! summary files without the deck).
+  type :: summary_meta_t
+    character(len=:), allocatable :: title          !! campaign title [-]
+    character(len=:), allocatable :: mode           !! 'grid', 'monte_carlo' or 'list' [-]
+    character(len=:), allocatable :: seed           !! seed as decimal text [-]
+    character(len=:), allocatable :: fingerprint    !! campaign fingerprint (16 hex) [-]
+    character(len=:), allocatable :: deck_name      !! campaign deck [-]
+    character(len=:), allocatable :: deck_text      !! campaign deck text [-]
+    character(len=:), allocatable :: base_name      !! base run deck [-]
+    character(len=:), allocatable :: base_text      !! base run deck text [-]
+    character(len=:), allocatable :: list_name      !! case list ('' if none) [-]
+    character(len=:), allocatable :: list_text      !! case list text [-]
+    character(len=:), allocatable :: git_revision   !! git revision of the code that ran the cases [-]
+    integer :: n_cases = 0                          !! cases of the campaign [-]
+    integer :: n_par = 0                            !! varied inputs [-]
+    integer :: n_gears = 0                          !! gears [-]
+    character(len=128), allocatable :: par_name(:)  !! input names [-]
+    character(len=64), allocatable :: par_label(:)  !! column names [-]
+    character(len=16), allocatable :: par_units(:)  !! deck units [-]
+    character(len=256), allocatable :: par_desc(:)  !! how each input is varied [-]
+    type(criteria_t) :: crit                        !! success criteria [-]
+  end type summary_meta_t
+
+  !> The rows of a campaign, indexed by case id.
+  type :: results_t
+    integer :: n_cases = 0                       !! cases of the campaign [-]
+    integer :: n_have = 0                        !! rows present [-]
+    logical, allocatable :: have(:)              !! (n_cases) row present [-]
+    type(case_row_t), allocatable :: rows(:)     !! (n_cases) rows [-]
+  end type results_t
+
+contains
+
+  !> An empty table for n_cases cases.
+  subroutine results_init(res, n_cases)
+    type(results_t), intent(out) :: res   !! table [-]
+    integer, intent(in) :: n_cases        !! cases [-]
+    res%n_cases = n_cases
+    allocate (res%have(n_cases), res%rows(n_cases))
+    res%have = .false.
+    res%n_have = 0
+  end subroutine results_init
+
+  !> Put a row into the table (replacing a row of the same case). Rows with ids outside
+  !! 1..n_cases are ignored (added = .false.).
+  subroutine results_add(res, row, added)
+    type(results_t), intent(inout) :: res        !! table [-]
+    type(case_row_t), intent(in) :: row          !! row [-]
+    logical, intent(out), optional :: added      !! the row was stored [-]
+    if (present(added)) added = .false.
+    if (row%case_id < 1 .or. row%case_id > res%n_cases) return
+    if (.not. res%have(row%case_id)) res%n_have = res%n_have + 1
+    res%have(row%case_id) = .true.
+    res%rows(row%case_id) = row
+    if (present(added)) added = .true.
+  end subroutine results_add
+
+  !> The rows present, in case-id order.
+  function results_rows(res) result(rows)
+    type(results_t), intent(in) :: res            !! table [-]
+    type(case_row_t), allocatable :: rows(:)      !! rows [-]
+    integer :: i, k
+    allocate (rows(res%n_have))
+    k = 0
+    do i = 1, res%n_cases
+      if (.not. res%have(i)) cycle
+      k = k + 1
+      rows(k) = res%rows(i)
+    end do
+  end function results_rows
+
+  !> Ids of the cases without a row.
+  subroutine results_missing(res, ids)
+    type(results_t), intent(in) :: res                !! table [-]
+    integer, allocatable, intent(out) :: ids(:)       !! missing case ids, ascending [-]
+    integer :: i, k
+    allocate (ids(res%n_cases - res%n_have))
+    k = 0
+    do i = 1, res%n_cases
+      if (res%have(i)) cycle
+      k = k + 1
+      ids(k) = i
+    end do
+  end subroutine results_missing
+
+  !> The meta data of a campaign.
+  function meta_from_campaign(camp) result(meta)
+    type(campaign_t), intent(in) :: camp  !! campaign [-]
+    type(summary_meta_t) :: meta          !! meta data [-]
+    integer :: j
+    character(len=24) :: buf
+    meta%title = camp%title
+    meta%mode = trim(camp%mode)
+    write (buf, '(i0)') camp%seed
+    meta%seed = trim(buf)
+    meta%fingerprint = camp%fingerprint
+    meta%deck_name = camp%deck_name
+    meta%deck_text = camp%deck_text
+    meta%base_name = camp%base_path
+    meta%base_text = camp%base_text
+    meta%list_name = ''
+    meta%list_text = ''
+    if (camp%mode == 'list') then
+      meta%list_name = camp%list_path
+      meta%list_text = camp%list_text
+    end if
+    meta%git_revision = landyn_git_revision
+    meta%n_cases = camp%n_cases
+    meta%n_par = camp%n_par
+    meta%n_gears = camp%n_gears
+    allocate (meta%par_name(camp%n_par), meta%par_label(camp%n_par), meta%par_units(camp%n_par), &
+              meta%par_desc(camp%n_par))
+    do j = 1, camp%n_par
+      meta%par_name(j) = camp%par(j)%name
+      meta%par_label(j) = camp%par(j)%label
+      meta%par_units(j) = camp%par(j)%units
+      meta%par_desc(j) = param_description(camp%par(j))
+    end do
+    meta%crit = camp%crit
+  end function meta_from_campaign
+
+  ! ================================================================ probability
+
+  !> Wilson score interval of k successes in n trials at normal quantile z; [0, 1] when n = 0.
+  pure subroutine wilson_interval(k, n, z, lo, hi)
+    integer, intent(in) :: k      !! successes [-]
+    integer, intent(in) :: n      !! trials [-]
+    real(wp), intent(in) :: z     !! normal quantile (1.96 for 95 %) [-]
+    real(wp), intent(out) :: lo   !! lower bound [-]
+    real(wp), intent(out) :: hi   !! upper bound [-]
+    real(wp) :: p, den, centre, half, rn
+    if (n <= 0) then
+      lo = 0.0_wp
+      hi = 1.0_wp
+      return
+    end if
+    rn = real(n, wp)
+    p = real(k, wp)/rn
+    den = 1.0_wp + z**2/rn
+    centre = (p + z**2/(2.0_wp*rn))/den
+    half = z/den*sqrt(p*(1.0_wp - p)/rn + z**2/(4.0_wp*rn**2))
+    lo = max(0.0_wp, centre - half)
+    hi = min(1.0_wp, centre + half)
+    if (k == 0) lo = 0.0_wp
+    if (k == n) hi = 1.0_wp
+  end subroutine wilson_interval
+
+  !> Probability of a successful landing over `rows` with its 95 % Wilson interval. Cases
+  !! whose run failed count as unsuccessful, or are left out when failed_runs = 'exclude'.
+  subroutine success_probability(rows, failed_runs, n_eval, n_success, n_excluded, p, lo, hi)
+    type(case_row_t), intent(in) :: rows(:)       !! rows [-]
+    character(len=*), intent(in) :: failed_runs   !! 'count_as_failure' or 'exclude' [-]
+    integer, intent(out) :: n_eval                !! cases counted [-]
+    integer, intent(out) :: n_success             !! successful cases [-]
+    integer, intent(out) :: n_excluded            !! failed runs left out [-]
+    real(wp), intent(out) :: p                    !! n_success / n_eval (0 when n_eval = 0) [-]
+    real(wp), intent(out) :: lo, hi               !! 95 % Wilson score interval [-]
+    integer :: i
+    n_eval = 0
+    n_success = 0
+    n_excluded = 0
+    do i = 1, size(rows)
+      if (rows(i)%status /= status_ok .and. trim(failed_runs) == 'exclude') then
+        n_excluded = n_excluded + 1
+        cycle
+      end if
+      n_eval = n_eval + 1
+      if (rows(i)%success == 1) n_success = n_success + 1
+    end do
+    p = 0.0_wp
+    if (n_eval > 0) p = real(n_success, wp)/real(n_eval, wp)
+    call wilson_interval(n_success, n_eval, z95, lo, hi)
+  end subroutine success_probability
+
+  ! ================================================================ summary file
+
+  !> Write the summary file `path` (via `path`.partial and a rename) with `rows` (sorted by case id).
+  subroutine write_summary(path, meta, rows, command_line, stat, errmsg)
+    character(len=*), intent(in) :: path          !! summary file [-]
+    type(summary_meta_t), intent(in) :: meta      !! campaign meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows in case-id order [-]
+    character(len=*), intent(in) :: command_line  !! command that wrote the file [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message on failure [-]
+    type(h5_file_t) :: f
+    character(len=:), allocatable :: tmp
+    integer :: st2
+    character(len=msg_len) :: m2
+    tmp = trim(path)//'.partial'
+    call h5_create(f, tmp, stat, errmsg)
+    if (stat /= 0) return
+    call write_contents(f, meta, rows, command_line, stat, errmsg)
+    if (stat /= 0) then
+      call h5_close(f, st2, m2)
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call h5_close(f, stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) call delete_file(tmp, st2, m2)
+  end subroutine write_summary
+
+  subroutine write_contents(f, meta, rows, command_line, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows [-]
+    character(len=*), intent(in) :: command_line  !! command line [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
+    integer :: n, ng, i, j, n_eval, n_succ, n_excl, complete
+    real(wp) :: p, lo, hi
+    real(wp), allocatable :: a3(:, :, :)
+
+    n = size(rows)
+    ng = meta%n_gears
+    complete = 0
+    if (n == meta%n_cases) then
+      if (n == 0) then
+        complete = 1
+      else if (rows(1)%case_id == 1 .and. rows(n)%case_id == n) then
+        complete = 1
+      end if
+    end if
+    call success_probability(rows, meta%crit%failed_runs, n_eval, n_succ, n_excl, p, lo, hi)
+
+    ! ---- root attributes
+    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string//' landyn_batch', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'title', nonempty(meta%title), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'mode', meta%mode, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'fingerprint', meta%fingerprint, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'n_cases', int(meta%n_cases, ip), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'n_rows', int(n, ip), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'complete', int(complete, ip), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'p_success', p, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'p_success_ci95_low', lo, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'p_success_ci95_high', hi, stat, errmsg); if (stat /= 0) return
+
+    ! ---- /meta
+    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/git_revision', meta%git_revision, '-', stat, errmsg, &
+                  description='git revision of the code that ran the cases'); if (stat /= 0) return
+    call h5_write(f, '/meta/writer_git_revision', landyn_git_revision, '-', stat, errmsg, &
+                  description='git revision of the code that wrote this file'); if (stat /= 0) return
+    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/command_line', nonempty(command_line), '-', stat, errmsg); if (stat /= 0) return
+
+    ! ---- /campaign
+    call h5_write(f, '/campaign/deck_name', nonempty(meta%deck_name), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/deck_text', nonempty(meta%deck_text), '-', stat, errmsg, &
+                  description='the campaign deck as given'); if (stat /= 0) return
+    call h5_write(f, '/campaign/base_deck_name', nonempty(meta%base_name), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/base_deck_text', nonempty(meta%base_text), '-', stat, errmsg, &
+                  description='the base run deck every case starts from'); if (stat /= 0) return
+    call h5_write(f, '/campaign/list_file_name', nonempty(meta%list_name), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/list_file_text', nonempty(meta%list_text), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/mode', meta%mode, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/seed', meta%seed, '-', stat, errmsg, &
+                  description='Monte Carlo seed (64-bit integer as text)'); if (stat /= 0) return
+    call h5_write(f, '/campaign/n_cases', int(meta%n_cases, ip), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/n_gears', int(meta%n_gears, ip), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/campaign/fingerprint', meta%fingerprint, '-', stat, errmsg, &
+                  description='64-bit hash of everything that defines the cases and their success'); if (stat /= 0) return
+
+    ! ---- /parameters
+    call h5_write(f, '/parameters/name', meta%par_name, '-', stat, errmsg, &
+                  description='varied inputs as group%variable(subscript)'); if (stat /= 0) return
+    call h5_write(f, '/parameters/label', meta%par_label, '-', stat, errmsg, &
+                  description='dataset name of each input under /cases/inputs'); if (stat /= 0) return
+    call h5_write(f, '/parameters/units', meta%par_units, '-', stat, errmsg, &
+                  description='deck units (angles in degrees)'); if (stat /= 0) return
+    call h5_write(f, '/parameters/description', meta%par_desc, '-', stat, errmsg); if (stat /= 0) return
+
+    ! ---- /criteria
+    associate (c => meta%crit)
+      call h5_write(f, '/criteria/min_stroke_margin', c%min_stroke_margin, 'm', stat, errmsg, &
+                    description='every stroke margin must be >= this'); if (stat /= 0) return
+      call h5_write(f, '/criteria/max_overload_applied', merge(1_ip, 0_ip, c%overload_applied), '-', stat, errmsg)
+      if (stat /= 0) return
+      call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', stat, errmsg, &
+                    description='peak overload must be <= this (when applied)'); if (stat /= 0) return
+      call h5_write(f, '/criteria/min_body_clearance_applied', merge(1_ip, 0_ip, c%clearance_applied), '-', &
+                    stat, errmsg); if (stat /= 0) return
+      call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', stat, errmsg, &
+                    description='body-point clearance must stay >= this (when applied)'); if (stat /= 0) return
+      call h5_write(f, '/criteria/body_points', c%body_point(:, 1:c%n_body_points), 'm', stat, errmsg, &
+                    description='lander-frame points whose clearance is reported, shape (n, 3)'); if (stat /= 0) return
+      call h5_write(f, '/criteria/require_at_rest', merge(1_ip, 0_ip, c%require_at_rest), '-', stat, errmsg)
+      if (stat /= 0) return
+      call h5_write(f, '/criteria/failed_runs', trim(c%failed_runs), '-', stat, errmsg, &
+                    description='how cases without a result enter the probability'); if (stat /= 0) return
+    end associate
+
+    ! ---- /cases
+    call h5_write(f, '/cases/case_id', [(int(rows(i)%case_id, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/status', [(int(rows(i)%status, ip), i=1, n)], '-', stat, errmsg, &
+      description='0 ran to its end, 2 invalid input, 3 simulation failed (as landyn exit codes)'); if (stat /= 0) return
+    call h5_write(f, '/cases/error_message', text_column(1), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/end_reason', text_column(2), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/history_file', text_column(3), '-', stat, errmsg, &
+                  description='time-history file of the case, empty when none'); if (stat /= 0) return
+    do j = 1, meta%n_par
+      call h5_write(f, '/cases/inputs/'//trim(meta%par_label(j)), [(rows(i)%inputs(j), i=1, n)], &
+                    trim(meta%par_units(j)), stat, errmsg, description=trim(meta%par_desc(j)))
+      if (stat /= 0) return
+    end do
+    allocate (a3(3, ng, n))
+    do i = 1, n
+      a3(:, :, i) = rows(i)%crush
+    end do
+    call h5_write(f, '/cases/crush_length', a3, 'm', stat, errmsg, &
+      description='signed net crush, shape (n, n_gears, 3): primary, secondary left, secondary right'); if (stat /= 0) return
+    do i = 1, n
+      a3(:, :, i) = rows(i)%margin
+    end do
+    call h5_write(f, '/cases/stroke_margin', a3, 'm', stat, errmsg, &
+      description='stroke capacity minus crushed length, worst direction, shape (n, n_gears, 3)'); if (stat /= 0) return
+    call h5_write(f, '/cases/min_stroke_margin', [(rows(i)%min_margin, i=1, n)], 'm', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/peak_overload', [(rows(i)%peak_overload, i=1, n)], 'g', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/peak_penetration', [(rows(i)%peak_penetration, i=1, n)], 'm', stat, errmsg, &
+                  description='largest footpad penetration'); if (stat /= 0) return
+    call h5_write(f, '/cases/max_slide_distance', [(rows(i)%max_slide, i=1, n)], 'm', stat, errmsg, &
+                  description='largest footpad slide distance'); if (stat /= 0) return
+    call h5_write(f, '/cases/final_tilt', [(rows(i)%final_tilt, i=1, n)], 'deg', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/max_tilt', [(rows(i)%max_tilt, i=1, n)], 'deg', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/min_body_clearance', [(rows(i)%min_clearance, i=1, n)], 'm', stat, errmsg, &
+      description='smallest height of the body points above the terrain planes, at the output samples')
+    if (stat /= 0) return
+    call h5_write(f, '/cases/final_time', [(rows(i)%final_time, i=1, n)], 's', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/n_steps', [(int(rows(i)%n_steps, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/wall_time', [(rows(i)%wall_time, i=1, n)], 's', stat, errmsg, &
+                  description='wall-clock time of the case (input, run, history file)'); if (stat /= 0) return
+    call h5_write(f, '/cases/tipped_over', [(int(rows(i)%tipped_over, ip), i=1, n)], '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/cases/at_rest', [(int(rows(i)%at_rest, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/bottomed_out', [(int(rows(i)%bottomed_out, ip), i=1, n)], '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/cases/success', [(int(rows(i)%success, ip), i=1, n)], '-', stat, errmsg, &
+                  description='1 when every criterion of /criteria holds'); if (stat /= 0) return
+    call h5_write(f, '/cases/failed_criteria', [(int(rows(i)%failed_criteria, ip), i=1, n)], '-', stat, errmsg, &
+      description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result')
+    if (stat /= 0) return
+
+    ! ---- /probability
+    call h5_write(f, '/probability/n_evaluated', int(n_eval, ip), '-', stat, errmsg, &
+                  description='cases counted in the probability'); if (stat /= 0) return
+    call h5_write(f, '/probability/n_success', int(n_succ, ip), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/probability/n_excluded', int(n_excl, ip), '-', stat, errmsg, &
+                  description="failed runs left out (failed_runs = 'exclude')"); if (stat /= 0) return
+    call h5_write(f, '/probability/p_success', p, '-', stat, errmsg, &
+                  description='n_success / n_evaluated (0 when nothing was evaluated)'); if (stat /= 0) return
+    call h5_write(f, '/probability/ci95_low', lo, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/probability/ci95_high', hi, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/probability/confidence', 0.95_wp, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/probability/method', 'Wilson score interval, z = 1.959963984540054', '-', stat, errmsg)
+
+  contains
+
+    function text_column(which) result(col)
+      integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file [-]
+      character(len=:), allocatable :: col(:)      !! column [-]
+      integer :: k, l
+      l = 1
+      do k = 1, n
+        select case (which)
+        case (1)
+          l = max(l, len(rows(k)%message))
+        case (2)
+          l = max(l, len(rows(k)%end_reason))
+        case default
+          l = max(l, len(rows(k)%history_file))
+        end select
+      end do
+      allocate (character(len=l) :: col(n))
+      do k = 1, n
+        select case (which)
+        case (1)
+          col(k) = rows(k)%message
+        case (2)
+          col(k) = rows(k)%end_reason
+        case default
+          col(k) = rows(k)%history_file
+        end select
+      end do
+    end function text_column
+
+  end subroutine write_contents
+
+  pure function nonempty(s) result(r)
+    character(len=*), intent(in) :: s    !! text [-]
+    character(len=:), allocatable :: r   !! s, or '(none)' when blank [-]
+    if (len_trim(s) > 0) then
+      r = s
+    else
+      r = '(none)'
+    end if
+  end function nonempty
+
+  pure function from_nonempty(s) result(r)
+    character(len=*), intent(in) :: s    !! stored text [-]
+    character(len=:), allocatable :: r   !! '' for '(none)' [-]
+    if (s == '(none)') then
+      r = ''
+    else
+      r = s
+    end if
+  end function from_nonempty
+
+  !> Read a summary file written by write_summary: its meta data and rows (in file order).
+  subroutine read_summary(path, meta, rows, stat, errmsg)
+    character(len=*), intent(in) :: path                 !! summary file [-]
+    type(summary_meta_t), intent(out) :: meta            !! meta data [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message on failure [-]
+    type(h5_file_t) :: f
+    integer :: st2
+    character(len=msg_len) :: m2
+    call h5_open_read(f, path, stat, errmsg)
+    if (stat /= 0) return
+    call read_contents(f, meta, rows, stat, errmsg)
+    call h5_close(f, st2, m2)
+  end subroutine read_summary
+
+  subroutine read_contents(f, meta, rows, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(summary_meta_t), intent(out) :: meta            !! meta data [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    character(len=:), allocatable :: schema, s
+    integer(ip), allocatable :: iv(:)
+    integer(ip) :: ival
+    real(wp), allocatable :: rv(:), a3(:, :, :), bp(:, :)
+    character(len=text_len), allocatable :: sv(:)
+    character(len=128), allocatable :: names(:)
+    integer :: n, i, j, ng
+
+    call h5_read_attr(f, '/', 'schema_version', schema, stat, errmsg); if (stat /= 0) return
+    if (schema /= schema_version) then
+      stat = 1
+      errmsg = trim(f%path)//': not a LANDYN campaign summary of schema '//schema_version//' (schema '//schema//')'
+      return
+    end if
+    call h5_read_attr(f, '/', 'title', s, stat, errmsg); if (stat /= 0) return
+    meta%title = from_nonempty(s)
+    call h5_read(f, '/campaign/mode', meta%mode, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/seed', meta%seed, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/fingerprint', meta%fingerprint, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/deck_name', s, stat, errmsg); if (stat /= 0) return
+    meta%deck_name = from_nonempty(s)
+    call h5_read(f, '/campaign/deck_text', s, stat, errmsg); if (stat /= 0) return
+    meta%deck_text = from_nonempty(s)
+    call h5_read(f, '/campaign/base_deck_name', s, stat, errmsg); if (stat /= 0) return
+    meta%base_name = from_nonempty(s)
+    call h5_read(f, '/campaign/base_deck_text', s, stat, errmsg); if (stat /= 0) return
+    meta%base_text = from_nonempty(s)
+    call h5_read(f, '/campaign/list_file_name', s, stat, errmsg); if (stat /= 0) return
+    meta%list_name = from_nonempty(s)
+    call h5_read(f, '/campaign/list_file_text', s, stat, errmsg); if (stat /= 0) return
+    meta%list_text = from_nonempty(s)
+    call h5_read(f, '/meta/git_revision', meta%git_revision, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/n_cases', ival, stat, errmsg); if (stat /= 0) return
+    meta%n_cases = ival
+    call h5_read(f, '/campaign/n_gears', ival, stat, errmsg); if (stat /= 0) return
+    meta%n_gears = ival
+    ng = meta%n_gears
+    call h5_read(f, '/parameters/name', names, stat, errmsg); if (stat /= 0) return
+    meta%n_par = size(names)
+    meta%par_name = names
+    deallocate (names)
+    call h5_read(f, '/parameters/label', meta%par_label, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/parameters/units', meta%par_units, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/parameters/description', meta%par_desc, stat, errmsg); if (stat /= 0) return
+    if (size(meta%par_label) /= meta%n_par .or. size(meta%par_units) /= meta%n_par .or. &
+        size(meta%par_desc) /= meta%n_par) then
+      stat = 1
+      errmsg = trim(f%path)//': /parameters/* have different lengths'
+      return
+    end if
+    associate (c => meta%crit)
+      call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, stat, errmsg); if (stat /= 0) return
+      call h5_read(f, '/criteria/max_overload_applied', ival, stat, errmsg); if (stat /= 0) return
+      c%overload_applied = ival /= 0
+      call h5_read(f, '/criteria/max_overload', c%max_overload, stat, errmsg); if (stat /= 0) return
+      call h5_read(f, '/criteria/min_body_clearance_applied', ival, stat, errmsg); if (stat /= 0) return
+      c%clearance_applied = ival /= 0
+      call h5_read(f, '/criteria/min_body_clearance', c%min_body_clearance, stat, errmsg); if (stat /= 0) return
+      call h5_read(f, '/criteria/body_points', bp, stat, errmsg); if (stat /= 0) return
+      c%n_body_points = min(size(bp, 2), max_body_points)
+      c%body_point(:, 1:c%n_body_points) = bp(:, 1:c%n_body_points)
+      call h5_read(f, '/criteria/require_at_rest', ival, stat, errmsg); if (stat /= 0) return
+      c%require_at_rest = ival /= 0
+      call h5_read(f, '/criteria/failed_runs', s, stat, errmsg); if (stat /= 0) return
+      c%failed_runs = s
+    end associate
+
+    call h5_read(f, '/cases/case_id', iv, stat, errmsg); if (stat /= 0) return
+    n = size(iv)
+    allocate (rows(n))
+    do i = 1, n
+      rows(i)%case_id = iv(i)
+      allocate (rows(i)%inputs(meta%n_par), rows(i)%crush(3, ng), rows(i)%margin(3, ng))
+    end do
+    call get_int('/cases/status', 1); if (stat /= 0) return
+    call get_int('/cases/success', 2); if (stat /= 0) return
+    call get_int('/cases/tipped_over', 3); if (stat /= 0) return
+    call get_int('/cases/at_rest', 4); if (stat /= 0) return
+    call get_int('/cases/bottomed_out', 5); if (stat /= 0) return
+    call get_int('/cases/failed_criteria', 6); if (stat /= 0) return
+    call get_int('/cases/n_steps', 7); if (stat /= 0) return
+    call h5_read(f, '/cases/error_message', sv, stat, errmsg); if (stat /= 0) return
+    if (.not. sized(size(sv), '/cases/error_message')) return
+    do i = 1, n
+      rows(i)%message = trim(sv(i))
+    end do
+    call h5_read(f, '/cases/end_reason', sv, stat, errmsg); if (stat /= 0) return
+    if (.not. sized(size(sv), '/cases/end_reason')) return
+    do i = 1, n
+      rows(i)%end_reason = trim(sv(i))
+    end do
+    call h5_read(f, '/cases/history_file', sv, stat, errmsg); if (stat /= 0) return
+    if (.not. sized(size(sv), '/cases/history_file')) return
+    do i = 1, n
+      rows(i)%history_file = trim(sv(i))
+    end do
+    do j = 1, meta%n_par
+      call h5_read(f, '/cases/inputs/'//trim(meta%par_label(j)), rv, stat, errmsg); if (stat /= 0) return
+      if (.not. sized(size(rv), '/cases/inputs/'//trim(meta%par_label(j)))) return
+      do i = 1, n
+        rows(i)%inputs(j) = rv(i)
+      end do
+    end do
+    call h5_read(f, '/cases/crush_length', a3, stat, errmsg); if (stat /= 0) return
+    if (.not. sized(size(a3), '/cases/crush_length', 3*ng*n)) return
+    do i = 1, n
+      rows(i)%crush = a3(:, :, i)
+    end do
+    call h5_read(f, '/cases/stroke_margin', a3, stat, errmsg); if (stat /= 0) return
+    if (.not. sized(size(a3), '/cases/stroke_margin', 3*ng*n)) return
+    do i = 1, n
+      rows(i)%margin = a3(:, :, i)
+    end do
+    call get_real('/cases/min_stroke_margin', 1); if (stat /= 0) return
+    call get_real('/cases/peak_overload', 2); if (stat /= 0) return
+    call get_real('/cases/peak_penetration', 3); if (stat /= 0) return
+    call get_real('/cases/max_slide_distance', 4); if (stat /= 0) return
+    call get_real('/cases/final_tilt', 5); if (stat /= 0) return
+    call get_real('/cases/max_tilt', 6); if (stat /= 0) return
+    call get_real('/cases/min_body_clearance', 7); if (stat /= 0) return
+    call get_real('/cases/final_time', 8); if (stat /= 0) return
+    call get_real('/cases/wall_time', 9); if (stat /= 0) return
+
+  contains
+
+    logical function sized(m, what, expected)
+      integer, intent(in) :: m                   !! size found [-]
+      character(len=*), intent(in) :: what       !! dataset [-]
+      integer, intent(in), optional :: expected  !! size expected (default n) [-]
+      integer :: e
+      e = n
+      if (present(expected)) e = expected
+      sized = m == e
+      if (.not. sized) then
+        stat = 1
+        errmsg = trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(e)
+      end if
+    end function sized
+
+    subroutine get_int(path, which)
+      character(len=*), intent(in) :: path   !! dataset [-]
+      integer, intent(in) :: which           !! row component [-]
+      integer :: k
+      call h5_read(f, path, iv, stat, errmsg)
+      if (stat /= 0) return
+      if (.not. sized(size(iv), path)) return
+      do k = 1, n
+        select case (which)
+        case (1)
+          rows(k)%status = iv(k)
+        case (2)
+          rows(k)%success = iv(k)
+        case (3)
+          rows(k)%tipped_over = iv(k)
+        case (4)
+          rows(k)%at_rest = iv(k)
+        case (5)
+          rows(k)%bottomed_out = iv(k)
+        case (6)
+          rows(k)%failed_criteria = iv(k)
+        case default
+          rows(k)%n_steps = iv(k)
+        end select
+      end do
+    end subroutine get_int
+
+    subroutine get_real(path, which)
+      character(len=*), intent(in) :: path   !! dataset [-]
+      integer, intent(in) :: which           !! row component [-]
+      integer :: k
+      call h5_read(f, path, rv, stat, errmsg)
+      if (stat /= 0) return
+      if (.not. sized(size(rv), path)) return
+      do k = 1, n
+        select case (which)
+        case (1)
+          rows(k)%min_margin = rv(k)
+        case (2)
+          rows(k)%peak_overload = rv(k)
+        case (3)
+          rows(k)%peak_penetration = rv(k)
+        case (4)
+          rows(k)%max_slide = rv(k)
+        case (5)
+          rows(k)%final_tilt = rv(k)
+        case (6)
+          rows(k)%max_tilt = rv(k)
+        case (7)
+          rows(k)%min_clearance = rv(k)
+        case (8)
+          rows(k)%final_time = rv(k)
+        case default
+          rows(k)%wall_time = rv(k)
+        end select
+      end do
+    end subroutine get_real
+
+  end subroutine read_contents
+
+  ! ================================================================ journal
+
+  !> Open the journal for appending: create it with its header, or check the header of an
+  !! existing one against `meta`. stat = 1 on a different campaign or an unwritable file.
+  subroutine journal_open(path, meta, unit, stat, errmsg)
+    character(len=*), intent(in) :: path        !! journal file [-]
+    type(summary_meta_t), intent(in) :: meta    !! campaign meta data [-]
+    integer, intent(out) :: unit                !! open unit [-]
+    integer, intent(out) :: stat                !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    logical :: exists
+    character(len=256) :: iomsg
+    iomsg = ''
+    inquire (file=path, exist=exists)
+    if (exists) then
+      call end_with_newline(path, stat, iomsg)
+      if (stat == 0) open (newunit=unit, file=path, status='old', action='write', position='append', &
+                           form='formatted', iostat=stat, iomsg=iomsg)
+    else
+      open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=stat, iomsg=iomsg)
+      if (stat == 0) then
+        write (unit, '(a)', iostat=stat, iomsg=iomsg) journal_header(meta)
+        if (stat == 0) flush (unit)
+      end if
+    end if
+    if (stat /= 0) errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
+  end subroutine journal_open
+
+  !> Append a line end to a file whose last line is unterminated (a torn journal line), so
+  !! that new lines start on a line of their own.
+  subroutine end_with_newline(path, stat, iomsg)
+    character(len=*), intent(in) :: path        !! file [-]
+    integer, intent(out) :: stat                !! 0 ok [-]
+    character(len=*), intent(inout) :: iomsg    !! message on failure [-]
+    integer :: u, nbytes
+    character(len=1) :: last
+    open (newunit=u, file=path, access='stream', form='unformatted', action='readwrite', status='old', &
+          iostat=stat, iomsg=iomsg)
+    if (stat /= 0) return
+    inquire (unit=u, size=nbytes)
+    if (nbytes > 0) then
+      read (u, pos=nbytes, iostat=stat, iomsg=iomsg) last
+      if (stat == 0 .and. last /= new_line('a')) write (u, pos=nbytes + 1, iostat=stat, iomsg=iomsg) new_line('a')
+    end if
+    close (u)
+  end subroutine end_with_newline
+
+  function journal_header(meta) result(s)
+    type(summary_meta_t), intent(in) :: meta  !! meta data [-]
+    character(len=:), allocatable :: s        !! header line [-]
+    s = journal_magic//' fingerprint='//meta%fingerprint//' n_par='//int_text(meta%n_par)//' n_gears='// &
+        int_text(meta%n_gears)
+  end function journal_header
+
+  !> Append one row to the journal and flush it.
+  subroutine journal_append(unit, row, stat, errmsg)
+    integer, intent(in) :: unit                 !! journal unit [-]
+    type(case_row_t), intent(in) :: row         !! row [-]
+    integer, intent(out) :: stat                !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    integer :: ibuf(row_int_count), k
+    real(wp), allocatable :: rbuf(:)
+    character(len=:), allocatable :: text
+    character(len=32) :: fmt
+    character(len=256) :: iomsg
+    iomsg = ''
+    call pack_row(row, ibuf, rbuf, text)
+    write (fmt, '(a,i0,a,i0,a)') '(a1,', row_int_count, '(1x,i11),', max(size(rbuf), 1), '(1x,z16.16))'
+    write (unit, fmt, advance='no', iostat=stat, iomsg=iomsg) 'R', ibuf, [(transfer(rbuf(k), 0_int64), k=1, size(rbuf))]
+    if (stat == 0) write (unit, '(1x,a,a)', iostat=stat, iomsg=iomsg) text, ' $'
+    if (stat == 0) flush (unit)
+    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
+  end subroutine journal_append
+
+  !> Rows of a journal (in file order). stat = 1 when the file is not a journal of the campaign
+  !! `meta` describes; n_bad counts lines that did not parse (a torn last line).
+  subroutine journal_read(path, meta, rows, n_bad, stat, errmsg)
+    character(len=*), intent(in) :: path                   !! journal file [-]
+    type(summary_meta_t), intent(in) :: meta               !! campaign meta data [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    integer, intent(out) :: n_bad                          !! unparsable lines [-]
+    integer, intent(out) :: stat                           !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg              !! message on failure [-]
+    integer :: u, ios, nr, nfix, k, k2, st, n
+    character(len=:), allocatable :: line
+    character(len=32) :: fmt
+    character(len=1) :: tag
+    integer :: ibuf(row_int_count)
+    integer(int64), allocatable :: hex(:)
+    real(wp), allocatable :: rbuf(:)
+    type(case_row_t) :: row
+    type(case_row_t), allocatable :: tmp(:)
+    character(len=256) :: iomsg
+
+    n_bad = 0
+    allocate (rows(0))
+    iomsg = ''
+    open (newunit=u, file=path, status='old', action='read', form='formatted', iostat=stat, iomsg=iomsg)
+    if (stat /= 0) then
+      errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
+      return
+    end if
+    call read_line(u, line, ios)
+    if (ios /= 0 .or. line /= journal_header(meta)) then
+      stat = 1
+      if (ios == 0 .and. index(line, journal_magic) == 1) then
+        errmsg = path//' is the journal of a different campaign ('//trim(line(len(journal_magic) + 2:))// &
+                 '; this campaign has fingerprint='//meta%fingerprint//')'
+      else
+        errmsg = path//' is not a LANDYN campaign journal'
+      end if
+      close (u)
+      return
+    end if
+    nr = row_real_count(meta%n_par, meta%n_gears)
+    allocate (hex(nr), rbuf(nr))
+    nfix = 1 + 12*row_int_count + 17*nr
+    write (fmt, '(a,i0,a,i0,a)') '(a1,', row_int_count, '(1x,i11),', max(nr, 1), '(1x,z16))'
+    n = 0
+    do
+      call read_line(u, line, ios)
+      if (ios /= 0) exit
+      st = 1
+      if (len(line) >= nfix + 3) then
+        read (line(1:nfix), fmt, iostat=ios) tag, ibuf, hex
+        if (ios == 0 .and. tag == 'R') then
+          k = sum(ibuf(9:11))
+          if (ibuf(9) >= 0 .and. ibuf(10) >= 0 .and. ibuf(11) >= 0 .and. len(line) == nfix + 1 + k + 2) then
+            if (line(nfix + 2 + k:) == ' $') then
+              rbuf = [(transfer(hex(k2), 1.0_wp), k2=1, nr)]
+              call unpack_row(ibuf, rbuf, line(nfix + 2:nfix + 1 + k), meta%n_par, meta%n_gears, row, st)
+            end if
+          end if
+        end if
+      end if
+      if (st /= 0) then
+        n_bad = n_bad + 1
+        cycle
+      end if
+      if (n == size(rows)) then
+        allocate (tmp(max(16, 2*n)))
+        tmp(1:n) = rows(1:n)
+        call move_alloc(tmp, rows)
+      end if
+      n = n + 1
+      rows(n) = row
+    end do
+    close (u)
+    rows = rows(1:n)
+    stat = 0
+  end subroutine journal_read
+
+  !> One whole line of a formatted sequential file, any length.
+  subroutine read_line(u, line, ios)
+    integer, intent(in) :: u                              !! open unit [-]
+    character(len=:), allocatable, intent(out) :: line    !! the line without its end [-]
+    integer, intent(out) :: ios                           !! 0 ok, < 0 end of file, > 0 error [-]
+    character(len=4096) :: buf
+    integer :: nread
+    line = ''
+    do
+      read (u, '(a)', advance='no', iostat=ios, size=nread) buf
+      line = line//buf(1:nread)
+      if (ios /= 0) exit
+    end do
+    if (is_iostat_eor(ios)) ios = 0
+  end subroutine read_line
+
+end module landyn_campaign_store

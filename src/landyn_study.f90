@@ -1,0 +1,823 @@
+!> Sensitivity studies (paper section 4, Tables 6, 9 and 10): one or more load-case decks run
+!! with a list of law variants, the crush lengths gathered in one HDF5 file and one CSV table.
+!!
+!! A study deck is a namelist file (docs/study.md):
+!!
+!!   &study
+!!     title = 'Contact models (paper Table 6)'
+!!     base_deck = 'lc1.nml', 'lc2.nml'     ! load-case decks, relative to the study deck
+!!     case_label = 'LC-1', 'LC-2'
+!!     common = "&simulation t_end = 0.5 /" ! applied to every run (optional)
+!!     output = 'study_contact.h5'          ! default: study deck base name + .h5
+!!     csv = 'study_contact.csv'            ! default: study deck base name + .csv
+!!     measure_case = ..., measure_gear = ..., measure_strut = ...   ! table rows (optional)
+!!   /
+!!   &variant label = 'Base result' /
+!!   &variant label = 'Hertz', set = "&contact law = 'hertz' /" /
+!!   &variant label = 'e = 0.3', set = "contact%law = 'hunt_crossley'", "contact%restitution = 0.3" /
+!!
+!! Each `set` entry is either namelist text ("&group name = value ... /") or a triplet
+!! "group%variable = value"; they are applied, in order, on top of each load-case deck (after
+!! `common`), with the same reader, messages and validation as the landyn program.
+!!
+!! Table rows ("measure options"): by default the nine options of the paper's Tables 6, 9 and 10
+!! when the study has two load cases (LC-1 gear 1 primary, left, right; LC-2 primary of gears 1/4,
+!! left secondary of gear 1, left secondary of gear 2, primary of gears 2/3, left secondaries of
+!! gears 3 and 4), otherwise every strut of every gear of every case (Table 3's layout).
+!!
+!! Library code: returns stat/errmsg; progress goes to a unit the caller passes.
+module landyn_study
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
+  use landyn_kinds, only: wp, msg_len, max_gears
+  use landyn_config, only: landyn_input_t, path_len
+  use landyn_input, only: input_errors_t, read_input_file, apply_input_text, resolve_input, validate_input
+  use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_output, only: write_result_file, iso_timestamp
+  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_h5, only: h5_file_t, h5_create, h5_close, h5_write, h5_write_attr, rename_file, delete_file
+  implicit none
+  private
+
+  public :: study_t, variant_t, run_record_t
+  public :: read_study, prepare_study, run_study, write_study_csv, write_study_h5
+  public :: max_cases, max_sets, max_measures, label_len, set_len
+  public :: status_ok, status_input, status_failed
+
+  integer, parameter :: max_cases = 8        !! load cases per study
+  integer, parameter :: max_sets = 32        !! `set` / `common` entries per group
+  integer, parameter :: max_measures = 96    !! table rows
+  integer, parameter :: label_len = 64       !! length of labels
+  integer, parameter :: set_len = 512        !! length of one `set` entry
+  integer, parameter :: status_ok = 0        !! run completed (a tip-over is a result)
+  integer, parameter :: status_input = 2     !! invalid input: not run
+  integer, parameter :: status_failed = 3    !! the simulation failed (diverged)
+  character(len=*), parameter :: strut_names(3) = [character(len=15) :: 'primary', 'secondary left', &
+                                                   'secondary right']
+
+  !> One law variant.
+  type :: variant_t
+    character(len=label_len) :: label = ''           !! label (table column) [-]
+    character(len=:), allocatable :: overrides       !! deck text applied on top of each case [-]
+  end type variant_t
+
+  !> Result of one run (one variant on one load case).
+  type :: run_record_t
+    integer :: status = status_input                 !! status_ok, status_input or status_failed [-]
+    character(len=msg_len) :: message = ''           !! diagnosis when status /= status_ok [-]
+    character(len=64) :: end_reason = ''             !! how the run ended [-]
+    integer :: n_gears = 0                           !! number of gears [-]
+    real(wp) :: crush(3, max_gears) = 0.0_wp         !! signed net crush per strut and gear (Table 3 sense) [m]
+    real(wp) :: energy_residual = 0.0_wp             !! energy audit residual / input energy [-]
+    real(wp) :: peak_overload = 0.0_wp               !! [g]
+    real(wp) :: max_tilt = 0.0_wp                    !! [deg]
+    logical :: tipped_over = .false.                 !! [-]
+    real(wp) :: t_final = 0.0_wp                     !! [s]
+    real(wp) :: wall_time = 0.0_wp                   !! [s]
+  end type run_record_t
+
+  !> A study: load cases, variants, table layout and, after run_study, the results.
+  type :: study_t
+    character(len=256) :: title = ''                         !! study title [-]
+    character(len=:), allocatable :: deck_name               !! study deck path [-]
+    character(len=:), allocatable :: deck_text               !! study deck text [-]
+    integer :: n_cases = 0                                   !! load cases [-]
+    character(len=path_len) :: case_deck(max_cases) = ''     !! load-case deck paths (resolved) [-]
+    character(len=label_len) :: case_label(max_cases) = ''   !! load-case labels [-]
+    character(len=:), allocatable :: common                  !! deck text applied to every run [-]
+    character(len=path_len) :: output = ''                   !! HDF5 file [-]
+    character(len=path_len) :: csv = ''                      !! CSV file [-]
+    logical :: keep_results = .false.                        !! also write every run's result file [-]
+    integer :: n_variants = 0                                !! variants [-]
+    type(variant_t), allocatable :: variant(:)               !! variants [-]
+    integer :: n_measures = 0                                !! table rows [-]
+    integer :: measure(3, max_measures) = 0                  !! (case, gear, strut) of each row [-]
+    logical :: default_measures = .true.                     !! rows not given in the deck [-]
+    type(landyn_input_t), allocatable :: inp(:, :)           !! (case, variant) resolved inputs [-]
+    type(run_record_t), allocatable :: run(:, :)             !! (case, variant) results [-]
+  end type study_t
+
+contains
+
+  ! ================================================================ reading
+
+  !> Read a study deck. Problems are appended to `errors`; stat = 0 ok, 1 errors in the deck,
+  !! 2 the file cannot be read.
+  subroutine read_study(path, sd, errors, stat)
+    character(len=*), intent(in) :: path            !! study deck [-]
+    type(study_t), intent(out) :: sd                !! the study (not yet prepared)
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    integer, intent(out) :: stat                    !! 0 ok, 1 deck errors, 2 unreadable [-]
+    character(len=256) :: title
+    character(len=path_len) :: base_deck(max_cases), output, csv
+    character(len=label_len) :: case_label(max_cases), label
+    character(len=set_len) :: common(max_sets), set(max_sets)
+    integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
+    logical :: keep_results
+    namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
+      measure_strut, keep_results
+    namelist /variant/ label, set
+    integer :: u, ios, n0, i, nv, nsz
+    character(len=msg_len) :: msg
+    character(len=:), allocatable :: text, dir, ovr
+    type(variant_t), allocatable :: tmp(:)
+
+    n0 = errors%count()
+    stat = 0
+    sd%deck_name = trim(path)
+    call read_text(path, text, ios, msg)
+    if (ios /= 0) then
+      call errors%add(trim(path)//': cannot read the study deck: '//trim(msg))
+      stat = 2
+      return
+    end if
+    sd%deck_text = text
+    call check_groups(text, path, errors)
+    dir = ''
+    i = index(path, '/', back=.true.)
+    if (i > 0) dir = path(1:i)
+
+    title = ''
+    base_deck = ''
+    case_label = ''
+    common = ''
+    output = ''
+    csv = ''
+    measure_case = 0
+    measure_gear = 0
+    measure_strut = 0
+    keep_results = .false.
+    open (newunit=u, file=trim(path), status='old', action='read', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      call errors%add(trim(path)//': cannot open the study deck: '//trim(msg))
+      stat = 2
+      return
+    end if
+    read (u, nml=study, iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      if (ios < 0) then
+        call errors%add(trim(path)//': no &study group (it names the load-case decks: base_deck = ...)')
+      else
+        call errors%add(trim(path)//': &study: '//trim(msg))
+      end if
+    end if
+    sd%title = title
+    sd%n_cases = count(len_trim(base_deck) > 0)
+    if (sd%n_cases == 0 .and. ios == 0) call errors%add(trim(path)//': &study: base_deck is not given; '// &
+                                                          "valid: one or more load-case decks, e.g. base_deck = 'lc1.nml'")
+    if (any(len_trim(base_deck(1:sd%n_cases)) == 0)) &
+      call errors%add(trim(path)//': &study: base_deck has empty entries between given ones')
+    do i = 1, sd%n_cases
+      if (base_deck(i)(1:1) == '/') then
+        sd%case_deck(i) = base_deck(i)
+      else
+        sd%case_deck(i) = dir//trim(base_deck(i))
+      end if
+      sd%case_label(i) = case_label(i)
+      if (len_trim(case_label(i)) == 0) sd%case_label(i) = default_case_label(base_deck(i))
+    end do
+    sd%common = ''
+    call join_sets(common, 'common', path, sd%common, errors)
+    sd%output = output
+    if (len_trim(output) == 0) sd%output = base_name(path)//'.h5'
+    sd%csv = csv
+    if (len_trim(csv) == 0) sd%csv = base_name(path)//'.csv'
+    sd%keep_results = keep_results
+    call set_measures(sd, measure_case, measure_gear, measure_strut, path, errors, 4)
+
+    ! every &variant, in order
+    rewind (u)
+    nv = 0
+    allocate (sd%variant(8))
+    do
+      label = ''
+      set = ''
+      read (u, nml=variant, iostat=ios, iomsg=msg)
+      if (ios < 0) exit
+      nv = nv + 1
+      if (ios > 0) then
+        write (msg, '(a,i0,a,a)') ': &variant ', nv, ': ', trim(msg)
+        call errors%add(trim(path)//trim(msg))
+        exit
+      end if
+      if (nv > size(sd%variant)) then
+        nsz = 2*size(sd%variant)
+        allocate (tmp(nsz))
+        tmp(1:nv - 1) = sd%variant(1:nv - 1)
+        call move_alloc(tmp, sd%variant)
+      end if
+      sd%variant(nv)%label = label
+      if (len_trim(label) == 0) write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
+      ovr = ''
+      call join_sets(set, 'variant '//trim(sd%variant(nv)%label)//': set', path, ovr, errors)
+      sd%variant(nv)%overrides = ovr
+    end do
+    close (u)
+    sd%n_variants = nv
+    if (nv == 0 .and. errors%count() == n0) call errors%add(trim(path)//': no &variant group; valid: one or '// &
+                                                             "more, e.g. &variant label = 'Base result' /")
+    do i = 2, nv
+      if (any(sd%variant(1:i - 1)%label == sd%variant(i)%label)) &
+        call errors%add(trim(path)//': &variant label '''//trim(sd%variant(i)%label)//''' is given twice')
+    end do
+    stat = merge(0, 1, errors%count() == n0)
+  end subroutine read_study
+
+  !> Read, override, resolve and validate the input of every run (case x variant) before anything
+  !! is run, so that a study with an invalid variant runs nothing. stat = 0 when all are valid.
+  subroutine prepare_study(study, errors, stat)
+    type(study_t), intent(inout) :: study           !! study read by read_study
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    integer, intent(out) :: stat                    !! 0 ok, 1 invalid input, 2 a deck is unreadable [-]
+    integer :: c, v, n0, st, m, n_gears
+    n0 = errors%count()
+    stat = 0
+    if (allocated(study%inp)) deallocate (study%inp)
+    if (allocated(study%run)) deallocate (study%run)
+    allocate (study%inp(study%n_cases, study%n_variants), study%run(study%n_cases, study%n_variants))
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        call read_input_file(trim(study%case_deck(c)), study%inp(c, v), errors, st)
+        if (st == 2) then
+          stat = 2
+          cycle
+        end if
+        call apply_entries(study%common, trim(study%deck_name)//' (&study common', study%inp(c, v))
+        call apply_entries(study%variant(v)%overrides, trim(study%deck_name)//' (&variant '// &
+                           trim(study%variant(v)%label)//' set', study%inp(c, v))
+        ! messages about the resolved input name the load case and the variant
+        study%inp(c, v)%deck_name = trim(study%case_deck(c))//' with &variant '//trim(study%variant(v)%label)
+        call resolve_input(study%inp(c, v), errors)
+        call validate_input(study%inp(c, v), errors)
+        if (study%keep_results) study%inp(c, v)%output%file = run_file_name(study, c, v)
+      end do
+    end do
+    if (stat == 0 .and. errors%count() > n0) stat = 1
+    if (stat /= 0) return
+    ! table rows against the landers' gears
+    n_gears = minval(study%inp(:, 1)%gears%n_gears)
+    if (study%default_measures .and. study%n_cases /= 2) then
+      call set_measures(study, [0], [0], [0], trim(study%deck_name), errors, n_gears)
+    end if
+    do m = 1, study%n_measures
+      c = study%measure(1, m)
+      if (study%measure(2, m) > study%inp(c, 1)%gears%n_gears) then
+        call errors%add(trim(study%deck_name)//': &study: measure option '//int_text(m)//' names gear '// &
+                        int_text(study%measure(2, m))//' but load case '//trim(study%case_label(c))//' has '// &
+                        int_text(study%inp(c, 1)%gears%n_gears)//' gears')
+        stat = 1
+      end if
+    end do
+
+  contains
+
+    !> Apply each line of `text` (one `set` or `common` entry per line) as its own fragment, so
+    !! that several entries may name the same group.
+    subroutine apply_entries(text, name, inp)
+      character(len=*), intent(in) :: text             !! entries, one per line [-]
+      character(len=*), intent(in) :: name             !! fragment name for messages, without ')' [-]
+      type(landyn_input_t), intent(inout) :: inp       !! input updated
+      integer :: p0, p1, k, st_
+      p0 = 1
+      k = 0
+      do while (p0 <= len(text))
+        p1 = index(text(p0:), new_line('a'))
+        if (p1 == 0) then
+          p1 = len(text) + 1
+        else
+          p1 = p0 + p1 - 1
+        end if
+        if (len_trim(text(p0:p1 - 1)) > 0) then
+          k = k + 1
+          call apply_input_text(text(p0:p1 - 1), name//'('//int_text(k)//'))', inp, errors, st_)
+        end if
+        p0 = p1 + 1
+      end do
+    end subroutine apply_entries
+
+  end subroutine prepare_study
+
+  ! ================================================================ running
+
+  !> Run every prepared (case, variant). `progress_unit` < 0 silences the progress lines.
+  !! stat = 0 when every run completed, status_failed when some failed (their records say why),
+  !! 4 when a kept result file could not be written.
+  subroutine run_study(study, progress_unit, command_line, stat, errmsg)
+    type(study_t), intent(inout) :: study        !! prepared study; runs are filled in
+    integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none [-]
+    character(len=*), intent(in) :: command_line !! command line (stored in kept result files) [-]
+    integer, intent(out) :: stat                 !! 0, status_failed or 4 [-]
+    character(len=*), intent(inout) :: errmsg    !! message of a file failure
+    type(sim_result_t) :: res
+    integer :: c, v, k, n, st
+    character(len=msg_len) :: msg
+    stat = 0
+    k = 0
+    n = study%n_cases*study%n_variants
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        k = k + 1
+        if (progress_unit >= 0) then
+          write (progress_unit, '(a,i0,a,i0,a)') 'landyn_study: [', k, '/', n, '] '//trim(study%variant(v)%label)// &
+            ' on '//trim(study%case_label(c))//' ...'
+          flush (progress_unit)
+        end if
+        msg = ''
+        call run_simulation(study%inp(c, v), res, st, msg, -1)
+        associate (r => study%run(c, v))
+          r%message = ''
+          if (st /= 0) then
+            r%status = status_failed
+            r%message = msg
+            r%crush = ieee_value(1.0_wp, ieee_quiet_nan)
+            if (stat == 0) stat = status_failed
+          else
+            r%status = status_ok
+            r%n_gears = res%n_gears
+            r%crush = 0.0_wp
+            r%crush(:, 1:res%n_gears) = res%crush_net
+            r%energy_residual = res%energy_residual
+            r%peak_overload = res%peak_overload
+            r%max_tilt = res%max_tilt
+            r%tipped_over = res%tipped_over
+            r%end_reason = res%end_reason
+            r%t_final = res%t_final
+            r%wall_time = res%wall_time
+            if (study%keep_results) then
+              call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, st, msg)
+              if (st /= 0) then
+                stat = 4
+                errmsg = 'cannot write '//trim(study%inp(c, v)%output%file)//': '//trim(msg)
+                return
+              end if
+            end if
+          end if
+          if (progress_unit >= 0) then
+            if (r%status == status_ok) then
+              write (progress_unit, '(a,3f8.1,a,f7.3,a,f7.2,a)') '  gear 1 crush [mm]', 1000.0_wp*r%crush(:, 1), &
+                ', energy residual', 100.0_wp*r%energy_residual, ' %, ', r%wall_time, ' s, '//trim(r%end_reason)
+            else
+              write (progress_unit, '(a)') '  FAILED: '//trim(r%message)
+            end if
+            flush (progress_unit)
+          end if
+        end associate
+      end do
+    end do
+  end subroutine run_study
+
+  ! ================================================================ writing
+
+  !> Crush length of table row m for variant v [m] (NaN when that run did not complete).
+  pure function table_value(study, m, v) result(x)
+    type(study_t), intent(in) :: study  !! study with results
+    integer, intent(in) :: m            !! table row [-]
+    integer, intent(in) :: v            !! variant [-]
+    real(wp) :: x                       !! crush length [m]
+    associate (r => study%run(study%measure(1, m), v))
+      if (r%status == status_ok) then
+        x = r%crush(study%measure(3, m), study%measure(2, m))
+      else
+        x = r%crush(1, 1)   ! NaN, set by run_study
+      end if
+    end associate
+  end function table_value
+
+  !> Write the crush-length table (rows = measure options, one column per variant in mm, then the
+  !! deviation of each further variant from the first in %) as CSV, through <path>.partial.
+  subroutine write_study_csv(study, path, stat, errmsg)
+    type(study_t), intent(in) :: study          !! study with results
+    character(len=*), intent(in) :: path        !! CSV file [-]
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! message on failure
+    integer :: u, m, v, ios, st2
+    character(len=msg_len) :: msg, m2
+    character(len=:), allocatable :: line, tmp
+    real(wp) :: x, x0
+
+    tmp = trim(path)//'.partial'
+    open (newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
+    if (ios /= 0) then
+      stat = 4
+      errmsg = 'cannot write '//trim(path)//': '//trim(msg)
+      return
+    end if
+    line = 'load_case,option,gear,strut'
+    do v = 1, study%n_variants
+      line = line//','//csv_text(trim(study%variant(v)%label)//' [mm]')
+    end do
+    do v = 2, study%n_variants
+      line = line//','//csv_text(trim(study%variant(v)%label)//' dev [%]')
+    end do
+    write (u, '(a)', iostat=ios) line
+    do m = 1, study%n_measures
+      line = csv_text(trim(study%case_label(study%measure(1, m))))//','//int_text(m)//','// &
+             int_text(study%measure(2, m))//','//trim(strut_names(study%measure(3, m)))
+      do v = 1, study%n_variants
+        line = line//','//real_text(1000.0_wp*table_value(study, m, v), 2)
+      end do
+      x0 = table_value(study, m, 1)
+      do v = 2, study%n_variants
+        x = table_value(study, m, v)
+        if (abs(x0) > 0.0_wp) then
+          line = line//','//real_text(100.0_wp*(x - x0)/abs(x0), 2)
+        else
+          line = line//',nan'
+        end if
+      end do
+      if (ios == 0) write (u, '(a)', iostat=ios) line
+    end do
+    close (u)
+    if (ios /= 0) then
+      stat = 4
+      errmsg = 'cannot write '//trim(path)
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      stat = 4
+    end if
+  end subroutine write_study_csv
+
+  !> Write the study's HDF5 file (docs/study.md), through <path>.partial.
+  subroutine write_study_h5(study, path, command_line, stat, errmsg)
+    type(study_t), intent(in) :: study           !! study with results
+    character(len=*), intent(in) :: path         !! HDF5 file [-]
+    character(len=*), intent(in) :: command_line !! command line [-]
+    integer, intent(out) :: stat                 !! 0 on success, 4 on failure
+    character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(h5_file_t) :: f
+    character(len=:), allocatable :: tmp
+    integer :: st2
+    character(len=msg_len) :: m2
+    tmp = trim(path)//'.partial'
+    call h5_create(f, tmp, stat, errmsg)
+    if (stat /= 0) then
+      stat = 4
+      return
+    end if
+    call write_h5_all(f, study, command_line, stat, errmsg)
+    if (stat /= 0) then
+      call h5_close(f, st2, m2)
+      call delete_file(tmp, st2, m2)
+      stat = 4
+      return
+    end if
+    call h5_close(f, stat, errmsg)
+    if (stat == 0) call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      stat = 4
+    end if
+  end subroutine write_study_h5
+
+  subroutine write_h5_all(f, study, command_line, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f          !! open file
+    type(study_t), intent(in) :: study           !! study with results
+    character(len=*), intent(in) :: command_line !! command line [-]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message on failure
+    integer :: c, v, m, nc, nv, nm
+    character(len=label_len) :: labels(study%n_variants), info(study%n_measures), struts(study%n_measures)
+    character(len=4*set_len) :: ovr(study%n_variants)
+    real(wp) :: tab(study%n_variants, study%n_measures), resid(study%n_variants, study%n_cases)
+    integer :: st(study%n_variants, study%n_cases)
+    character(len=:), allocatable :: g, gc
+
+    nc = study%n_cases
+    nv = study%n_variants
+    nm = study%n_measures
+    call h5_write_attr(f, '/', 'title', trim(study%title), stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string//' landyn_study', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/git_revision', landyn_git_revision, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/command_line', trim(command_line), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/study_deck', study%deck_name, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/meta/study_deck_text', nonempty(study%deck_text), '-', stat, errmsg, &
+                  description='the study deck as given'); if (stat /= 0) return
+    call h5_write(f, '/study/case_label', study%case_label(1:nc), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/study/case_deck', study%case_deck(1:nc), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/study/common', nonempty(study%common), '-', stat, errmsg, &
+                  description='deck text applied to every run before the variant'); if (stat /= 0) return
+    do v = 1, nv
+      labels(v) = study%variant(v)%label
+      ovr(v) = study%variant(v)%overrides
+    end do
+    call h5_write(f, '/study/variant_label', labels, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/study/variant_overrides', ovr, '-', stat, errmsg, &
+                  description='deck text each variant applies on top of the load-case deck'); if (stat /= 0) return
+
+    ! ---- the table of the paper (rows = measure options, columns = variants)
+    do m = 1, nm
+      info(m) = study%case_label(study%measure(1, m))
+      struts(m) = strut_names(study%measure(3, m))
+      do v = 1, nv
+        tab(v, m) = table_value(study, m, v)
+      end do
+    end do
+    call h5_write(f, '/table/crush_length', tab, 'm', stat, errmsg, description='shape (n_options, n_variants): '// &
+                  'signed net crush of each measure option (Table 3 sense) for each variant; NaN: run failed')
+    if (stat /= 0) return
+    call h5_write(f, '/table/load_case', info, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/table/gear', study%measure(2, 1:nm), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/table/strut', struts, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/table/variant', labels, '-', stat, errmsg); if (stat /= 0) return
+
+    ! ---- per variant and load case
+    do c = 1, nc
+      do v = 1, nv
+        resid(v, c) = study%run(c, v)%energy_residual
+        st(v, c) = study%run(c, v)%status
+      end do
+    end do
+    call h5_write(f, '/summary/status', st, '-', stat, errmsg, description='shape (n_cases, n_variants): '// &
+                  '0 completed, 3 simulation failed'); if (stat /= 0) return
+    call h5_write(f, '/summary/energy_residual', resid, '-', stat, errmsg, &
+                  description='shape (n_cases, n_variants)'); if (stat /= 0) return
+    do v = 1, nv
+      g = '/variants/'//int_text(v, 3)
+      call h5_write(f, g//'/label', trim(study%variant(v)%label), '-', stat, errmsg); if (stat /= 0) return
+      call h5_write(f, g//'/overrides', nonempty(study%variant(v)%overrides), '-', stat, errmsg); if (stat /= 0) return
+      do c = 1, nc
+        gc = g//'/'//group_name(study%case_label(c))
+        associate (r => study%run(c, v))
+          call h5_write(f, gc//'/status', r%status, '-', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/message', nonempty(trim(r%message)), '-', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/end_reason', nonempty(trim(r%end_reason)), '-', stat, errmsg); if (stat /= 0) return
+          if (r%status == status_ok) then
+            call h5_write(f, gc//'/crush_length', r%crush(:, 1:r%n_gears), 'm', stat, errmsg, &
+                          description='/summary/crush_length of the run: shape (n_gears, 3)'); if (stat /= 0) return
+          end if
+          call h5_write(f, gc//'/energy_residual', r%energy_residual, '-', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/peak_overload', r%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/max_tilt', r%max_tilt, 'deg', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/tipped_over', r%tipped_over, '-', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/final_time', r%t_final, 's', stat, errmsg); if (stat /= 0) return
+          call h5_write(f, gc//'/wall_time', r%wall_time, 's', stat, errmsg); if (stat /= 0) return
+        end associate
+      end do
+    end do
+  end subroutine write_h5_all
+
+  ! ================================================================ helpers
+
+  !> Table rows from the &study measure arrays, or the defaults (see the module documentation).
+  subroutine set_measures(study, mc, mg, ms, path, errors, n_gears)
+    type(study_t), intent(inout) :: study           !! study (n_cases set)
+    integer, intent(in) :: mc(:)                    !! measure_case [-]
+    integer, intent(in) :: mg(:)                    !! measure_gear [-]
+    integer, intent(in) :: ms(:)                    !! measure_strut [-]
+    character(len=*), intent(in) :: path            !! deck name for messages [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    integer, intent(in) :: n_gears                  !! gears per lander for the default rows [-]
+    integer, parameter :: paper(3, 9) = reshape([1, 1, 1, 1, 1, 2, 1, 1, 3, &
+                                                 2, 1, 1, 2, 1, 2, 2, 2, 2, 2, 2, 1, 2, 3, 2, 2, 4, 2], [3, 9])
+    integer :: n, m, c, gi, k
+    n = count(mc > 0)
+    study%default_measures = n == 0
+    if (n > 0) then
+      study%n_measures = n
+      do m = 1, n
+        study%measure(:, m) = [mc(m), mg(m), ms(m)]
+        if (mc(m) < 1 .or. mc(m) > study%n_cases .or. mg(m) < 1 .or. mg(m) > max_gears .or. &
+            ms(m) < 1 .or. ms(m) > 3) &
+          call errors%add(trim(path)//': &study: measure option '//int_text(m)//' = (case '//int_text(mc(m))// &
+                          ', gear '//int_text(mg(m))//', strut '//int_text(ms(m))//') is invalid; valid: case 1..'// &
+                          int_text(study%n_cases)//', gear 1..n_gears, strut 1..3 (primary, left, right)')
+      end do
+    else if (study%n_cases == 2) then
+      study%n_measures = 9
+      study%measure(:, 1:9) = paper
+    else
+      m = 0
+      do c = 1, study%n_cases
+        do gi = 1, n_gears
+          do k = 1, 3
+            m = m + 1
+            study%measure(:, m) = [c, gi, k]
+          end do
+        end do
+      end do
+      study%n_measures = m
+    end if
+  end subroutine set_measures
+
+  !> Join the non-blank `set` entries into deck text: namelist groups as given, triplets
+  !! "group%variable = value" as "&group variable = value /".
+  subroutine join_sets(entries, what, path, text, errors)
+    character(len=*), intent(in) :: entries(:)      !! entries [-]
+    character(len=*), intent(in) :: what            !! name for messages [-]
+    character(len=*), intent(in) :: path            !! deck name for messages [-]
+    character(len=:), allocatable, intent(inout) :: text  !! deck text [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    integer :: i, p, q
+    character(len=:), allocatable :: e
+    text = ''
+    do i = 1, size(entries)
+      e = trim(adjustl(entries(i)))
+      if (len(e) == 0) cycle
+      if (e(1:1) == '&') then
+        text = text//e//new_line('a')
+        cycle
+      end if
+      p = index(e, '%')
+      q = index(e, '=')
+      if (p > 1 .and. q > p + 1) then
+        text = text//'&'//e(1:p - 1)//' '//e(p + 1:)//' /'//new_line('a')
+      else
+        call errors%add(trim(path)//': '//what//'('//int_text(i)//') = "'//e//'" is invalid; valid: namelist '// &
+                        "text such as ""&contact law = 'hertz' /"" or a triplet ""contact%law = 'hertz'""")
+      end if
+    end do
+  end subroutine join_sets
+
+  !> Report groups other than &study and &variant (the namelist reads would skip them silently).
+  subroutine check_groups(text, path, errors)
+    character(len=*), intent(in) :: text            !! deck text [-]
+    character(len=*), intent(in) :: path            !! deck name [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    integer :: p, q, line
+    character(len=1) :: quote
+    logical :: comment, line_start
+    quote = ' '
+    comment = .false.
+    line_start = .true.
+    line = 1
+    p = 1
+    do while (p <= len(text))
+      if (text(p:p) == new_line('a')) then
+        comment = .false.
+        line_start = .true.
+        line = line + 1
+      else if (comment) then
+        continue
+      else if (quote /= ' ') then
+        if (text(p:p) == quote) quote = ' '
+      else if (text(p:p) == '!') then
+        comment = .true.
+      else if (text(p:p) == '"' .or. text(p:p) == "'") then
+        quote = text(p:p)
+        line_start = .false.
+      else if (text(p:p) == '&' .and. line_start) then
+        q = p + 1
+        do while (q <= len(text))
+          if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_', text(q:q)) == 0) exit
+          q = q + 1
+        end do
+        if (lower(text(p + 1:q - 1)) /= 'study' .and. lower(text(p + 1:q - 1)) /= 'variant' .and. &
+            lower(text(p + 1:q - 1)) /= 'end') &
+          call errors%add(trim(path)//':'//int_text(line)//": unknown group '"//text(p:q - 1)// &
+                          "'; a study deck has one &study and &variant groups")
+        line_start = .false.
+        p = q - 1
+      else if (text(p:p) /= ' ' .and. text(p:p) /= achar(9) .and. text(p:p) /= achar(13)) then
+        line_start = .false.
+      end if
+      p = p + 1
+    end do
+  end subroutine check_groups
+
+  !> Whole file as one string.
+  subroutine read_text(path, text, ios, msg)
+    character(len=*), intent(in) :: path                  !! file [-]
+    character(len=:), allocatable, intent(out) :: text    !! its content [-]
+    integer, intent(out) :: ios                           !! iostat [-]
+    character(len=*), intent(inout) :: msg                !! iomsg [-]
+    integer :: u, n
+    open (newunit=u, file=trim(path), access='stream', form='unformatted', action='read', status='old', &
+          iostat=ios, iomsg=msg)
+    if (ios /= 0) return
+    inquire (unit=u, size=n)
+    allocate (character(len=max(n, 0)) :: text)
+    if (n > 0) read (u, iostat=ios, iomsg=msg) text
+    close (u)
+  end subroutine read_text
+
+  !> File name of a kept result: <output base>_<variant number>_<case label>.h5.
+  function run_file_name(study, c, v) result(name)
+    type(study_t), intent(in) :: study     !! study [-]
+    integer, intent(in) :: c               !! case [-]
+    integer, intent(in) :: v               !! variant [-]
+    character(len=path_len) :: name        !! file name [-]
+    character(len=:), allocatable :: b
+    b = trim(study%output)
+    if (len(b) > 3) then
+      if (b(len(b) - 2:) == '.h5') b = b(1:len(b) - 3)
+    end if
+    name = b//'_'//int_text(v, 3)//'_'//group_name(study%case_label(c))//'.h5'
+  end function run_file_name
+
+  !> Base name of a path without directory and extension.
+  pure function base_name(path) result(b)
+    character(len=*), intent(in) :: path   !! path [-]
+    character(len=:), allocatable :: b     !! base name [-]
+    integer :: s, d
+    s = index(path, '/', back=.true.)
+    b = trim(path(s + 1:))
+    d = index(b, '.', back=.true.)
+    if (d > 1) b = b(1:d - 1)
+    if (len(b) == 0) b = 'study'
+  end function base_name
+
+  !> 'LC-1' from 'lc1.nml' (upper-case base name with a dash before a trailing number), else the base name.
+  pure function default_case_label(deck) result(label)
+    character(len=*), intent(in) :: deck   !! deck path [-]
+    character(len=label_len) :: label      !! label [-]
+    character(len=:), allocatable :: b
+    b = base_name(deck)
+    if (len(b) == 3 .and. lower(b(1:2)) == 'lc') then
+      label = 'LC-'//b(3:3)
+    else
+      label = b
+    end if
+  end function default_case_label
+
+  !> HDF5 group name from a label: letters, digits, '-', '_' kept, the rest '_'.
+  pure function group_name(label) result(g)
+    character(len=*), intent(in) :: label  !! label [-]
+    character(len=:), allocatable :: g     !! group name [-]
+    integer :: i
+    g = trim(label)
+    do i = 1, len(g)
+      if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_', g(i:i)) == 0) g(i:i) = '_'
+    end do
+    if (len(g) == 0) g = '_'
+  end function group_name
+
+  !> CSV field: quoted when it holds a comma or a quote.
+  pure function csv_text(s) result(t)
+    character(len=*), intent(in) :: s      !! text [-]
+    character(len=:), allocatable :: t     !! CSV field [-]
+    integer :: i
+    if (scan(s, ',"') == 0) then
+      t = s
+      return
+    end if
+    t = '"'
+    do i = 1, len(s)
+      if (s(i:i) == '"') then
+        t = t//'""'
+      else
+        t = t//s(i:i)
+      end if
+    end do
+    t = t//'"'
+  end function csv_text
+
+  pure function real_text(x, d) result(s)
+    real(wp), intent(in) :: x              !! value [any unit]
+    integer, intent(in) :: d               !! decimals [-]
+    character(len=:), allocatable :: s     !! text, 'nan' for NaN [-]
+    character(len=40) :: buf
+    character(len=16) :: fmt
+    if (ieee_is_nan(x)) then
+      s = 'nan'
+      return
+    end if
+    write (fmt, '(a,i0,a)') '(f0.', d, ')'
+    write (buf, fmt) x
+    s = trim(adjustl(buf))
+    if (s(1:1) == '.') s = '0'//s
+    if (len(s) > 1) then
+      if (s(1:2) == '-.') s = '-0'//s(2:)
+    end if
+  end function real_text
+
+  pure function int_text(i, width) result(s)
+    integer, intent(in) :: i               !! value [-]
+    integer, intent(in), optional :: width !! zero-padded width [-]
+    character(len=:), allocatable :: s     !! text [-]
+    character(len=16) :: buf
+    if (present(width)) then
+      write (buf, '(i0.'//achar(iachar('0') + min(max(width, 1), 9))//')') i
+    else
+      write (buf, '(i0)') i
+    end if
+    s = trim(buf)
+  end function int_text
+
+  pure function nonempty(s) result(r)
+    character(len=*), intent(in) :: s      !! text [-]
+    character(len=:), allocatable :: r     !! s, or '(none)' when blank [-]
+    if (len_trim(s) > 0) then
+      r = s
+    else
+      r = '(none)'
+    end if
+  end function nonempty
+
+  pure function lower(s) result(t)
+    character(len=*), intent(in) :: s      !! text [-]
+    character(len=len(s)) :: t             !! s in lower case [-]
+    integer :: i, c
+    t = s
+    do i = 1, len(s)
+      c = iachar(s(i:i))
+      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
+    end do
+  end function lower
+
+end module landyn_study

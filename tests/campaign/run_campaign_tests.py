@@ -1,0 +1,273 @@
+#!/usr/bin/env python3
+"""Campaign tests of landyn_batch (registered by tests/campaign/CMakeLists.txt).
+
+    run_campaign_tests.py TEST --batch landyn_batch --landyn landyn --mpiexec=mpiexec,--oversubscribe
+                          --np-flag=-n --src tests/campaign --workdir DIR
+
+TEST is one of: grid, monte_carlo, resume, failing, case_merge, bad_deck. Each copies the decks of
+tests/campaign into DIR (emptied first), runs landyn_batch and checks the summary files with
+compare_summaries.py. Exit status 0 pass, 1 fail, 77 skipped (numpy or h5py missing).
+"""
+import argparse
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+try:
+    import h5py
+    import numpy as np
+except ImportError as exc:  # pragma: no cover
+    print(f"skipped: needs numpy and h5py ({exc})")
+    sys.exit(77)
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, HERE)
+import compare_summaries  # noqa: E402
+
+DECKS = ("base.nml", "grid.nml", "mc.nml", "fail.nml", "cases.csv", "bad.nml")
+
+
+class Failure(Exception):
+    pass
+
+
+def check(cond, what):
+    if not cond:
+        raise Failure(what)
+    print(f"  ok: {what}")
+
+
+class Env:
+    def __init__(self, args):
+        self.batch = args.batch
+        self.landyn = args.landyn
+        self.mpiexec = [a for a in args.mpiexec.split(",") if a]
+        self.np_flag = args.np_flag
+        self.dir = args.workdir
+        if os.path.isdir(self.dir):
+            shutil.rmtree(self.dir)
+        os.makedirs(self.dir)
+        for f in DECKS:
+            shutil.copy(os.path.join(args.src, f), self.dir)
+
+    def run(self, cmd, expect=0):
+        print("$ " + " ".join(cmd), flush=True)
+        p = subprocess.run(cmd, cwd=self.dir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                           timeout=300)
+        sys.stdout.write(p.stdout)
+        sys.stdout.write(p.stderr)
+        if expect is not None and p.returncode != expect:
+            raise Failure(f"exit status {p.returncode}, expected {expect}: {' '.join(cmd)}")
+        return p
+
+    def mpi(self, np_, *args, expect=0):
+        return self.run(self.mpiexec + [self.np_flag, str(np_), self.batch] + list(args), expect=expect)
+
+    def serial(self, *args, expect=0):
+        return self.run([self.batch] + list(args), expect=expect)
+
+    def path(self, name):
+        return os.path.join(self.dir, name)
+
+    def same(self, a, b, **kw):
+        argv = [self.path(a), self.path(b)]
+        if kw.get("history"):
+            argv.append("--history")
+        saved = sys.argv
+        sys.argv = ["compare_summaries.py"] + argv
+        try:
+            rc = compare_summaries.main()
+        finally:
+            sys.argv = saved
+        check(rc == 0, f"{a} and {b} have the same rows")
+
+
+def wilson(k, n, z=1.959963984540054):
+    if n == 0:
+        return 0.0, 1.0
+    p = k / n
+    d = 1 + z * z / n
+    c = (p + z * z / (2 * n)) / d
+    h = z / d * math.sqrt(p * (1 - p) / n + z * z / (4 * n * n))
+    return (0.0 if k == 0 else c - h), (1.0 if k == n else c + h)
+
+
+# ------------------------------------------------------------------ tests
+
+def test_grid(env):
+    """2 x 2 grid on 1 and 2 ranks: identical; saved history = what landyn computes."""
+    env.mpi(1, "grid.nml", "-o", "grid_np1.h5")
+    env.mpi(2, "grid.nml", "-o", "grid_np2.h5")
+    env.same("grid_np1.h5", "grid_np2.h5", history=True)
+    f = h5py.File(env.path("grid_np2.h5"), "r")
+    check(list(f["cases/case_id"][()]) == [1, 2, 3, 4], "rows ordered by case id")
+    check(f.attrs["complete"] == 1 and f.attrs["n_rows"] == 4, "summary complete")
+    v = f["cases/inputs/initial_state.velocity_1"]
+    s = f["cases/inputs/terrain.slope"]
+    check(list(v[()]) == [0.0, 1.5, 0.0, 1.5] and list(s[()]) == [0.0, 0.0, 8.0, 8.0],
+          "grid order: first parameter fastest")
+    check(v.attrs["units"] == b"m/s" and s.attrs["units"] == b"deg", "input columns carry deck units")
+    check(f["cases/crush_length"].shape == (4, 4, 3), "crush_length shape (cases, gears, struts)")
+    check(all(f["cases/status"][()] == 0), "all cases ran")
+    hist = f["cases/history_file"][()][1].decode()
+    check(hist == "grid_case000002.h5" and os.path.exists(env.path(hist)), "history of case 2 written")
+    h = h5py.File(env.path(hist), "r")
+    check(np.array_equal(h["summary/crush_length"][()], f["cases/crush_length"][1]),
+          "history file and summary row agree")
+    # the case's deck, run by landyn itself, gives the same numbers bit for bit
+    with open(env.path("case2.nml"), "w") as out:
+        out.write(h["meta/deck_text"][()].decode())
+    env.run([env.landyn, "case2.nml", "-q", "-o", "case2_landyn.h5"])
+    ref = h5py.File(env.path("case2_landyn.h5"), "r")
+    for name in ("crush_length", "stroke_margin", "peak_overload", "final_tilt"):
+        check(ref[f"summary/{name}"][()].tobytes() == h[f"summary/{name}"][()].tobytes(),
+              f"landyn on the case deck: identical /summary/{name}")
+
+
+def test_monte_carlo(env):
+    """6 Monte Carlo samples on 1 and 2 ranks: identical; inputs from the counter-based RNG."""
+    env.mpi(2, "mc.nml", "-o", "mc_np2.h5")
+    env.mpi(1, "mc.nml", "-o", "mc_np1.h5", "--dedicated-master")
+    env.same("mc_np1.h5", "mc_np2.h5")
+    f = h5py.File(env.path("mc_np2.h5"), "r")
+    # uniform(0, 2) of case 1 = 2 * u(seed 20240611, case 1, parameter 1, draw 0), see test_campaign_rng
+    check(f["cases/inputs/initial_state.velocity_1"][0] == 2.0 * 0.8017950731460525,
+          "case 1 input from (seed, case id) as documented")
+    listed = env.serial("mc.nml", "--list-cases").stdout.strip().splitlines()
+    table = np.array([[float(x) for x in line.split(",")] for line in listed[1:]])
+    check(np.array_equal(table[:, 2], f["cases/inputs/initial_state.velocity_3"][()]),
+          "--list-cases gives the inputs the campaign ran")
+    vz = table[:, 2]
+    check(np.all((vz >= 3.0) & (vz <= 5.0)), "truncated normal within lo .. hi")
+    check(set(table[:, 4]) <= {0.0, 4.0, 8.0}, "discrete values only")
+    k = int(f["probability/n_success"][()])
+    n = int(f["probability/n_evaluated"][()])
+    lo, hi = wilson(k, n)
+    check(n == 6 and k == int(f["cases/success"][()].sum()), "probability counts every case")
+    check(abs(f["probability/ci95_low"][()] - lo) < 1e-12 and abs(f["probability/ci95_high"][()] - hi) < 1e-12,
+          f"Wilson interval [{lo:.4f}, {hi:.4f}]")
+    check(abs(f.attrs["p_success"] - k / n) < 1e-15, "p_success attribute")
+    # every success verdict follows the criteria
+    crit_margin = f["criteria/min_stroke_margin"][()]
+    ok = ((f["cases/tipped_over"][()] == 0) & (f["cases/min_stroke_margin"][()] >= crit_margin)
+          & (f["cases/peak_overload"][()] <= f["criteria/max_overload"][()])
+          & (f["cases/min_body_clearance"][()] >= f["criteria/min_body_clearance"][()]))
+    check(np.array_equal(ok.astype(int), f["cases/success"][()]), "success = criteria of &criteria")
+
+
+def test_resume(env):
+    """A campaign stopped after 2 rows (and once more with a torn journal line) and resumed
+    equals an uninterrupted one."""
+    env.mpi(2, "mc.nml", "-o", "full.h5")
+    env.mpi(2, "mc.nml", "-o", "part.h5", "--stop-after", "2", expect=5)
+    check(os.path.exists(env.path("part.h5.journal")), "journal kept after the stop")
+    env.mpi(2, "mc.nml", "-o", "part.h5", expect=1)   # no --resume: refuses to overwrite
+    env.mpi(2, "mc.nml", "-o", "part.h5", "--resume", "--stop-after", "1", expect=5)
+    # a kill in the middle of a write: torn last line, and the summary checkpoint lost
+    with open(env.path("part.h5.journal")) as j:
+        line = j.read().splitlines()[1]
+    with open(env.path("part.h5.journal"), "a") as j:
+        j.write(line[:len(line) // 2])
+    os.remove(env.path("part.h5"))
+    p = env.mpi(2, "mc.nml", "-o", "part.h5", "--resume")
+    check("3 of 6 cases done" in p.stderr and "ignored 1 incomplete journal line" in p.stderr,
+          "resume found 3 finished cases and the torn line")
+    check(not os.path.exists(env.path("part.h5.journal")), "journal removed when complete")
+    env.same("full.h5", "part.h5")
+    # resuming a finished campaign runs nothing and changes nothing
+    env.mpi(1, "mc.nml", "-o", "part.h5", "--resume")
+    env.same("full.h5", "part.h5")
+
+
+def test_failing(env):
+    """Invalid input (case 2) and a failed run (case 3) are rows; the campaign goes on."""
+    env.mpi(2, "fail.nml")
+    f = h5py.File(env.path("fail.h5"), "r")
+    status = list(f["cases/status"][()])
+    check(status == [0, 2, 3, 0], f"statuses {status} = [0, 2, 3, 0]")
+    msg = [m.decode() for m in f["cases/error_message"][()]]
+    check("&terrain: slope(1) = 75.0 deg is invalid" in msg[1], "case 2 message names group/variable/value")
+    check("time step is too large" in msg[2], "case 3 message from the simulation")
+    check(msg[0] == "" and msg[3] == "", "no message for good cases")
+    check(all(np.isnan(f["cases/peak_overload"][()][1:3])), "no metrics for failed cases")
+    check(int(f["probability/n_excluded"][()]) == 2 and int(f["probability/n_evaluated"][()]) == 2,
+          "failed_runs = 'exclude' leaves them out of P")
+    check(list(f["cases/failed_criteria"][()][1:3]) == [32, 32], "failed_criteria bit 32 = no result")
+
+
+def test_case_merge(env):
+    """--case K (serial, as in a job array) + --merge equals the MPI run."""
+    env.mpi(2, "mc.nml", "-o", "mpi.h5")
+    env.serial("mc.nml", "--case", "1:2", "-q")
+    env.serial("mc.nml", "--case", "3", "-q")
+    env.serial("mc.nml", "--case", "4", "-q", "-o", "part4.h5")
+    p = env.serial("--merge", "partial.h5", "mc.cases000001-000002.h5", "mc.case000003.h5", expect=5)
+    check("3 case(s) missing" in p.stderr, "incomplete merge reports the missing cases")
+    env.serial("mc.nml", "--case", "5:6", "-q")
+    env.serial("--merge", "merged.h5", "partial.h5", "mc.cases000001-000002.h5", "part4.h5",
+               "mc.cases000005-000006.h5")
+    env.same("mpi.h5", "merged.h5")
+    env.serial("grid.nml", "--case", "1", "-q", "-o", "g1.h5")
+    p = env.serial("--merge", "x.h5", "mpi.h5", "g1.h5", expect=2)
+    check("belongs to another campaign" in p.stderr and not os.path.exists(env.path("x.h5")),
+          "files of another campaign are refused")
+    env.serial("mc.nml", "--case", "7", expect=1)
+
+
+def test_bad_deck(env):
+    """Every problem of a bad deck is reported with group/variable/value; exit 2; no file."""
+    p = env.mpi(2, "bad.nml", expect=2)
+    for text in ("bad.nml:8: &campaign: unknown variable 'sead'", "did you mean 'seed'",
+                 "&campaign: n_samples = 0 is invalid",
+                 "name = 'initial_state%velocity(4)' is invalid", "did you mean 'slope'",
+                 "'friction%mu_dynamic': lo = 0.5, hi = 0.3 is invalid",
+                 "gears%n_gears cannot be varied", "distribution = 'gaussian' is invalid",
+                 "&criteria: max_overload = -1 g is invalid", "failed_runs = 'ignore' is invalid",
+                 "9 error(s) in the campaign"):
+        check(text in p.stderr, f"reports: {text}")
+    check(not any(n.startswith("bad.h5") for n in os.listdir(env.dir)), "no output file")
+    # a bad base deck and a bad case list are reported the same way
+    with open(env.path("badbase.nml"), "w") as f:
+        f.write("&simulation dt = -1.0, t_end = 0.3 /\n&terain slope = 4*0.0 /\n")
+    with open(env.path("bad2.nml"), "w") as f:
+        f.write("&campaign base_deck = 'badbase.nml', mode = 'list', list_file = 'bad.csv' /\n")
+    with open(env.path("bad.csv"), "w") as f:
+        f.write("initial_state%velocity(1), terrain%slope\n0.5, 1.0\nfast, 2.0\n")
+    p = env.serial("bad2.nml", "--check", expect=2)
+    for text in ("unknown namelist group '&terain'", "&simulation: dt", "base_deck = 'badbase.nml' has",
+                 "column 2 'terrain%slope' is not a campaign input", "'fast' is not a finite number"):
+        check(text in p.stderr, f"reports: {text}")
+    p = env.serial("missing.nml", expect=2)
+    check("cannot read the campaign deck" in p.stderr, "unreadable deck")
+
+
+TESTS = {"grid": test_grid, "monte_carlo": test_monte_carlo, "resume": test_resume, "failing": test_failing,
+         "case_merge": test_case_merge, "bad_deck": test_bad_deck}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("test", choices=sorted(TESTS))
+    ap.add_argument("--batch", required=True, help="landyn_batch executable")
+    ap.add_argument("--landyn", required=True, help="landyn executable")
+    ap.add_argument("--mpiexec", required=True, help="launcher and its flags, comma-separated")
+    ap.add_argument("--np-flag", default="-n", help="launcher flag for the number of ranks")
+    ap.add_argument("--src", default=HERE, help="directory of the test decks")
+    ap.add_argument("--workdir", required=True, help="scratch directory (emptied)")
+    args = ap.parse_args()
+    env = Env(args)
+    print(f"campaign test {args.test}: {TESTS[args.test].__doc__.strip()}")
+    try:
+        TESTS[args.test](env)
+    except (Failure, subprocess.TimeoutExpired) as exc:
+        print(f"FAILED: {exc}")
+        return 1
+    print("PASSED")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
