@@ -39,6 +39,7 @@ module landyn_contact
   use landyn_kinds, only: wp
   use landyn_config, only: contact_cfg_t, name_len
   use landyn_friction, only: adams_step
+  use landyn_strings, only: lower_case
   implicit none
   private
 
@@ -199,7 +200,7 @@ contains
 
     stat = 0
     errmsg = ''
-    key = lower(trim(adjustl(cfg%law)))
+    key = lower_case(trim(adjustl(cfg%law)))
     select case (key)
     case ('base', 'adams_impact', 'hertz', 'kelvin_voigt', 'kelvin_voigt_step', 'kelvin_voigt_bilinear', &
           'hunt_crossley')
@@ -612,16 +613,5 @@ contains
     end if
     p = self%normal_force(delta, delta_dot)*delta_dot - de_dt
   end function regolith_dissipation_power
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s  !! text
-    character(len=len(s)) :: t         !! s in lower case
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
-  end function lower
 
 end module landyn_contact

@@ -42,6 +42,7 @@
 module landyn_friction
   use landyn_kinds, only: wp
   use landyn_config, only: friction_cfg_t, name_len, is_set
+  use landyn_strings, only: lower_case
   implicit none
   private
 
@@ -185,7 +186,7 @@ contains
 
     stat = 0
     errmsg = ''
-    key = lower(trim(adjustl(cfg%law)))
+    key = lower_case(trim(adjustl(cfg%law)))
     vs = cfg%stribeck_speed
     if (.not. is_set(vs)) vs = default_stribeck_speed(key)
     if (.not. (cfg%mu_static >= 0.0_wp .and. cfg%mu_static <= huge(1.0_wp))) then
@@ -606,16 +607,5 @@ contains
       h = h0 + (h1 - h0)*xi*xi*(3.0_wp - 2.0_wp*xi)
     end if
   end function adams_step
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s  !! text
-    character(len=len(s)) :: t         !! s in lower case
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
-  end function lower
 
 end module landyn_friction

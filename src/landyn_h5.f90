@@ -50,7 +50,7 @@
 !! its resources at program exit.
 module landyn_h5
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
-  use landyn_kinds, only: wp, ip
+  use landyn_kinds, only: wp, ip, msg_len
   use hdf5, only: hid_t, hsize_t, size_t, &
     h5open_f, h5eset_auto_f, h5iis_valid_f, h5iget_type_f, h5kind_to_type, &
     h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, &
@@ -77,6 +77,7 @@ module landyn_h5
   public :: h5_write, h5_write_attr
   public :: h5_read, h5_read_attr
   public :: rename_file, delete_file
+  public :: h5_create_partial, h5_commit_partial
 
   integer(hid_t), parameter :: no_id = -1_hid_t   !! marks an HDF5 handle that is not open
   integer, parameter :: max_rank = 3               !! highest array rank handled here
@@ -941,6 +942,45 @@ contains
     stat = 1
     if (present(errmsg)) errmsg = "delete_file: cannot delete '"//trim(path)//"'"
   end subroutine delete_file
+
+  ! ============================================================== files published whole
+
+  !> Create `path`.partial for writing. Write the contents, then call h5_commit_partial with
+  !! their status: the file appears under `path` only when it is complete, so a write that
+  !! fails or is killed leaves nothing that looks like a result.
+  subroutine h5_create_partial(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! must not be open; open on `path`.partial afterwards
+    character(len=*), intent(in) :: path       !! final file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    call h5_create(file, trim(path)//'.partial', stat, errmsg)
+  end subroutine h5_create_partial
+
+  !> Finish a file begun with h5_create_partial: with stat = 0 on entry (contents written), close
+  !! it and rename `path`.partial to `path`; otherwise (or when closing or renaming fails) close
+  !! it and delete `path`.partial, keeping the caller's stat and errmsg.
+  subroutine h5_commit_partial(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! opened by h5_create_partial; closed afterwards
+    character(len=*), intent(in) :: path       !! final file name, as given to h5_create_partial
+    integer, intent(inout) :: stat             !! in: status of writing the contents; out: 0 when published
+    character(len=*), intent(inout) :: errmsg  !! set on failure (kept when stat /= 0 on entry)
+    character(len=:), allocatable :: tmp
+    integer :: st2
+    character(len=msg_len) :: m2
+    tmp = trim(path)//'.partial'
+    if (stat /= 0) then
+      call h5_close(file, st2, m2)
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call h5_close(file, stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) call delete_file(tmp, st2, m2)
+  end subroutine h5_commit_partial
 
   ! ============================================================== private helpers
 

@@ -25,6 +25,11 @@ module landyn_input
                            primary_cfg_t, secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, &
                            initial_cfg_t, output_cfg_t, default_input, unset_real, is_set, max_stages, &
                            name_len, path_len
+  use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, is_digit, edit_distance, &
+                            fmt_int => int_text, quoted => quote_text
+  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
+                                  find_item_names, line_of, first_nonblank, one_line => one_line_text, &
+                                  strip_commas => separators_to_blanks, remove_blanks
   implicit none
   private
 
@@ -604,11 +609,7 @@ contains
         cycle
       end if
       line = line_of(work, p)
-      q = p + 1
-      do while (q <= n)
-        if (.not. is_ident_char(work(q:q))) exit
-        q = q + 1
-      end do
+      q = group_name_end(work, p)
       gname = lower(work(p + 1:q - 1))
       call find_group_end(work, q, e, terminated, next_p)
       if (len(gname) == 0) then
@@ -633,52 +634,6 @@ contains
     end do
   end subroutine parse_deck
 
-  !> Find the end of a group body starting at position q: the first '/' outside quotes, or
-  !! '&end' (terminated), or the next '&' or the end of the text (not terminated).
-  pure subroutine find_group_end(work, q, e, terminated, next_p)
-    character(len=*), intent(in) :: work  !! comment-free deck text [-]
-    integer, intent(in) :: q              !! first position of the body [-]
-    integer, intent(out) :: e             !! position after the body (terminator or next group) [-]
-    logical, intent(out) :: terminated    !! a terminator was found [-]
-    integer, intent(out) :: next_p        !! where scanning continues [-]
-    character(len=1) :: quote
-    integer :: n
-    n = len(work)
-    quote = ' '
-    e = q
-    terminated = .false.
-    next_p = n + 1
-    do while (e <= n)
-      if (quote /= ' ') then
-        if (work(e:e) == quote) quote = ' '
-      else if (work(e:e) == '"' .or. work(e:e) == "'") then
-        quote = work(e:e)
-      else if (work(e:e) == '/') then
-        terminated = .true.
-        next_p = e + 1
-        return
-      else if (work(e:e) == '&') then
-        if (e + 3 <= n) then
-          if (lower(work(e + 1:e + 3)) == 'end') then
-            if (e + 4 > n) then
-              terminated = .true.
-            else
-              terminated = .not. is_ident_char(work(e + 4:e + 4))
-            end if
-            if (terminated) then
-              next_p = e + 4
-              return
-            end if
-          end if
-        end if
-        next_p = e
-        return
-      end if
-      e = e + 1
-    end do
-    e = n + 1
-  end subroutine find_group_end
-
   !> Split one group body into `name = value` items and read each on its own.
   subroutine read_group(ig, work, b0, b1, deck_name, inp, errors)
     integer, intent(in) :: ig                      !! group index [-]
@@ -691,25 +646,12 @@ contains
     character(len=:), allocatable :: gname, item, lhs, base, value
     character(len=key_len), allocatable :: keys(:)
     character(len=512) :: msg
-    character(len=1) :: quote
-    integer :: p, k, s, nitems, item_end, ios, iv, nkeys
+    integer :: p, k, nitems, item_end, ios, iv, nkeys
     logical :: ok
 
     gname = trim(group_names(ig))
     ! Find every '=' outside quotes and the start of the name before it.
-    allocate (starts(0), eqs(0))
-    quote = ' '
-    do p = b0, b1
-      if (quote /= ' ') then
-        if (work(p:p) == quote) quote = ' '
-      else if (work(p:p) == '"' .or. work(p:p) == "'") then
-        quote = work(p:p)
-      else if (work(p:p) == '=') then
-        s = name_start(work, b0, p)
-        starts = [starts, s]
-        eqs = [eqs, p]
-      end if
-    end do
+    call find_item_names(work, b0, b1, .false., starts, eqs)
     nitems = size(starts)
     item_end = b1
     if (nitems > 0) item_end = starts(1) - 1
@@ -775,48 +717,6 @@ contains
       end if
     end do
   end subroutine read_group
-
-  !> Start of the variable name (with optional subscript) that ends just before the '=' at eq.
-  !! Returns eq itself when there is no name.
-  pure function name_start(work, b0, eq) result(s)
-    character(len=*), intent(in) :: work  !! comment-free deck text [-]
-    integer, intent(in) :: b0             !! first position of the group body [-]
-    integer, intent(in) :: eq             !! position of the '=' [-]
-    integer :: s                          !! start of the name [-]
-    integer :: p, depth
-    p = eq - 1
-    do while (p >= b0)
-      if (.not. is_blank(work(p:p))) exit
-      p = p - 1
-    end do
-    if (p >= b0) then
-      if (work(p:p) == ')') then
-        depth = 0
-        do while (p >= b0)
-          if (work(p:p) == ')') depth = depth + 1
-          if (work(p:p) == '(') depth = depth - 1
-          if (depth == 0) exit
-          p = p - 1
-        end do
-        p = p - 1
-        do while (p >= b0)
-          if (.not. is_blank(work(p:p))) exit
-          p = p - 1
-        end do
-      end if
-    end if
-    s = p + 1
-    do while (p >= b0)
-      if (.not. is_ident_char(work(p:p))) exit
-      s = p
-      p = p - 1
-    end do
-    if (s > eq - 1) then
-      s = eq
-    else if (.not. is_letter(work(s:s))) then
-      s = eq
-    end if
-  end function name_start
 
   !> Reject numbers whose decimal exponent exceeds max_decimal_exponent before they are read
   !! (reading them would overflow, which traps in Debug builds).
@@ -1996,15 +1896,6 @@ contains
     end if
   end function pretty
 
-  !> Integer as text.
-  pure function fmt_int(i) result(s)
-    integer, intent(in) :: i               !! value [-]
-    character(len=:), allocatable :: s     !! decimal text [-]
-    character(len=12) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function fmt_int
-
   !> Logical as namelist text.
   pure function fmt_logical(l) result(s)
     logical, intent(in) :: l               !! value [-]
@@ -2015,22 +1906,6 @@ contains
       s = '.false.'
     end if
   end function fmt_logical
-
-  !> Text in single quotes, inner quotes doubled.
-  pure function quoted(t) result(s)
-    character(len=*), intent(in) :: t      !! text [-]
-    character(len=:), allocatable :: s     !! 'text' [-]
-    integer :: i
-    s = "'"
-    do i = 1, len(t)
-      if (t(i:i) == "'") then
-        s = s//"''"
-      else
-        s = s//t(i:i)
-      end if
-    end do
-    s = s//"'"
-  end function quoted
 
   !> Exact equality of two reals (bit patterns), without a floating-point comparison.
   elemental function same_real(a, b) result(same)
@@ -2047,58 +1922,6 @@ contains
   end function deg_to_rad
 
   ! ================================================================ text helpers
-
-  !> Copy of text with `!` comments (outside quotes) blanked; line ends kept. qpos > 0 is the
-  !! position of an opening quote that is never closed.
-  pure subroutine strip_comments(text, work, qpos)
-    character(len=*), intent(in) :: text   !! deck text [-]
-    character(len=len(text)), intent(out) :: work  !! text without comments [-]
-    integer, intent(out) :: qpos           !! unterminated quote position, 0 if none [-]
-    character(len=1) :: quote
-    integer :: p
-    logical :: in_comment
-    work = text
-    quote = ' '
-    qpos = 0
-    in_comment = .false.
-    do p = 1, len(text)
-      if (in_comment) then
-        if (text(p:p) == new_line('a')) then
-          in_comment = .false.
-        else
-          work(p:p) = ' '
-        end if
-      else if (quote /= ' ') then
-        if (text(p:p) == quote) quote = ' '
-      else if (text(p:p) == '!') then
-        in_comment = .true.
-        work(p:p) = ' '
-      else if (text(p:p) == '"' .or. text(p:p) == "'") then
-        quote = text(p:p)
-        qpos = p
-      end if
-    end do
-    if (quote == ' ') qpos = 0
-  end subroutine strip_comments
-
-  !> Position of the next '&' outside quotes at or after p (len+1 if none).
-  pure function next_ampersand(work, p) result(e)
-    character(len=*), intent(in) :: work  !! comment-free deck text [-]
-    integer, intent(in) :: p              !! start position [-]
-    integer :: e                          !! position [-]
-    character(len=1) :: quote
-    quote = ' '
-    do e = p, len(work)
-      if (quote /= ' ') then
-        if (work(e:e) == quote) quote = ' '
-      else if (work(e:e) == '"' .or. work(e:e) == "'") then
-        quote = work(e:e)
-      else if (work(e:e) == '&') then
-        return
-      end if
-    end do
-    e = len(work) + 1
-  end function next_ampersand
 
   !> "deck:line: " (or "line N: " without a deck name) for position p.
   pure function loc(deck_name, work, p) result(s)
@@ -2122,39 +1945,6 @@ contains
       if (len_trim(inp%deck_name) > 0) s = trim(inp%deck_name)//': '
     end if
   end function msg_prefix
-
-  pure function line_of(work, p) result(line)
-    character(len=*), intent(in) :: work  !! deck text [-]
-    integer, intent(in) :: p              !! position [-]
-    integer :: line                       !! 1-based line number [-]
-    integer :: i
-    line = 1
-    do i = 1, min(p, len(work) + 1) - 1
-      if (work(i:i) == new_line('a')) line = line + 1
-    end do
-  end function line_of
-
-  pure function first_nonblank(work, p) result(q)
-    character(len=*), intent(in) :: work  !! text [-]
-    integer, intent(in) :: p              !! start position [-]
-    integer :: q                          !! first non-blank position at or after p [-]
-    q = p
-    do while (q < len(work))
-      if (.not. is_blank(work(q:q))) exit
-      q = q + 1
-    end do
-  end function first_nonblank
-
-  !> Text on one line: every blank character (tab, line end) made a space.
-  pure function one_line(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! same length, blanks normalised [-]
-    integer :: i
-    s = t
-    do i = 1, len(s)
-      if (is_blank(s(i:i))) s(i:i) = ' '
-    end do
-  end function one_line
 
   !> Compact excerpt of deck text for messages: blanks collapsed, trailing commas dropped, shortened.
   pure function snippet(t) result(s)
@@ -2186,61 +1976,6 @@ contains
     end do
     if (len(s) > 4*snippet_len) s = s(1:4*snippet_len - 3)//'...'
   end function snippet_raw
-
-  pure function strip_commas(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! t with commas and blank characters made spaces [-]
-    integer :: i
-    s = one_line(t)
-    do i = 1, len(s)
-      if (s(i:i) == ',') s(i:i) = ' '
-    end do
-  end function strip_commas
-
-  pure function remove_blanks(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=:), allocatable :: s  !! t without blank characters [-]
-    integer :: i
-    s = ''
-    do i = 1, len(t)
-      if (.not. is_blank(t(i:i))) s = s//t(i:i)
-    end do
-  end function remove_blanks
-
-  elemental function lower(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! t in lower case [-]
-    integer :: i, c
-    s = t
-    do i = 1, len(t)
-      c = iachar(t(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) s(i:i) = achar(c + 32)
-    end do
-  end function lower
-
-  elemental function is_blank(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! space, tab, line end, carriage return or form feed [-]
-    yes = c == ' ' .or. c == achar(9) .or. c == achar(10) .or. c == achar(13) .or. c == achar(12)
-  end function is_blank
-
-  elemental function is_letter(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! an ASCII letter [-]
-    yes = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
-  end function is_letter
-
-  elemental function is_digit(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! 0..9 [-]
-    yes = c >= '0' .and. c <= '9'
-  end function is_digit
-
-  elemental function is_ident_char(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! may appear in a Fortran name (or a % component reference) [-]
-    yes = is_letter(c) .or. is_digit(c) .or. c == '_' .or. c == '%'
-  end function is_ident_char
 
   ! ================================================================ names and hints
 
@@ -2323,21 +2058,5 @@ contains
     end do
     if (best > 0 .and. best_d <= max(2, len(name)/3)) s = "; did you mean '"//trim(all_vars(best)%name)//"'?"
   end function var_hint
-
-  !> Levenshtein distance between two strings.
-  pure function edit_distance(a, b) result(d)
-    character(len=*), intent(in) :: a, b  !! strings [-]
-    integer :: d                          !! number of single-character edits [-]
-    integer :: prev(0:len(b)), cur(0:len(b)), i, j
-    prev = [(j, j = 0, len(b))]
-    do i = 1, len(a)
-      cur(0) = i
-      do j = 1, len(b)
-        cur(j) = min(prev(j) + 1, cur(j - 1) + 1, prev(j - 1) + merge(0, 1, a(i:i) == b(j:j)))
-      end do
-      prev = cur
-    end do
-    d = prev(len(b))
-  end function edit_distance
 
 end module landyn_input

@@ -3,12 +3,12 @@
 !! so a run that fails or is killed leaves nothing that looks like a result.
 module landyn_output
   use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
   use landyn_version, only: landyn_version_string, landyn_git_revision, landyn_build_type, landyn_fflags
   use landyn_input, only: resolved_input_text
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
-  use landyn_h5, only: h5_file_t, h5_create, h5_close, h5_write, h5_write_attr, rename_file, delete_file
+  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr
   implicit none
   private
 
@@ -37,26 +37,11 @@ contains
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message on failure
     type(h5_file_t) :: f
-    character(len=:), allocatable :: tmp
-    integer :: st2
-    character(len=msg_len) :: m2
 
-    tmp = trim(path)//'.partial'
-    call h5_create(f, tmp, stat, errmsg)
+    call h5_create_partial(f, path, stat, errmsg)
     if (stat /= 0) return
     call write_all(f, inp, res, command_line, stat, errmsg)
-    if (stat /= 0) then
-      call h5_close(f, st2, m2)
-      call delete_file(tmp, st2, m2)
-      return
-    end if
-    call h5_close(f, stat, errmsg)
-    if (stat /= 0) then
-      call delete_file(tmp, st2, m2)
-      return
-    end if
-    call rename_file(tmp, trim(path), stat, errmsg)
-    if (stat /= 0) call delete_file(tmp, st2, m2)
+    call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_result_file
 
   subroutine write_all(f, inp, res, command_line, stat, errmsg)

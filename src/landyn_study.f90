@@ -34,7 +34,7 @@ module landyn_study
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_output, only: write_result_file, iso_timestamp
   use landyn_version, only: landyn_version_string, landyn_git_revision
-  use landyn_h5, only: h5_file_t, h5_create, h5_close, h5_write, h5_write_attr, rename_file, delete_file
+  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr, rename_file, delete_file
   implicit none
   private
 
@@ -448,28 +448,14 @@ contains
     integer, intent(out) :: stat                 !! 0 on success, 4 on failure
     character(len=*), intent(inout) :: errmsg    !! message on failure
     type(h5_file_t) :: f
-    character(len=:), allocatable :: tmp
-    integer :: st2
-    character(len=msg_len) :: m2
-    tmp = trim(path)//'.partial'
-    call h5_create(f, tmp, stat, errmsg)
+    call h5_create_partial(f, path, stat, errmsg)
     if (stat /= 0) then
       stat = 4
       return
     end if
     call write_h5_all(f, study, command_line, stat, errmsg)
-    if (stat /= 0) then
-      call h5_close(f, st2, m2)
-      call delete_file(tmp, st2, m2)
-      stat = 4
-      return
-    end if
-    call h5_close(f, stat, errmsg)
-    if (stat == 0) call rename_file(tmp, trim(path), stat, errmsg)
-    if (stat /= 0) then
-      call delete_file(tmp, st2, m2)
-      stat = 4
-    end if
+    call h5_commit_partial(f, path, stat, errmsg)
+    if (stat /= 0) stat = 4
   end subroutine write_study_h5
 
   subroutine write_h5_all(f, study, command_line, stat, errmsg)

@@ -11,20 +11,22 @@ program landyn
   use landyn_input, only: input_errors_t, load_input, resolve_input, validate_input, write_resolved_input
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_output, only: write_result_file
-  use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_report, only: write_summary_table
   use landyn_process, only: terminate
+  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
+                        write_input_errors
   implicit none
 
   type(landyn_input_t) :: inp
   type(input_errors_t) :: errors
   type(sim_result_t) :: res
-  character(len=:), allocatable :: deck, out_file, arg, cmd
+  character(len=:), allocatable :: deck, out_file, arg, cmd, problem
   logical :: check_only, quiet
   integer :: i, n, stat, progress
   character(len=msg_len) :: msg
 
   deck = ''
+  problem = ''
   out_file = ''
   check_only = .false.
   quiet = .false.
@@ -38,7 +40,7 @@ program landyn
       call usage(output_unit)
       call terminate(0)
     case ('-V', '--version')
-      write (output_unit, '(a)') 'landyn '//landyn_version_string//' ('//landyn_git_revision//')'
+      call write_version(output_unit, 'landyn')
       call terminate(0)
     case ('--check')
       check_only = .true.
@@ -49,10 +51,8 @@ program landyn
       i = i + 1
       out_file = get_arg(i)
     case default
-      if (len(arg) > 0) then
-        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
-      end if
-      if (len(deck) > 0) call die_usage('more than one deck given ('//deck//', '//arg//')')
+      problem = positional_arg_problem(arg, deck, 'deck')
+      if (len(problem) > 0) call die_usage(problem)
       deck = arg
     end select
   end do
@@ -67,8 +67,7 @@ program landyn
     stat = merge(0, 1, errors%count() == 0)
   end if
   if (stat /= 0 .or. errors%count() > 0) then
-    call errors%write(error_unit)
-    write (error_unit, '(a,i0,a)') 'landyn: ', errors%count(), ' input error(s); nothing was run and no file was written'
+    call write_input_errors(error_unit, 'landyn', errors)
     call terminate(2)
   end if
   if (check_only) then
@@ -106,23 +105,6 @@ program landyn
 
 contains
 
-  function get_arg(k) result(a)
-    integer, intent(in) :: k               !! argument index
-    character(len=:), allocatable :: a     !! the argument
-    integer :: l
-    call get_command_argument(k, length=l)
-    allocate (character(len=l) :: a)
-    if (l > 0) call get_command_argument(k, a)
-  end function get_arg
-
-  function command_line() result(c)
-    character(len=:), allocatable :: c     !! the whole command line
-    integer :: l
-    call get_command(length=l)
-    allocate (character(len=l) :: c)
-    if (l > 0) call get_command(c)
-  end function command_line
-
   subroutine usage(u)
     integer, intent(in) :: u               !! output unit
     write (u, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]', &
@@ -144,8 +126,8 @@ contains
 
   subroutine die_usage(text)
     character(len=*), intent(in) :: text   !! what is wrong
-    write (error_unit, '(a)') 'landyn: '//text
-    write (error_unit, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]'
+    call write_usage_error(error_unit, 'landyn', text, &
+                           'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]')
     call terminate(1)
   end subroutine die_usage
 

@@ -11,17 +11,19 @@
 !! written; 5 stopped early (--stop-after) or merged summary incomplete.
 program landyn_batch
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem
   use landyn_campaign_tasks, only: exit_ok, check_campaign, list_cases, run_case_range, merge_summaries
   use landyn_campaign_parallel, only: batch_options_t, run_campaign
+  use landyn_process, only: terminate
   implicit none
 
   type(batch_options_t) :: opts
-  character(len=:), allocatable :: deck, arg, out_file, task, range_text
+  character(len=:), allocatable :: deck, arg, out_file, task, range_text, problem
   character(len=1024), allocatable :: inputs(:)
   integer :: i, n, code, k1, k2, ios, p
 
   deck = ''
+  problem = ''
   out_file = ''
   task = 'campaign'
   range_text = ''
@@ -35,10 +37,10 @@ program landyn_batch
     select case (arg)
     case ('-h', '--help')
       call usage(output_unit)
-      stop
+      call terminate(0)
     case ('-V', '--version')
-      write (output_unit, '(a)') 'landyn_batch '//landyn_version_string//' ('//landyn_git_revision//')'
-      stop
+      call write_version(output_unit, 'landyn_batch')
+      call terminate(0)
     case ('--resume')
       opts%resume = .true.
     case ('--force')
@@ -77,10 +79,8 @@ program landyn_batch
       end do
       i = n
     case default
-      if (len(arg) > 0) then
-        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
-      end if
-      if (len(deck) > 0) call die_usage('more than one deck given ('//deck//', '//arg//')')
+      problem = positional_arg_problem(arg, deck, 'deck')
+      if (len(problem) > 0) call die_usage(problem)
       deck = arg
     end select
   end do
@@ -120,15 +120,15 @@ program landyn_batch
   case (0)
     continue
   case (1)
-    error stop 1
+    call terminate(1)
   case (2)
-    error stop 2
+    call terminate(2)
   case (4)
-    error stop 4
+    call terminate(4)
   case (5)
-    stop 5   ! not an error: the summary is incomplete (--stop-after, or --merge with cases missing)
+    call terminate(5)   ! not an error: the summary is incomplete (--stop-after, or --merge with cases missing)
   case default
-    error stop 3
+    call terminate(3)
   end select
 
 contains
@@ -143,23 +143,6 @@ contains
   subroutine need_deck()
     if (len(deck) == 0) call die_usage('no campaign deck given')
   end subroutine need_deck
-
-  function get_arg(k) result(a)
-    integer, intent(in) :: k               !! argument index
-    character(len=:), allocatable :: a     !! the argument
-    integer :: l
-    call get_command_argument(k, length=l)
-    allocate (character(len=l) :: a)
-    if (l > 0) call get_command_argument(k, a)
-  end function get_arg
-
-  function command_line() result(c)
-    character(len=:), allocatable :: c     !! the whole command line
-    integer :: l
-    call get_command(length=l)
-    allocate (character(len=l) :: c)
-    if (l > 0) call get_command(c)
-  end function command_line
 
   subroutine usage(u)
     integer, intent(in) :: u               !! output unit
@@ -197,10 +180,9 @@ contains
 
   subroutine die_usage(text)
     character(len=*), intent(in) :: text   !! what is wrong
-    write (error_unit, '(a)') 'landyn_batch: '//text
-    write (error_unit, '(a)') 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... '// &
-      '(landyn_batch --help)'
-    error stop 1
+    call write_usage_error(error_unit, 'landyn_batch', text, &
+                           'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... (landyn_batch --help)')
+    call terminate(1)
   end subroutine die_usage
 
 end program landyn_batch

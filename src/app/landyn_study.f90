@@ -12,18 +12,20 @@ program landyn_study_main
   use landyn_input, only: input_errors_t
   use landyn_study, only: study_t, read_study, prepare_study, run_study, write_study_csv, write_study_h5, &
                           status_failed
-  use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_process, only: terminate
+  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
+                        write_input_errors
   implicit none
 
   type(study_t) :: study
   type(input_errors_t) :: errors
-  character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd
+  character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd, problem
   logical :: check_only, quiet
   integer :: i, n, stat, run_stat, c, v, progress
   character(len=msg_len) :: msg
 
   deck = ''
+  problem = ''
   h5_file = ''
   csv_file = ''
   check_only = .false.
@@ -38,7 +40,7 @@ program landyn_study_main
       call usage(output_unit)
       call terminate(0)
     case ('-V', '--version')
-      write (output_unit, '(a)') 'landyn_study '//landyn_version_string//' ('//landyn_git_revision//')'
+      call write_version(output_unit, 'landyn_study')
       call terminate(0)
     case ('--check')
       check_only = .true.
@@ -53,10 +55,8 @@ program landyn_study_main
       i = i + 1
       csv_file = get_arg(i)
     case default
-      if (len(arg) > 0) then
-        if (arg(1:1) == '-') call die_usage('unknown option '//arg)
-      end if
-      if (len(deck) > 0) call die_usage('more than one study deck given ('//deck//', '//arg//')')
+      problem = positional_arg_problem(arg, deck, 'study deck')
+      if (len(problem) > 0) call die_usage(problem)
       deck = arg
     end select
   end do
@@ -67,9 +67,7 @@ program landyn_study_main
   ! prepared also after errors in the study deck, to report every problem at once
   if (stat /= 2 .and. study%n_cases > 0 .and. study%n_variants > 0) call prepare_study(study, errors, i)
   if (stat /= 0 .or. errors%count() > 0) then
-    call errors%write(error_unit)
-    write (error_unit, '(a,i0,a)') 'landyn_study: ', errors%count(), ' input error(s); nothing was run and no file '// &
-      'was written'
+    call write_input_errors(error_unit, 'landyn_study', errors)
     call terminate(2)
   end if
   if (len(h5_file) == 0) h5_file = trim(study%output)
@@ -148,23 +146,6 @@ contains
     end do
   end subroutine write_table
 
-  function get_arg(k) result(a)
-    integer, intent(in) :: k               !! argument index
-    character(len=:), allocatable :: a     !! the argument
-    integer :: l
-    call get_command_argument(k, length=l)
-    allocate (character(len=l) :: a)
-    if (l > 0) call get_command_argument(k, a)
-  end function get_arg
-
-  function command_line() result(c_line)
-    character(len=:), allocatable :: c_line  !! the whole command line
-    integer :: l
-    call get_command(length=l)
-    allocate (character(len=l) :: c_line)
-    if (l > 0) call get_command(c_line)
-  end function command_line
-
   subroutine usage(u)
     integer, intent(in) :: u               !! output unit
     write (u, '(a)') 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]', &
@@ -188,8 +169,8 @@ contains
 
   subroutine die_usage(text)
     character(len=*), intent(in) :: text   !! what is wrong
-    write (error_unit, '(a)') 'landyn_study: '//text
-    write (error_unit, '(a)') 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]'
+    call write_usage_error(error_unit, 'landyn_study', text, &
+                           'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]')
     call terminate(1)
   end subroutine die_usage
 

@@ -7,10 +7,19 @@
 !! deck. Rules as for run decks (docs/input/README.md): `!` starts a comment outside quotes,
 !! a group ends with `/` (or `&end`), items are separated by commas, blanks or line ends.
 !!
+!! The comment stripping, group and item scanning are those of the run-deck reader
+!! (landyn_namelist_text); lower_case, edit_distance, is_blank_char, int_text, quote_text and
+!! one_line_text are re-exported from landyn_strings and landyn_namelist_text for the campaign
+!! modules.
+!!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_nml
   use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
+  use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
+  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
+                                  find_item_names, line_of, first_nonblank, one_line_text, &
+                                  separators_to_blanks, remove_blanks
   implicit none
   private
 
@@ -76,11 +85,7 @@ contains
         p = e
         cycle
       end if
-      q = p + 1
-      do while (q <= n)
-        if (.not. is_ident_char(work(q:q))) exit
-        q = q + 1
-      end do
+      q = group_name_end(work, p)
       call find_group_end(work, q, e, terminated, next_p)
       allocate (tmp(ng + 1))
       if (ng > 0) tmp(1:ng) = groups
@@ -109,27 +114,9 @@ contains
     type(nml_group_t), intent(inout) :: group        !! group whose items are filled [-]
     type(input_errors_t), intent(inout) :: errors    !! problems are appended here [-]
     integer, allocatable :: starts(:), eqs(:)
-    character(len=1) :: quote
-    integer :: p, k, s, nitems, item_end, depth, nvalid
+    integer :: p, k, nitems, item_end, nvalid
 
-    allocate (starts(0), eqs(0))
-    quote = ' '
-    depth = 0
-    do p = b0, b1
-      if (quote /= ' ') then
-        if (work(p:p) == quote) quote = ' '
-      else if (work(p:p) == '"' .or. work(p:p) == "'") then
-        quote = work(p:p)
-      else if (work(p:p) == '(') then
-        depth = depth + 1
-      else if (work(p:p) == ')') then
-        depth = max(0, depth - 1)
-      else if (work(p:p) == '=' .and. depth == 0) then
-        s = name_start(work, b0, p)
-        starts = [starts, s]
-        eqs = [eqs, p]
-      end if
-    end do
+    call find_item_names(work, b0, b1, .true., starts, eqs)
     nitems = size(starts)
     item_end = b1
     if (nitems > 0) item_end = starts(1) - 1
@@ -166,166 +153,7 @@ contains
     group%n_items = nvalid
   end subroutine split_items
 
-  !> Start of the variable name (with optional subscript) that ends just before the '=' at eq;
-  !! eq itself when there is no name.
-  pure function name_start(work, b0, eq) result(s)
-    character(len=*), intent(in) :: work  !! comment-free text [-]
-    integer, intent(in) :: b0             !! first position of the group body [-]
-    integer, intent(in) :: eq             !! position of the '=' [-]
-    integer :: s                          !! start of the name [-]
-    integer :: p, depth
-    p = eq - 1
-    do while (p >= b0)
-      if (.not. is_blank_char(work(p:p))) exit
-      p = p - 1
-    end do
-    if (p >= b0) then
-      if (work(p:p) == ')') then
-        depth = 0
-        do while (p >= b0)
-          if (work(p:p) == ')') depth = depth + 1
-          if (work(p:p) == '(') depth = depth - 1
-          if (depth == 0) exit
-          p = p - 1
-        end do
-        p = p - 1
-        do while (p >= b0)
-          if (.not. is_blank_char(work(p:p))) exit
-          p = p - 1
-        end do
-      end if
-    end if
-    s = p + 1
-    do while (p >= b0)
-      if (.not. is_ident_char(work(p:p))) exit
-      s = p
-      p = p - 1
-    end do
-    if (s > eq - 1) then
-      s = eq
-    else if (.not. is_letter(work(s:s))) then
-      s = eq
-    end if
-  end function name_start
-
-  !> Copy of text with `!` comments outside quotes blanked; qpos > 0 marks an unclosed quote.
-  pure subroutine strip_comments(text, work, qpos)
-    character(len=*), intent(in) :: text             !! text [-]
-    character(len=len(text)), intent(out) :: work    !! text without comments [-]
-    integer, intent(out) :: qpos                     !! position of an unclosed quote, 0 if none [-]
-    character(len=1) :: quote
-    integer :: p
-    logical :: in_comment
-    work = text
-    quote = ' '
-    qpos = 0
-    in_comment = .false.
-    do p = 1, len(text)
-      if (in_comment) then
-        if (text(p:p) == new_line('a')) then
-          in_comment = .false.
-        else
-          work(p:p) = ' '
-        end if
-      else if (quote /= ' ') then
-        if (text(p:p) == quote) quote = ' '
-      else if (text(p:p) == '!') then
-        in_comment = .true.
-        work(p:p) = ' '
-      else if (text(p:p) == '"' .or. text(p:p) == "'") then
-        quote = text(p:p)
-        qpos = p
-      end if
-    end do
-    if (quote == ' ') qpos = 0
-  end subroutine strip_comments
-
-  !> Position of the next '&' outside quotes at or after p (len+1 if none).
-  pure function next_ampersand(work, p) result(e)
-    character(len=*), intent(in) :: work  !! comment-free text [-]
-    integer, intent(in) :: p              !! start position [-]
-    integer :: e                          !! position [-]
-    character(len=1) :: quote
-    quote = ' '
-    do e = p, len(work)
-      if (quote /= ' ') then
-        if (work(e:e) == quote) quote = ' '
-      else if (work(e:e) == '"' .or. work(e:e) == "'") then
-        quote = work(e:e)
-      else if (work(e:e) == '&') then
-        return
-      end if
-    end do
-    e = len(work) + 1
-  end function next_ampersand
-
-  !> End of a group body starting at q: the first '/' outside quotes or '&end' (terminated), or
-  !! the next '&' or the end of the text (not terminated).
-  pure subroutine find_group_end(work, q, e, terminated, next_p)
-    character(len=*), intent(in) :: work  !! comment-free text [-]
-    integer, intent(in) :: q              !! first position of the body [-]
-    integer, intent(out) :: e             !! position after the body [-]
-    logical, intent(out) :: terminated    !! a terminator was found [-]
-    integer, intent(out) :: next_p        !! where scanning continues [-]
-    character(len=1) :: quote
-    integer :: n
-    n = len(work)
-    quote = ' '
-    e = q
-    terminated = .false.
-    next_p = n + 1
-    do while (e <= n)
-      if (quote /= ' ') then
-        if (work(e:e) == quote) quote = ' '
-      else if (work(e:e) == '"' .or. work(e:e) == "'") then
-        quote = work(e:e)
-      else if (work(e:e) == '/') then
-        terminated = .true.
-        next_p = e + 1
-        return
-      else if (work(e:e) == '&') then
-        if (e + 3 <= n) then
-          if (lower_case(work(e + 1:e + 3)) == 'end') then
-            terminated = .true.
-            if (e + 4 <= n) terminated = .not. is_ident_char(work(e + 4:e + 4))
-            if (terminated) then
-              next_p = e + 4
-              return
-            end if
-          end if
-        end if
-        next_p = e
-        return
-      end if
-      e = e + 1
-    end do
-    e = n + 1
-  end subroutine find_group_end
-
   ! ================================================================ small text helpers
-
-  !> Line number (1-based) of position p.
-  pure function line_of(work, p) result(line)
-    character(len=*), intent(in) :: work  !! text [-]
-    integer, intent(in) :: p              !! position [-]
-    integer :: line                       !! line number [-]
-    integer :: i
-    line = 1
-    do i = 1, min(p, len(work) + 1) - 1
-      if (work(i:i) == new_line('a')) line = line + 1
-    end do
-  end function line_of
-
-  pure function first_nonblank(work, p) result(q)
-    character(len=*), intent(in) :: work  !! text [-]
-    integer, intent(in) :: p              !! start position [-]
-    integer :: q                          !! first non-blank position at or after p [-]
-    q = p
-    do while (q < len(work))
-      if (.not. is_blank_char(work(q:q))) exit
-      q = q + 1
-    end do
-  end function first_nonblank
 
   !> Value text: on one line, blanks collapsed outside quotes, trailing commas and blanks removed.
   pure function trim_value(t) result(s)
@@ -338,37 +166,6 @@ contains
     end do
   end function trim_value
 
-  !> Text with every blank character (tab, line end, ...) made a space.
-  pure function one_line_text(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! same length, blanks normalised [-]
-    integer :: i
-    s = t
-    do i = 1, len(s)
-      if (is_blank_char(s(i:i))) s(i:i) = ' '
-    end do
-  end function one_line_text
-
-  pure function separators_to_blanks(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! commas and blank characters made spaces [-]
-    integer :: i
-    s = one_line_text(t)
-    do i = 1, len(s)
-      if (s(i:i) == ',') s(i:i) = ' '
-    end do
-  end function separators_to_blanks
-
-  pure function remove_blanks(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=:), allocatable :: s  !! t without blank characters [-]
-    integer :: i
-    s = ''
-    do i = 1, len(t)
-      if (.not. is_blank_char(t(i:i))) s = s//t(i:i)
-    end do
-  end function remove_blanks
-
   !> Compact excerpt for messages.
   pure function snippet(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
@@ -376,27 +173,6 @@ contains
     s = trim_value(t)
     if (len(s) > snippet_len) s = s(1:snippet_len - 3)//'...'
   end function snippet
-
-  !> Text in lower case (ASCII).
-  pure function lower_case(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=len(t)) :: s          !! lower-case copy [-]
-    integer :: i, c
-    s = t
-    do i = 1, len(t)
-      c = iachar(t(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) s(i:i) = achar(c + 32)
-    end do
-  end function lower_case
-
-  !> Integer as text.
-  pure function int_text(i) result(s)
-    integer, intent(in) :: i            !! value [-]
-    character(len=:), allocatable :: s  !! decimal text [-]
-    character(len=12) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function int_text
 
   !> Real with 17 significant digits: reading it back gives the same binary value.
   pure function real_text(x) result(s)
@@ -452,38 +228,6 @@ contains
     end if
   end function real_text_short
 
-  !> Text in single quotes, inner quotes doubled.
-  pure function quote_text(t) result(s)
-    character(len=*), intent(in) :: t   !! text [-]
-    character(len=:), allocatable :: s  !! 'text' [-]
-    integer :: i
-    s = "'"
-    do i = 1, len(t)
-      if (t(i:i) == "'") then
-        s = s//"''"
-      else
-        s = s//t(i:i)
-      end if
-    end do
-    s = s//"'"
-  end function quote_text
-
-  !> Levenshtein distance.
-  pure function edit_distance(a, b) result(d)
-    character(len=*), intent(in) :: a, b  !! strings [-]
-    integer :: d                          !! single-character edits [-]
-    integer :: prev(0:len(b)), cur(0:len(b)), i, j
-    prev = [(j, j = 0, len(b))]
-    do i = 1, len(a)
-      cur(0) = i
-      do j = 1, len(b)
-        cur(j) = min(prev(j) + 1, cur(j - 1) + 1, prev(j - 1) + merge(0, 1, a(i:i) == b(j:j)))
-      end do
-      prev = cur
-    end do
-    d = prev(len(b))
-  end function edit_distance
-
   !> "; did you mean 'xxx'?" for the closest of `names` when close enough, else ''.
   pure function close_name_hint(name, names) result(s)
     character(len=*), intent(in) :: name      !! unknown name [-]
@@ -502,24 +246,6 @@ contains
     s = ''
     if (best > 0 .and. best_d <= max(2, len(name)/3)) s = "; did you mean '"//trim(names(best))//"'?"
   end function close_name_hint
-
-  elemental function is_blank_char(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! space, tab, line end, carriage return or form feed [-]
-    yes = c == ' ' .or. c == achar(9) .or. c == achar(10) .or. c == achar(13) .or. c == achar(12)
-  end function is_blank_char
-
-  elemental function is_letter(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! an ASCII letter [-]
-    yes = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
-  end function is_letter
-
-  elemental function is_ident_char(c) result(yes)
-    character(len=1), intent(in) :: c  !! character [-]
-    logical :: yes                     !! letter, digit, '_' or '%' [-]
-    yes = is_letter(c) .or. (c >= '0' .and. c <= '9') .or. c == '_' .or. c == '%'
-  end function is_ident_char
 
   ! ================================================================ paths
 

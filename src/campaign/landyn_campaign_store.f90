@@ -18,8 +18,8 @@ module landyn_campaign_store
   use landyn_kinds, only: wp, ip, msg_len
   use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_output, only: iso_timestamp
-  use landyn_h5, only: h5_file_t, h5_create, h5_open_read, h5_close, h5_write, h5_write_attr, h5_read, &
-                       h5_read_attr, h5_exists, rename_file, delete_file
+  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_open_read, h5_close, h5_write, &
+                       h5_write_attr, h5_read, h5_read_attr, h5_exists
   use landyn_campaign_nml, only: int_text, real_text_short
   use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
   use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row, status_ok
@@ -222,25 +222,10 @@ contains
     integer, intent(out) :: stat                  !! 0 ok [-]
     character(len=*), intent(inout) :: errmsg     !! message on failure [-]
     type(h5_file_t) :: f
-    character(len=:), allocatable :: tmp
-    integer :: st2
-    character(len=msg_len) :: m2
-    tmp = trim(path)//'.partial'
-    call h5_create(f, tmp, stat, errmsg)
+    call h5_create_partial(f, path, stat, errmsg)
     if (stat /= 0) return
     call write_contents(f, meta, rows, command_line, stat, errmsg)
-    if (stat /= 0) then
-      call h5_close(f, st2, m2)
-      call delete_file(tmp, st2, m2)
-      return
-    end if
-    call h5_close(f, stat, errmsg)
-    if (stat /= 0) then
-      call delete_file(tmp, st2, m2)
-      return
-    end if
-    call rename_file(tmp, trim(path), stat, errmsg)
-    if (stat /= 0) call delete_file(tmp, st2, m2)
+    call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_summary
 
   subroutine write_contents(f, meta, rows, command_line, stat, errmsg)

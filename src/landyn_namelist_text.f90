@@ -1,0 +1,254 @@
+!> Namelist text splitting shared by the run-deck reader (landyn_input) and the campaign reader
+!! (landyn_campaign_nml): comment stripping, quote-aware scanning for groups and their ends,
+!! finding the `name =` of each item, and the small position/blank helpers they need.
+!! Rules as in docs/input/README.md: `!` starts a comment outside quotes, a group is `&name ... /`
+!! (or `... &end`), items are `name = value` separated by commas, blanks or line ends.
+!!
+!! Library code: nothing here stops or prints; every procedure is pure.
+module landyn_namelist_text
+  use landyn_strings, only: lower_case, is_blank_char, is_letter, is_ident_char
+  implicit none
+  private
+
+  public :: strip_comments, next_ampersand, group_name_end, find_group_end, find_item_names, name_start
+  public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
+
+contains
+
+  !> Copy of text with `!` comments (outside quotes) blanked; line ends kept. qpos > 0 is the
+  !! position of an opening quote that is never closed.
+  pure subroutine strip_comments(text, work, qpos)
+    character(len=*), intent(in) :: text             !! namelist text [-]
+    character(len=len(text)), intent(out) :: work    !! text without comments [-]
+    integer, intent(out) :: qpos                     !! unterminated quote position, 0 if none [-]
+    character(len=1) :: quote
+    integer :: p
+    logical :: in_comment
+    work = text
+    quote = ' '
+    qpos = 0
+    in_comment = .false.
+    do p = 1, len(text)
+      if (in_comment) then
+        if (text(p:p) == new_line('a')) then
+          in_comment = .false.
+        else
+          work(p:p) = ' '
+        end if
+      else if (quote /= ' ') then
+        if (text(p:p) == quote) quote = ' '
+      else if (text(p:p) == '!') then
+        in_comment = .true.
+        work(p:p) = ' '
+      else if (text(p:p) == '"' .or. text(p:p) == "'") then
+        quote = text(p:p)
+        qpos = p
+      end if
+    end do
+    if (quote == ' ') qpos = 0
+  end subroutine strip_comments
+
+  !> Position of the next '&' outside quotes at or after p (len+1 if none).
+  pure function next_ampersand(work, p) result(e)
+    character(len=*), intent(in) :: work  !! comment-free text [-]
+    integer, intent(in) :: p              !! start position [-]
+    integer :: e                          !! position [-]
+    character(len=1) :: quote
+    quote = ' '
+    do e = p, len(work)
+      if (quote /= ' ') then
+        if (work(e:e) == quote) quote = ' '
+      else if (work(e:e) == '"' .or. work(e:e) == "'") then
+        quote = work(e:e)
+      else if (work(e:e) == '&') then
+        return
+      end if
+    end do
+    e = len(work) + 1
+  end function next_ampersand
+
+  !> Position after the group name of the '&' at p: the name is work(p+1:q-1) (empty if none).
+  pure function group_name_end(work, p) result(q)
+    character(len=*), intent(in) :: work  !! comment-free text [-]
+    integer, intent(in) :: p              !! position of the '&' [-]
+    integer :: q                          !! first position after the name [-]
+    q = p + 1
+    do while (q <= len(work))
+      if (.not. is_ident_char(work(q:q))) exit
+      q = q + 1
+    end do
+  end function group_name_end
+
+  !> Find the end of a group body starting at position q: the first '/' outside quotes, or
+  !! '&end' (terminated), or the next '&' or the end of the text (not terminated).
+  pure subroutine find_group_end(work, q, e, terminated, next_p)
+    character(len=*), intent(in) :: work  !! comment-free text [-]
+    integer, intent(in) :: q              !! first position of the body [-]
+    integer, intent(out) :: e             !! position after the body (terminator or next group) [-]
+    logical, intent(out) :: terminated    !! a terminator was found [-]
+    integer, intent(out) :: next_p        !! where scanning continues [-]
+    character(len=1) :: quote
+    integer :: n
+    n = len(work)
+    quote = ' '
+    e = q
+    terminated = .false.
+    next_p = n + 1
+    do while (e <= n)
+      if (quote /= ' ') then
+        if (work(e:e) == quote) quote = ' '
+      else if (work(e:e) == '"' .or. work(e:e) == "'") then
+        quote = work(e:e)
+      else if (work(e:e) == '/') then
+        terminated = .true.
+        next_p = e + 1
+        return
+      else if (work(e:e) == '&') then
+        if (e + 3 <= n) then
+          if (lower_case(work(e + 1:e + 3)) == 'end') then
+            if (e + 4 > n) then
+              terminated = .true.
+            else
+              terminated = .not. is_ident_char(work(e + 4:e + 4))
+            end if
+            if (terminated) then
+              next_p = e + 4
+              return
+            end if
+          end if
+        end if
+        next_p = e
+        return
+      end if
+      e = e + 1
+    end do
+    e = n + 1
+  end subroutine find_group_end
+
+  !> Every '=' outside quotes in the group body work(b0:b1) (with skip_parens, only those outside
+  !! parentheses too) and the start of the variable name before it (see name_start).
+  pure subroutine find_item_names(work, b0, b1, skip_parens, starts, eqs)
+    character(len=*), intent(in) :: work              !! comment-free text [-]
+    integer, intent(in) :: b0, b1                     !! the body is work(b0:b1) [-]
+    logical, intent(in) :: skip_parens                !! ignore '=' inside parentheses [-]
+    integer, allocatable, intent(out) :: starts(:)    !! start of each item's name (= eqs when none) [-]
+    integer, allocatable, intent(out) :: eqs(:)       !! position of each item's '=' [-]
+    character(len=1) :: quote
+    integer :: p, s, depth
+    allocate (starts(0), eqs(0))
+    quote = ' '
+    depth = 0
+    do p = b0, b1
+      if (quote /= ' ') then
+        if (work(p:p) == quote) quote = ' '
+      else if (work(p:p) == '"' .or. work(p:p) == "'") then
+        quote = work(p:p)
+      else if (skip_parens .and. work(p:p) == '(') then
+        depth = depth + 1
+      else if (skip_parens .and. work(p:p) == ')') then
+        depth = max(0, depth - 1)
+      else if (work(p:p) == '=' .and. depth == 0) then
+        s = name_start(work, b0, p)
+        starts = [starts, s]
+        eqs = [eqs, p]
+      end if
+    end do
+  end subroutine find_item_names
+
+  !> Start of the variable name (with optional subscript) that ends just before the '=' at eq.
+  !! Returns eq itself when there is no name.
+  pure function name_start(work, b0, eq) result(s)
+    character(len=*), intent(in) :: work  !! comment-free text [-]
+    integer, intent(in) :: b0             !! first position of the group body [-]
+    integer, intent(in) :: eq             !! position of the '=' [-]
+    integer :: s                          !! start of the name [-]
+    integer :: p, depth
+    p = eq - 1
+    do while (p >= b0)
+      if (.not. is_blank_char(work(p:p))) exit
+      p = p - 1
+    end do
+    if (p >= b0) then
+      if (work(p:p) == ')') then
+        depth = 0
+        do while (p >= b0)
+          if (work(p:p) == ')') depth = depth + 1
+          if (work(p:p) == '(') depth = depth - 1
+          if (depth == 0) exit
+          p = p - 1
+        end do
+        p = p - 1
+        do while (p >= b0)
+          if (.not. is_blank_char(work(p:p))) exit
+          p = p - 1
+        end do
+      end if
+    end if
+    s = p + 1
+    do while (p >= b0)
+      if (.not. is_ident_char(work(p:p))) exit
+      s = p
+      p = p - 1
+    end do
+    if (s > eq - 1) then
+      s = eq
+    else if (.not. is_letter(work(s:s))) then
+      s = eq
+    end if
+  end function name_start
+
+  !> Line number (1-based) of position p.
+  pure function line_of(work, p) result(line)
+    character(len=*), intent(in) :: work  !! text [-]
+    integer, intent(in) :: p              !! position [-]
+    integer :: line                       !! 1-based line number [-]
+    integer :: i
+    line = 1
+    do i = 1, min(p, len(work) + 1) - 1
+      if (work(i:i) == new_line('a')) line = line + 1
+    end do
+  end function line_of
+
+  pure function first_nonblank(work, p) result(q)
+    character(len=*), intent(in) :: work  !! text [-]
+    integer, intent(in) :: p              !! start position [-]
+    integer :: q                          !! first non-blank position at or after p [-]
+    q = p
+    do while (q < len(work))
+      if (.not. is_blank_char(work(q:q))) exit
+      q = q + 1
+    end do
+  end function first_nonblank
+
+  !> Text on one line: every blank character (tab, line end, ...) made a space.
+  pure function one_line_text(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=len(t)) :: s          !! same length, blanks normalised [-]
+    integer :: i
+    s = t
+    do i = 1, len(s)
+      if (is_blank_char(s(i:i))) s(i:i) = ' '
+    end do
+  end function one_line_text
+
+  pure function separators_to_blanks(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=len(t)) :: s          !! t with commas and blank characters made spaces [-]
+    integer :: i
+    s = one_line_text(t)
+    do i = 1, len(s)
+      if (s(i:i) == ',') s(i:i) = ' '
+    end do
+  end function separators_to_blanks
+
+  pure function remove_blanks(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=:), allocatable :: s  !! t without blank characters [-]
+    integer :: i
+    s = ''
+    do i = 1, len(t)
+      if (.not. is_blank_char(t(i:i))) s = s//t(i:i)
+    end do
+  end function remove_blanks
+
+end module landyn_namelist_text

@@ -1,0 +1,91 @@
+!> Small ASCII text helpers shared by the input readers and the law factories: case folding,
+!! character classes, integers and quoted text for messages, and the edit distance used for
+!! "did you mean" hints.
+!!
+!! Library code: nothing here stops or prints; every procedure is pure.
+module landyn_strings
+  implicit none
+  private
+
+  public :: lower_case, is_blank_char, is_letter, is_digit, is_ident_char, edit_distance, int_text, quote_text
+
+contains
+
+  !> Text in lower case (ASCII letters only).
+  elemental function lower_case(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=len(t)) :: s          !! t in lower case [-]
+    integer :: i, c
+    s = t
+    do i = 1, len(t)
+      c = iachar(t(i:i))
+      if (c >= iachar('A') .and. c <= iachar('Z')) s(i:i) = achar(c + 32)
+    end do
+  end function lower_case
+
+  elemental function is_blank_char(c) result(yes)
+    character(len=1), intent(in) :: c  !! character [-]
+    logical :: yes                     !! space, tab, line end, carriage return or form feed [-]
+    yes = c == ' ' .or. c == achar(9) .or. c == achar(10) .or. c == achar(13) .or. c == achar(12)
+  end function is_blank_char
+
+  elemental function is_letter(c) result(yes)
+    character(len=1), intent(in) :: c  !! character [-]
+    logical :: yes                     !! an ASCII letter [-]
+    yes = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
+  end function is_letter
+
+  elemental function is_digit(c) result(yes)
+    character(len=1), intent(in) :: c  !! character [-]
+    logical :: yes                     !! 0..9 [-]
+    yes = c >= '0' .and. c <= '9'
+  end function is_digit
+
+  elemental function is_ident_char(c) result(yes)
+    character(len=1), intent(in) :: c  !! character [-]
+    logical :: yes                     !! may appear in a Fortran name (or a % component reference) [-]
+    yes = is_letter(c) .or. is_digit(c) .or. c == '_' .or. c == '%'
+  end function is_ident_char
+
+  !> Integer as text.
+  pure function int_text(i) result(s)
+    integer, intent(in) :: i            !! value [-]
+    character(len=:), allocatable :: s  !! decimal text [-]
+    character(len=12) :: buf
+    write (buf, '(i0)') i
+    s = trim(buf)
+  end function int_text
+
+  !> Text in single quotes, inner quotes doubled.
+  pure function quote_text(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=:), allocatable :: s  !! 'text' [-]
+    integer :: i
+    s = "'"
+    do i = 1, len(t)
+      if (t(i:i) == "'") then
+        s = s//"''"
+      else
+        s = s//t(i:i)
+      end if
+    end do
+    s = s//"'"
+  end function quote_text
+
+  !> Levenshtein distance between two strings.
+  pure function edit_distance(a, b) result(d)
+    character(len=*), intent(in) :: a, b  !! strings [-]
+    integer :: d                          !! number of single-character edits [-]
+    integer :: prev(0:len(b)), cur(0:len(b)), i, j
+    prev = [(j, j = 0, len(b))]
+    do i = 1, len(a)
+      cur(0) = i
+      do j = 1, len(b)
+        cur(j) = min(prev(j) + 1, cur(j - 1) + 1, prev(j - 1) + merge(0, 1, a(i:i) == b(j:j)))
+      end do
+      prev = cur
+    end do
+    d = prev(len(b))
+  end function edit_distance
+
+end module landyn_strings
