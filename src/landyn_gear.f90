@@ -47,14 +47,14 @@ module landyn_gear
   public :: gear_t, strut_mass_t, buffer_slot_t
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
-  public :: gear_relative_momenta
+  public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle
+  public :: max_rows
   public :: n_q, n_phi
 
   integer, parameter :: n_q = 9      !! generalized coordinates per gear
   integer, parameter :: n_phi = 6    !! holonomic constraints per gear
-  integer, parameter :: max_rows = n_phi + 3
+  integer, parameter :: max_rows = n_phi + 3   !! constraint rows per gear at most (Phi_q and three locks)
   integer, parameter :: idx_len(3) = [1, 4, 7]   !! index of each strut's length in q
-  real(wp), parameter :: impulse_tol = 1.0e-9_wp  !! velocity change [m/s, rad/s] below which a correction exchanges no impulse
 
   !> Mass properties of one strut.
   type :: strut_mass_t
@@ -101,15 +101,6 @@ module landyn_gear
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
     logical :: phq_ok = .false.                   !! phq was evaluated at phq_q
     real(wp) :: phq_q(n_q) = 0.0_wp               !! the q at which phq was evaluated [m, rad]
-    ! Relative momenta of the leg parts just before and after Step 4's correction in gear_integrate:
-    ! the correction (a strut locking or meeting a rigid stop is a plastic impact) changes them, and
-    ! the caller passes the opposite impulse to the body so that momentum is conserved.
-    real(wp) :: p_pre(3) = 0.0_wp                 !! sum m v_rel before the correction, gear frame [kg m/s]
-    real(wp) :: p_post(3) = 0.0_wp                !! ... after [kg m/s]
-    real(wp) :: h_pre(3) = 0.0_wp                 !! relative angular momentum about O_L before, gear axes [kg m^2/s]
-    real(wp) :: h_post(3) = 0.0_wp                !! ... after [kg m^2/s]
-    real(wp) :: t_pre = 0.0_wp                    !! relative kinetic energy before [J]
-    real(wp) :: t_post = 0.0_wp                   !! ... after [J]
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.
@@ -318,12 +309,21 @@ contains
 
   !> Accelerations, buffer forces and the force on the body for the current state (Steps 2-4).
   !! f_foot is the ground force on the footpad and f_field the uniform field, both in the gear frame.
-  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg)
+  !!
+  !! With `dt` present the lock decision is made at velocity level over the coming step (Moreau's
+  !! time-stepping reading of the complementarity): a crushing strut whose sliding speed would
+  !! reverse within the step is locked now with the lock row demanding sd(t + dt) = 0, and it stays
+  !! locked when the force that needs lies within the buffer's bounds. The strut then stops exactly
+  !! at the end of the step instead of overshooting under its full crush force and being stopped by
+  !! the velocity projection, which made the modes chatter (crushing -> locked -> free every few
+  !! steps) and the projection dissipate energy that the crush work had not accounted for.
+  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt)
     type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
@@ -331,7 +331,7 @@ contains
     real(wp) :: f_rel(3), m_rel(3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
-    logical :: changed, done
+    logical :: changed, done, tried(3), released(3)
 
     stat = 0
     ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
@@ -372,6 +372,8 @@ contains
       end if
     end do
 
+    tried = .false.
+    released = .false.
     do iter = 1, 8
       ! Assemble A = [Phi_q; lock rows], b = [gamma; 0] and the generalized force.
       q_buf = 0.0_wp
@@ -385,6 +387,7 @@ contains
           a(nrow, :) = 0.0_wp
           a(nrow, idx_len(k)) = 1.0_wp
           b(nrow) = 0.0_wp
+          if (present(dt)) b(nrow) = -gear%qd(idx_len(k))/dt   ! stop at the end of the step
           row_of(k) = nrow
         else
           q_buf(idx_len(k)) = gear%axial(k)
@@ -395,6 +398,21 @@ contains
       if (stat /= 0) return
       ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
       changed = .false.
+      if (present(dt)) then
+        ! A crushing strut (nonzero bound in its direction of motion) that would reverse within
+        ! the step is locked for the step, to be checked against its bounds below.
+        do k = 1, 3
+          if (gear%locked(k) .or. released(k)) cycle
+          if (gear%dir(k) > 0 .and. fpos(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%qdd(idx_len(k))*dt <= 0.0_wp &
+              .or. gear%dir(k) < 0 .and. fneg(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%qdd(idx_len(k))*dt >= 0.0_wp) then
+            gear%locked(k) = .true.
+            gear%s_lock(k) = s(k)
+            tried(k) = .true.
+            changed = .true.
+          end if
+        end do
+        if (changed) cycle
+      end if
       do k = 1, 3
         if (.not. gear%locked(k)) cycle
         gear%axial(k) = -lam(row_of(k))
@@ -412,6 +430,7 @@ contains
           gear%axial(k) = gear%sigma(k)*fneg(k)
           changed = .true.
         end if
+        if (.not. gear%locked(k) .and. tried(k)) released(k) = .true.
       end do
       if (.not. changed) exit
     end do
@@ -656,9 +675,13 @@ contains
     lam(1:nrow) = rhs(n_q + 1:n)
   end subroutine gear_solve_augmented_full
 
-  !> Advances the gear one step (semi-implicit Euler) and applies the direct constraint-violation
-  !! correction (positions, then velocities). Updates the crush history and the absorbed work.
-  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg)
+  !> Advances the gear one step (semi-implicit Euler), decides the crush modes at the end of the
+  !! step, applies the direct position correction of Step 4 and updates the crush history and the
+  !! absorbed work. The velocity correction (Step 4's second half) is a plastic impact of the whole
+  !! system and is done by the caller for all gears and the body together (landyn_impact); for a
+  !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
+  !! kinetic metric (used by the unit tests of a free gear).
+  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity)
     type(gear_t), intent(inout) :: gear          !! gear
     real(wp), intent(in) :: dt                   !! time step [s]
     real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
@@ -666,18 +689,14 @@ contains
     real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), qd_pre(n_q)
-    type(strut_kin_t) :: sk(3)
-    real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg
-    integer :: k, iter, nrow
+    logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q)
+    real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg, mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
+    integer :: k, iter, nrow, i, j
     character(len=msg_len) :: buf
 
     stat = 0
-    if (gear%rigid .and. all(gear%locked)) then   ! no degree of freedom: nothing moves
-      gear%p_pre = 0.0_wp; gear%p_post = 0.0_wp; gear%h_pre = 0.0_wp; gear%h_post = 0.0_wp
-      gear%t_pre = 0.0_wp; gear%t_post = 0.0_wp
-      return
-    end if
+    if (gear%rigid .and. all(gear%locked)) return   ! no degree of freedom: nothing moves
     gear%rigid = .false.
     call strokes(gear, gear%q, gear%qd, s0, sd0)
     qd_new = gear%qd + gear%qdd*dt
@@ -733,57 +752,83 @@ contains
       return
     end if
     gear%max_violation = max(gear%max_violation, viol)
-    qd_pre = gear%qd
-    ! Velocity correction: A qdot = 0 (constraints are scleronomic; locks hold the stroke rate at 0).
-    ! |A qdot| <= row_bound * sum|qdot|: when that bound is below the tolerance nothing is to do.
-    if (gear%row_bound*sum(abs(gear%qd)) > tol) then
-      call build_rows(gear, gear%q, a, nrow)
-      gear%phq = a(1:n_phi, :)
-      gear%phq_q = gear%q
-      gear%phq_ok = .true.
-      do iter = 1, max_iter
-        call row_products(nrow, a, gear%qd, r)
-        if (maxval(abs(r(1:nrow))) <= tol) exit
-        call min_norm_correction(nrow, a, r, gear%qd, stat, errmsg)
-        if (stat /= 0) return
-      end do
-      call row_products(nrow, a, gear%qd, r)
-      if (maxval(abs(r(1:nrow))) > tol) then
-        stat = 3
-        write (buf, '(a,es10.3,a)') 'velocity constraint correction did not converge (violation ', &
-          maxval(abs(r(1:nrow))), ' m/s)'
-        errmsg = buf
-        return
-      end if
-    end if
-    ! Crush history.
+    ! Crush history (positions only).
     call strokes(gear, gear%q, gear%qd, s1, sd1)
     gear%s_hismax = max(gear%s_hismax, s1)
     gear%s_hismin = min(gear%s_hismin, s1)
-    ! All struts locked: A (Phi_q and three lock rows) is square and regular, so A qd = 0 means
-    ! qd = 0 exactly; the gear becomes rigid.
-    if (all(gear%locked)) then
+
+    if (present(velocity)) then
+      if (velocity) then
+        ! Gear alone, body fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd (kinetic metric).
+        call build_rows(gear, gear%q, a, nrow)
+        call row_products(nrow, a, gear%qd, r)
+        if (maxval(abs(r(1:nrow))) > 0.0_wp) then
+          mdiag = gear_mass_matrix(gear, gear%q)
+          do j = 1, nrow
+            do i = 1, j
+              w(i, j) = sum(a(i, :)*a(j, :)/mdiag)
+            end do
+          end do
+          lam(1:nrow) = r(1:nrow)
+          call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
+          if (stat /= 0) return
+          do i = 1, nrow
+            gear%qd = gear%qd - lam(i)*a(i, :)/mdiag
+          end do
+        end if
+        call gear_settle(gear)
+      end if
+    end if
+  end subroutine gear_integrate
+
+  !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
+  !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.
+  pure subroutine gear_settle(gear)
+    type(gear_t), intent(inout) :: gear    !! gear after the velocity projection
+    if (all(gear%locked) .and. .not. gear%rigid) then
       gear%qd = 0.0_wp
       gear%qdd = 0.0_wp
       gear%rigid = .true.
       gear%rigid_cache = .false.
     end if
-    ! Momenta before and after the velocity correction, both with the corrected configuration's
-    ! kinematics (the position correction moves q by at most the tolerance).
-    ! Corrections that change no velocity by more than impulse_tol (the routine 1e-10-level
-    ! projections of smooth motion; momentum changes below ~1e-7 N s) are not exchanged.
-    if (maxval(abs(gear%qd - qd_pre)) > impulse_tol) then
-      call strut_kinematics(gear, gear%q, sk)
-      call momenta(gear, sk, qd_pre, gear%p_pre, gear%h_pre, gear%t_pre)
-      call momenta(gear, sk, gear%qd, gear%p_post, gear%h_post, gear%t_post)
-    else
-      gear%p_pre = 0.0_wp; gear%p_post = 0.0_wp; gear%h_pre = 0.0_wp; gear%h_post = 0.0_wp
-      gear%t_pre = 0.0_wp; gear%t_post = 0.0_wp
-    end if
-  end subroutine gear_integrate
+  end subroutine gear_settle
+
+  !> Velocity constraint rows of the gear at its current configuration: Phi_q and one row per
+  !! locked strut (its stroke rate held at zero). A qd = 0 is the velocity constraint.
+  pure subroutine gear_velocity_rows(gear, a, nrow)
+    type(gear_t), intent(in) :: gear           !! gear
+    real(wp), intent(out) :: a(max_rows, n_q)  !! rows [m/rad, -]
+    integer, intent(out) :: nrow               !! number of rows [-]
+    call build_rows(gear, gear%q, a, nrow)
+  end subroutine gear_velocity_rows
+
+  !> Linear maps from the generalized velocities to the legs' relative linear momentum and their
+  !! relative angular momentum about the lander origin, both in gear axes:
+  !! p_rel = pm qd, h_rel = hm qd (the same quantities as gear_relative_momenta).
+  pure subroutine gear_momentum_maps(gear, pm, hm)
+    type(gear_t), intent(in) :: gear       !! gear
+    real(wp), intent(out) :: pm(3, n_q)    !! d p_rel / d qd [kg, kg m]
+    real(wp), intent(out) :: hm(3, n_q)    !! d h_rel / d qd [kg m, kg m^2]
+    type(strut_kin_t) :: sk(3)
+    integer :: k, i0
+    real(wp) :: len, sm, jr
+    call strut_kinematics(gear, gear%q, sk)
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      len = gear%q(i0 + 1)
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      pm(:, i0 + 1) = gear%m_s(k)*sk(k)%u
+      pm(:, i0 + 2) = sm*sk(k)%u1
+      pm(:, i0 + 3) = sm*sk(k)%u2
+      hm(:, i0 + 1) = cross3(sk(k)%p, pm(:, i0 + 1))
+      hm(:, i0 + 2) = cross3(sk(k)%p, pm(:, i0 + 2)) + jr*cross3(sk(k)%u, sk(k)%u1)
+      hm(:, i0 + 3) = cross3(sk(k)%p, pm(:, i0 + 3)) + jr*cross3(sk(k)%u, sk(k)%u2)
+    end do
+  end subroutine gear_momentum_maps
 
   !> Rows of the correction: Phi_q and one row per locked strut.
-  subroutine build_rows(gear, qv, a, nrow)
+  pure subroutine build_rows(gear, qv, a, nrow)
     type(gear_t), intent(in) :: gear           !! gear
     real(wp), intent(in) :: qv(n_q)            !! coordinates
     real(wp), intent(out) :: a(max_rows, n_q)  !! rows

@@ -131,6 +131,9 @@ contains
     call h5_write(f, '/summary/bottomed_out', res%bottomed, '-', stat, errmsg, &
       description='1 where a stroke exceeded its capacity'); if (stat /= 0) return
     call h5_write(f, '/summary/crush_work', res%crush_work, 'J', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/mode_switches', res%mode_switches, '-', stat, errmsg, &
+      description='number of crush-mode changes per strut (locked, crushing, sliding freely; each direction)')
+    if (stat /= 0) return
     call h5_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg, &
       description='largest |axial force| at the output samples'); if (stat /= 0) return
     call h5_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return

@@ -16,7 +16,8 @@ module landyn_simulation
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
   use landyn_gear, only: gear_t, strut_mass_t, gear_init, gear_dynamics, gear_integrate, gear_footpad, &
-                         gear_relative_kinetic_energy, gear_leg_momentum
+                         gear_leg_momentum, gear_relative_momenta, gear_settle
+  use landyn_impact, only: system_velocity_projection
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
                             to_global
@@ -76,6 +77,7 @@ module landyn_simulation
     real(wp), allocatable :: slide_distance(:)             !! (n_gears) [m]
     real(wp), allocatable :: peak_normal_force(:)          !! (n_gears) [N]
     real(wp), allocatable :: peak_strut_force(:, :)        !! (3, n_gears) largest |axial| [N]
+    integer, allocatable :: mode_switches(:, :)            !! (3, n_gears) crush-mode changes [-]
     real(wp) :: peak_overload = 0.0_wp                     !! largest |a - g|/g0 [g]
     real(wp) :: t_peak_overload = 0.0_wp                   !! [s]
     real(wp) :: final_euler(3) = 0.0_wp                    !! [deg]
@@ -196,21 +198,24 @@ contains
     end do
   end subroutine setup_model
 
-  !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross term
-  !! v_body . sum(m v_rel) of the kinetic energy (the body carries the total mass), and the
-  !! potential energy of the legs' relative displacement.
+  !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross terms
+  !! V . p_rel + w . h_rel(mass centre) of the kinetic energy (the body carries the total mass; the
+  !! same quadratic form as landyn_impact's kinetic metric), and the potential energy of the legs'
+  !! relative displacement.
   function leg_energy(model, gravity) result(e)
     type(model_t), intent(in) :: model   !! model
     real(wp), intent(in) :: gravity      !! [m/s^2]
     real(wp) :: e                        !! [J]
     integer :: i
-    real(wp) :: p_rel(3), fm(3), mleg, rg(3, 3)
+    real(wp) :: p_rel(3), h_rel(3), t_rel, fm(3), mleg, rg(3, 3), pl(3), hl(3), p_dummy(3)
     e = 0.0_wp
     do i = 1, model%n_gears
-      call gear_leg_momentum(model%gear(i), p_rel, fm, mleg)
+      call gear_relative_momenta(model%gear(i), p_rel, h_rel, t_rel)
+      call gear_leg_momentum(model%gear(i), p_dummy, fm, mleg)
       rg = matmul(model%body%r, model%gear(i)%rot)
-      e = e + gear_relative_kinetic_energy(model%gear(i)) &
-            + dot_product(body_point_velocity(model%body, model%point_a(:, i)), matmul(rg, p_rel)) &
+      pl = mv3(model%gear(i)%rot, p_rel)
+      hl = mv3(model%gear(i)%rot, h_rel) - cross3(model%body%mc, pl)
+      e = e + t_rel + dot_product(model%body%v, mv3(model%body%r, pl)) + dot_product(model%body%omega, hl) &
             - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%first_moment0(:, i)))
     end do
   end function leg_energy
@@ -232,7 +237,8 @@ contains
     real(wp) :: xd_prev(3, max_gears), delta_prev(max_gears), fn_prev(max_gears), fground_prev(3, max_gears)
     real(wp) :: xt_prev(3), thrust_prev(3), xt(3)
     real(wp) :: w_normal, w_friction, w_thrust, w_impact, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
-    real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears)
+    real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
+    integer :: mode(3, max_gears)
     logical :: touched
     integer(kind=8) :: c0, c1, crate
     character(len=msg_len) :: m2
@@ -262,6 +268,7 @@ contains
     delta_prev = 0.0_wp; xd_prev = 0.0_wp
     xt_prev = body_point_position(model%body, inp%engine%point)
     rest_clock = 0.0_wp
+    mode = 0
     touched = .false.
     t_next_out = 0.0_wp
     next_progress = 1
@@ -321,7 +328,7 @@ contains
       do i = 1, ng
         field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(model%body, model%point_a(:, i)))
         ffoot = mtv3(model%gear(i)%rot, mtv3(r, fground(:, i)))
-        call gear_dynamics(model%gear(i), ffoot, field, stat, m2)
+        call gear_dynamics(model%gear(i), ffoot, field, stat, m2, dt)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           call finish(model, res, t)
@@ -374,7 +381,17 @@ contains
           return
         end if
       end do
-      call correction_impulses(model, w_impact)
+      call system_velocity_projection(model%body, model%gear, ng, inp%simulation%constraint_tol, e_imp, stat, m2)
+      if (stat /= 0) then
+        write (errmsg, '(a,es12.5,a,a)') 'velocity projection at t = ', t + dt, ' s: ', trim(m2)
+        call finish(model, res, t + dt)
+        return
+      end if
+      w_impact = w_impact + e_imp
+      do i = 1, ng
+        call gear_settle(model%gear(i))
+        call count_mode_switches(model%gear(i), mode(:, i), res%mode_switches(:, i))
+      end do
       res%n_steps = n + 1
 
       ! ---- divergence, tip-over and rest checks
@@ -458,37 +475,25 @@ contains
     end if
   end function symmetric_sum
 
-  !> Momentum exchange of Step 4's correction. When the velocity correction changes the legs'
-  !! relative momentum (a strut locking, or a free strut meeting a rigid stop, is a plastic impact),
-  !! the body receives the opposite impulse, so the system's linear and angular momentum are
-  !! conserved; the kinetic energy such impacts dissipate is added to w_impact.
-  subroutine correction_impulses(model, w_impact)
-    type(model_t), intent(inout) :: model      !! model after the gear steps
-    real(wp), intent(inout) :: w_impact        !! energy dissipated in strut impacts [J]
-    real(wp) :: dp(3, max_gears), dh(3, max_gears), dp_l(3), dh_l(3), e0, e1
-    integer :: i, ng
-    ng = model%n_gears
-    do i = 1, ng
-      dp(:, i) = mv3(model%gear(i)%rot, model%gear(i)%p_post - model%gear(i)%p_pre)
-      dh(:, i) = mv3(model%gear(i)%rot, model%gear(i)%h_post - model%gear(i)%h_pre)
+  !> Crush mode of each strut: 0 locked, +-1 crushing toward +-s (sliding against a nonzero
+  !! bound), +-2 sliding freely toward +-s (inside the crushed range); counts the changes.
+  pure subroutine count_mode_switches(gear, mode, switches)
+    type(gear_t), intent(in) :: gear          !! gear after the step
+    integer, intent(inout) :: mode(3)         !! mode at the previous step, updated [-]
+    integer, intent(inout) :: switches(3)     !! mode changes so far [-]
+    integer :: k, m
+    do k = 1, 3
+      if (gear%locked(k)) then
+        m = 0
+      else if (abs(gear%axial(k)) > tiny(1.0_wp)) then
+        m = sign(1, gear%dir(k))
+      else
+        m = 2*sign(1, gear%dir(k))
+      end if
+      if (m /= mode(k)) switches(k) = switches(k) + 1
+      mode(k) = m
     end do
-    dp_l = symmetric_sum(dp, ng)
-    dh_l = symmetric_sum(dh, ng)
-    if (maxval(abs(dp_l)) <= 0.0_wp .and. maxval(abs(dh_l)) <= 0.0_wp) return
-    e0 = body_kinetic_energy(model%body)
-    do i = 1, ng
-      e0 = e0 + model%gear(i)%t_pre + dot_product(body_point_velocity(model%body, model%point_a(:, i)), &
-           mv3(model%body%r, mv3(model%gear(i)%rot, model%gear(i)%p_pre)))
-    end do
-    model%body%v = model%body%v - mv3(model%body%r, dp_l)/model%body%mass
-    model%body%omega = model%body%omega - mv3(model%body%inv_inertia, dh_l - cross3(model%body%mc, dp_l))
-    e1 = body_kinetic_energy(model%body)
-    do i = 1, ng
-      e1 = e1 + model%gear(i)%t_post + dot_product(body_point_velocity(model%body, model%point_a(:, i)), &
-           mv3(model%body%r, mv3(model%gear(i)%rot, model%gear(i)%p_post)))
-    end do
-    w_impact = w_impact + (e0 - e1)
-  end subroutine correction_impulses
+  end subroutine count_mode_switches
 
   !> Records one output sample.
   subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
@@ -642,6 +647,8 @@ contains
     res%slide_distance = 0.0_wp
     res%peak_normal_force = 0.0_wp
     res%peak_strut_force = 0.0_wp
+    allocate (res%mode_switches(3, ng))
+    res%mode_switches = 0
     res%n_out = 0
   end subroutine allocate_result
 

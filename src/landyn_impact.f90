@@ -1,0 +1,168 @@
+!> Velocity projection of the whole lander as a plastic impact of the constrained system.
+!!
+!! State velocities v = (V, w, qd_1 ... qd_n): mass-centre velocity V (global), body rate w (lander
+!! axes) and each gear's generalized velocities. The kinetic energy of the model is the quadratic
+!! form T = 1/2 v^T M v with
+!!   M = [[Mb, C], [C^T, Mq]],  Mb = diag(m, m, m, I),  Mq = blockdiag(M_i)  (M_i diagonal),
+!!   C_i = [R R_i P_i ; R_i H_i - [mc]x R_i P_i],
+!! where P_i and H_i map qd_i to the legs' relative linear momentum and relative angular momentum
+!! about the lander origin (gear axes, landyn_gear), R_i is gear -> lander and R lander -> global.
+!! The first block row of M v is the system's linear momentum and its angular momentum about the
+!! mass centre: the exact cross terms V . p_rel + w . h_rel(mc) of the kinetic energy of a body
+!! carrying the total mass with legs moving relative to it.
+!!
+!! After a step the gears' velocity constraints G v = 0 (G = [0, blockdiag(A_i)], A_i = Phi_q and
+!! the lock rows) are violated: routinely by the integration error, and at an impact (a strut that
+!! locks, meets its stop, a footpad that lands) by a finite amount. The new velocity is the
+!! kinetic-metric projection
+!!   v+ = v- - M^-1 G^T lam,  (G M^-1 G^T) lam = G v-,
+!! i.e. the velocity of a perfectly plastic impact of the constrained system (Gauss's principle of
+!! least constraint for impulses). Then Mb dv_b + C dqd = 0: linear and angular momentum are
+!! conserved exactly (the impulses are internal), and T+ = T- - 1/2 lam^T G v- with
+!! lam^T G v- = (G v-)^T W^-1 (G v-) >= 0: the projection never creates energy. The energy lost is
+!! returned for the audit channel `strut_impacts`.
+!!
+!! Solution by block elimination (Mq diagonal): S = Mb - C Mq^-1 C^T (6 x 6, the body's inertia
+!! as seen through the free legs), W = G Mq^-1 G^T + U S^-1 U^T with U = G Mq^-1 C^T; W is at most
+!! 36 x 36 and is factored with LAPACK's Cholesky. Gears that are rigid (all struts locked, qd = 0)
+!! take no part: their square regular A_i holds qd_i = 0.
+module landyn_impact
+  use landyn_kinds, only: wp, msg_len, max_gears
+  use landyn_body, only: body_t
+  use landyn_gear, only: gear_t, n_q, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_matrix
+  use landyn_kinematics, only: mv3
+  use landyn_lapack, only: solve_spd, factor_spd, solve_factored_spd
+  implicit none
+  private
+
+  public :: system_velocity_projection, coupling_matrix
+
+  integer, parameter :: max_sys_rows = max_rows*max_gears   !! constraint rows of all gears at most
+
+contains
+
+  !> Coupling block C_i (6 x n_q) of gear i: rows 1-3 map qd_i to the legs' relative linear
+  !! momentum in global axes, rows 4-6 to their relative angular momentum about the mass centre in
+  !! lander axes.
+  pure function coupling_matrix(body, gear) result(c)
+    type(body_t), intent(in) :: body     !! body (attitude r, mass centre mc)
+    type(gear_t), intent(in) :: gear     !! gear
+    real(wp) :: c(6, n_q)                !! coupling [kg, kg m, kg m^2]
+    real(wp) :: pm(3, n_q), hm(3, n_q), pl(3), hl(3)
+    integer :: j
+    call gear_momentum_maps(gear, pm, hm)
+    do j = 1, n_q
+      pl = mv3(gear%rot, pm(:, j))
+      hl = mv3(gear%rot, hm(:, j))
+      c(1:3, j) = mv3(body%r, pl)
+      c(4:6, j) = hl - [body%mc(2)*pl(3) - body%mc(3)*pl(2), body%mc(3)*pl(1) - body%mc(1)*pl(3), &
+                        body%mc(1)*pl(2) - body%mc(2)*pl(1)]
+    end do
+  end function coupling_matrix
+
+  !> Projects the velocities of the body and all non-rigid gears onto the gears' velocity
+  !! constraints in the kinetic metric of the whole system (a plastic impact, see the module
+  !! header). Nothing is done when every residual |A_i qd_i| is within `tol`.
+  subroutine system_velocity_projection(body, gear, ng, tol, dissipated, stat, errmsg)
+    type(body_t), intent(inout) :: body          !! body; v and omega are updated
+    type(gear_t), intent(inout) :: gear(:)       !! gears; qd of the non-rigid ones is updated
+    integer, intent(in) :: ng                    !! number of gears [-]
+    real(wp), intent(in) :: tol                  !! residual below which nothing is done [m/s, rad/s]
+    real(wp), intent(out) :: dissipated          !! kinetic energy lost, >= 0 [J]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message on failure
+    real(wp) :: a(max_rows, n_q, max_gears), c(6, n_q, max_gears), minv(n_q, max_gears)
+    real(wp) :: g(max_sys_rows), lam(max_sys_rows), w(max_sys_rows, max_sys_rows), u(max_sys_rows, 6)
+    real(wp) :: s(6, 6), su(6, max_sys_rows), y(6), dq(n_q), db(6), resid
+    integer :: nrow(max_gears), off(max_gears), i, j, k, ii, jj, nr, n_act
+    integer :: act(max_gears)
+    character(len=msg_len) :: m2
+
+    stat = 0
+    dissipated = 0.0_wp
+    ! Active gears and their residuals.
+    n_act = 0
+    nr = 0
+    resid = 0.0_wp
+    do i = 1, ng
+      if (gear(i)%rigid) cycle
+      n_act = n_act + 1
+      act(n_act) = i
+      call gear_velocity_rows(gear(i), a(:, :, n_act), nrow(n_act))
+      off(n_act) = nr
+      do k = 1, nrow(n_act)
+        g(nr + k) = dot_product(a(k, :, n_act), gear(i)%qd)
+      end do
+      resid = max(resid, maxval(abs(g(nr + 1:nr + nrow(n_act)))))
+      nr = nr + nrow(n_act)
+    end do
+    if (n_act == 0 .or. resid <= tol) return
+
+    ! S = Mb - sum C_i Mq_i^-1 C_i^T and U = G Mq^-1 C^T.
+    s = 0.0_wp
+    do k = 1, 3
+      s(k, k) = body%mass
+    end do
+    s(4:6, 4:6) = body%inertia
+    do j = 1, n_act
+      i = act(j)
+      minv(:, j) = 1.0_wp/gear_mass_matrix(gear(i), gear(i)%q)
+      c(:, :, j) = coupling_matrix(body, gear(i))
+      do jj = 1, 6
+        do ii = 1, jj
+          s(ii, jj) = s(ii, jj) - sum(c(ii, :, j)*minv(:, j)*c(jj, :, j))
+        end do
+      end do
+      do k = 1, nrow(j)
+        do ii = 1, 6
+          u(off(j) + k, ii) = sum(a(k, :, j)*minv(:, j)*c(ii, :, j))
+        end do
+      end do
+    end do
+    call factor_spd(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
+    if (stat /= 0) then
+      errmsg = trim(m2)//': the legs are too heavy for the body (kinetic energy not positive definite)'
+      return
+    end if
+    ! su = S^-1 U^T
+    do k = 1, nr
+      y = u(k, :)
+      call solve_factored_spd(6, s, 6, y, stat, m2, 'system velocity projection')
+      if (stat /= 0) then; errmsg = m2; return; end if
+      su(:, k) = y
+    end do
+    ! W = G Mq^-1 G^T (block diagonal) + U S^-1 U^T (upper triangle).
+    do jj = 1, nr
+      do ii = 1, jj
+        w(ii, jj) = dot_product(u(ii, :), su(:, jj))
+      end do
+    end do
+    do j = 1, n_act
+      do jj = 1, nrow(j)
+        do ii = 1, jj
+          w(off(j) + ii, off(j) + jj) = w(off(j) + ii, off(j) + jj) + sum(a(ii, :, j)*minv(:, j)*a(jj, :, j))
+        end do
+      end do
+    end do
+    lam(1:nr) = g(1:nr)
+    call solve_spd(nr, w, max_sys_rows, lam, stat, m2, 'system velocity projection (G M^-1 G^T)')
+    if (stat /= 0) then
+      errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
+      return
+    end if
+    dissipated = 0.5_wp*dot_product(lam(1:nr), g(1:nr))
+    ! y = S^-1 U^T lam;  dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y);  dv_b = -Mb^-1 sum C_i dqd_i.
+    y = matmul(su(:, 1:nr), lam(1:nr))
+    db = 0.0_wp
+    do j = 1, n_act
+      i = act(j)
+      dq = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), :, j)) + matmul(y, c(:, :, j))
+      dq = -minv(:, j)*dq
+      gear(i)%qd = gear(i)%qd + dq
+      db = db + matmul(c(:, :, j), dq)
+    end do
+    body%v = body%v - db(1:3)/body%mass
+    body%omega = body%omega - mv3(body%inv_inertia, db(4:6))
+  end subroutine system_velocity_projection
+
+end module landyn_impact
