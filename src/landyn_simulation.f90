@@ -328,7 +328,7 @@ contains
       do i = 1, ng
         field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(model%body, model%point_a(:, i)))
         ffoot = mtv3(model%gear(i)%rot, mtv3(r, fground(:, i)))
-        call gear_dynamics(model%gear(i), ffoot, field, stat, m2, dt)
+        call gear_dynamics(model%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, model%body%alpha))
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           call finish(model, res, t)
