@@ -475,8 +475,9 @@ contains
     end if
   end function symmetric_sum
 
-  !> Crush mode of each strut: 0 locked, +-1 crushing toward +-s (sliding against a nonzero
-  !! bound), +-2 sliding freely toward +-s (inside the crushed range); counts the changes.
+  !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
+  !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
+  !! of motion is not a mode); counts the changes, i.e. the switches of the buffer force law.
   pure subroutine count_mode_switches(gear, mode, switches)
     type(gear_t), intent(in) :: gear          !! gear after the step
     integer, intent(inout) :: mode(3)         !! mode at the previous step, updated [-]
@@ -488,7 +489,7 @@ contains
       else if (abs(gear%axial(k)) > tiny(1.0_wp)) then
         m = sign(1, gear%dir(k))
       else
-        m = 2*sign(1, gear%dir(k))
+        m = 2
       end if
       if (m /= mode(k)) switches(k) = switches(k) + 1
       mode(k) = m
