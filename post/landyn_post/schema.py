@@ -151,6 +151,8 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         DatasetSpec("bottomed_out", "/summary/bottomed_out", "-", ("g", 3), "int",
                     "1 where a stroke exceeded its capacity", STRUTS),
         DatasetSpec("crush_work", "/summary/crush_work", "J", ("g", 3), "real", "honeycomb crush work", STRUTS),
+        DatasetSpec("mode_switches", "/summary/mode_switches", "-", ("g", 3), "int",
+                    "crush-mode changes (locked, crushing +/-, free) per strut", STRUTS),
         DatasetSpec("peak_strut_force", "/summary/peak_strut_force", "N", ("g", 3), "real",
                     "largest |axial force| at the output samples", STRUTS),
         DatasetSpec("peak_overload", "/summary/peak_overload", "g", (), "real",
