@@ -93,18 +93,27 @@ contains
       description='body rates p, q, r about the lander axes'); if (stat /= 0) return
     call h5_write(f, '/timeseries/body/overload', res%overload(:, 1:n), 'g', stat, errmsg, &
       description='(a - g)/9.80665 at the mass centre in lander axes: what an accelerometer reads'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/body/overload_peak', res%overload_peak(1:n), 'g', stat, errmsg, &
+      description='largest |overload| over the steps since the previous sample (this one included)')
+    if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/strut_length', res%strut_length(:, :, 1:n), 'm', stat, errmsg, &
       description='shape (n, n_gears, 3): primary, secondary left, secondary right'); if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/stroke', res%stroke(:, :, 1:n), 'm', stat, errmsg, &
       description='primary: shortening positive; secondaries: lengthening positive (Table 3 sense)'); if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/strut_force', res%strut_force(:, :, 1:n), 'N', stat, errmsg, &
       description='axial buffer force, compression positive'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/strut_force_peak', res%strut_force_peak(:, :, 1:n), 'N', stat, errmsg, &
+      description='largest |axial force| over the steps since the previous sample (this one included)')
+    if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/footpad_position', res%footpad_position(:, :, 1:n), 'm', stat, errmsg, &
       description='footpad ball joint, global frame (z down)'); if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/ground_force', res%ground_force(:, :, 1:n), 'N', stat, errmsg, &
       description='ground force on the footpad (normal + friction), global frame'); if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/normal_force', res%normal_force(:, 1:n), 'N', stat, errmsg, &
       description='shape (n, n_gears)'); if (stat /= 0) return
+    call h5_write(f, '/timeseries/gears/normal_force_peak', res%normal_force_peak(:, 1:n), 'N', stat, errmsg, &
+      description='largest normal force over the steps since the previous sample (this one included)')
+    if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/friction_force', res%friction_force(:, 1:n), 'N', stat, errmsg, &
       description='magnitude of the friction force'); if (stat /= 0) return
     call h5_write(f, '/timeseries/gears/penetration', res%penetration(:, 1:n), 'm', stat, errmsg, &
@@ -135,7 +144,7 @@ contains
       description='number of crush-mode changes per strut (locked, crushing, sliding freely; each direction)')
     if (stat /= 0) return
     call h5_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg, &
-      description='largest |axial force| at the output samples'); if (stat /= 0) return
+      description='largest |axial force| over all steps'); if (stat /= 0) return
     call h5_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/summary/time_of_peak_overload', res%t_peak_overload, 's', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/summary/peak_penetration', res%peak_penetration, 'm', stat, errmsg); if (stat /= 0) return

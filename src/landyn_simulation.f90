@@ -65,6 +65,14 @@ module landyn_simulation
     real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
     real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
     real(wp), allocatable :: energy(:, :)                  !! (n, n_energy) audit channels, one column each [J]
+    ! Peaks over each output interval (every step since the previous sample, this one included),
+    ! so that the stored histories keep the peaks the summary reports.
+    real(wp), allocatable :: overload_peak(:)              !! (n) largest |a - g|/g0 [g]
+    real(wp), allocatable :: normal_force_peak(:, :)       !! (n_gears, n) [N]
+    real(wp), allocatable :: strut_force_peak(:, :, :)     !! (3, n_gears, n) largest |axial| [N]
+    real(wp) :: acc_overload = 0.0_wp                      !! running interval peak [g]
+    real(wp), allocatable :: acc_normal_force(:)           !! (n_gears) running interval peak [N]
+    real(wp), allocatable :: acc_strut_force(:, :)         !! (3, n_gears) running interval peak [N]
     ! summary
     real(wp), allocatable :: crush_net(:, :)               !! (3, n_gears) signed net crush [m]
     real(wp), allocatable :: crush_pos(:, :)               !! (3, n_gears) crushed toward +s [m]
@@ -356,6 +364,13 @@ contains
         res%peak_overload = norm2(ovl)
         res%t_peak_overload = t
       end if
+      ! peaks of every step, for the summary and the interval-peak channels
+      res%acc_overload = max(res%acc_overload, norm2(ovl))
+      do i = 1, ng
+        res%acc_normal_force(i) = max(res%acc_normal_force(i), fn(i))
+        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(model%gear(i)%axial))
+        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%axial))
+      end do
 
       ! ---- output sample (state at t_n with the forces at t_n)
       if (t >= t_next_out - 0.5_wp*dt) then
@@ -544,8 +559,13 @@ contains
       res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(fground(:, i), fground(:, i)) - fn(i)**2))
       res%penetration(i, k) = delta(i)
       res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), vd(:, i)))
-      res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%axial))
     end do
+    res%overload_peak(k) = max(res%acc_overload, norm2(ovl))
+    res%normal_force_peak(:, k) = max(res%acc_normal_force, fn(1:res%n_gears))
+    res%strut_force_peak(:, :, k) = res%acc_strut_force
+    res%acc_overload = 0.0_wp
+    res%acc_normal_force = 0.0_wp
+    res%acc_strut_force = 0.0_wp
     ke = body_kinetic_energy(model%body)
     pe = -model%body%mass*gravity*model%body%x(3)
     e_in = ke0 + (pe0 - pe) + w_thrust
@@ -641,6 +661,11 @@ contains
               res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
     allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
               res%slip_speed(ng, n_cap), res%energy(n_cap, n_energy))
+    allocate (res%overload_peak(n_cap), res%normal_force_peak(ng, n_cap), res%strut_force_peak(3, ng, n_cap), &
+              res%acc_normal_force(ng), res%acc_strut_force(3, ng))
+    res%acc_overload = 0.0_wp
+    res%acc_normal_force = 0.0_wp
+    res%acc_strut_force = 0.0_wp
     allocate (res%crush_net(3, ng), res%crush_pos(3, ng), res%crush_neg(3, ng), res%stroke_final(3, ng), &
               res%stroke_margin(3, ng), res%crush_work(3, ng), res%bottomed(3, ng), res%peak_strut_force(3, ng))
     allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))

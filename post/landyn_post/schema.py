@@ -117,18 +117,24 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         _ts("overload", "/timeseries/body/overload", "g", ("n", 3),
             "(a - g)/9.80665 at the mass centre in lander axes (accelerometer reading; "
             "-z = upward deceleration in the z-down frame)", _XYZ),
+        _ts("overload_peak", "/timeseries/body/overload_peak", "g", ("n",),
+            "largest |overload| over every integration step since the previous sample (this one included)"),
         _ts("strut_length", "/timeseries/gears/strut_length", "m", ("n", "g", 3),
             "strut length between its joints; last axis primary, secondary left, secondary right", STRUTS),
         _ts("stroke", "/timeseries/gears/stroke", "m", ("n", "g", 3),
             "stroke: primary shortening positive, secondaries lengthening positive (Table 3 sense)", STRUTS),
         _ts("strut_force", "/timeseries/gears/strut_force", "N", ("n", "g", 3),
             "axial buffer force, compression positive", STRUTS),
+        _ts("strut_force_peak", "/timeseries/gears/strut_force_peak", "N", ("n", "g", 3),
+            "largest |axial force| over every integration step since the previous sample", STRUTS),
         _ts("footpad_position", "/timeseries/gears/footpad_position", "m", ("n", "g", 3),
             "footpad ball joint d_i, global frame, z down", _XYZ),
         _ts("ground_force", "/timeseries/gears/ground_force", "N", ("n", "g", 3),
             "ground force on the footpad (normal + friction), global frame", _XYZ),
         _ts("normal_force", "/timeseries/gears/normal_force", "N", ("n", "g"),
             "normal contact force on the footpad (>= 0)"),
+        _ts("normal_force_peak", "/timeseries/gears/normal_force_peak", "N", ("n", "g"),
+            "largest normal force over every integration step since the previous sample"),
         _ts("friction_force", "/timeseries/gears/friction_force", "N", ("n", "g"),
             "magnitude of the friction force on the footpad"),
         _ts("penetration", "/timeseries/gears/penetration", "m", ("n", "g"),
@@ -493,7 +499,10 @@ class Result:
         if include_body:
             for d in wanted:
                 if d.path.startswith("/timeseries/body/"):
-                    out += [self._make_channel(d.key, None, i) for i in range(3)]
+                    if d.shape[-1] == 3:
+                        out += [self._make_channel(d.key, None, i) for i in range(3)]
+                    else:
+                        out.append(self._make_channel(d.key, None, None))
         for g in range(1, self.n_gears + 1) if gears is None else gears:
             for d in wanted:
                 if d.path.startswith("/timeseries/gears/"):
