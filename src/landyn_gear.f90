@@ -364,13 +364,14 @@ contains
     real(wp) :: f_rel(3), m_rel(3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
-    logical :: changed, done, tried(3), released(3)
+    logical :: changed, done, tried(3), released(3), stop_hit(3)
 
     stat = 0
     ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
     ! secondary forces (landyn_tube_friction). Off by default: then nothing here runs.
     if (gear%tube%on) call update_tube_bound(gear)
     q_alp = 0.0_wp
+    stop_hit = .false.
     if (gear%rigid .and. all(gear%locked)) then
       call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg, alpha)
       if (stat /= 0 .or. done) return
@@ -399,9 +400,11 @@ contains
         if (gear%dir(k) > 0) then
           gear%axial(k) = -gear%sigma(k)*fpos(k)
           if (fpos(k) >= rigid_force) gear%locked(k) = .true.
+          if (fpos(k) >= rigid_force) stop_hit(k) = .true.
         else
           gear%axial(k) = gear%sigma(k)*fneg(k)
           if (fneg(k) >= rigid_force) gear%locked(k) = .true.
+          if (fneg(k) >= rigid_force) stop_hit(k) = .true.
         end if
         if (gear%locked(k)) gear%s_lock(k) = s(k)
       end if
@@ -422,7 +425,10 @@ contains
           a(nrow, :) = 0.0_wp
           a(nrow, idx_len(k)) = 1.0_wp
           b(nrow) = 0.0_wp
-          if (present(dt)) b(nrow) = -gear%qd(idx_len(k))/dt   ! stop at the end of the step
+          ! Velocity-level lock: stop at the end of the step. A strut that has just run into a
+          ! rigid stop keeps its speed through the step instead (b = 0): stopping it is a plastic
+          ! impact, done by the system velocity projection after the step, which books its loss.
+          if (present(dt) .and. .not. stop_hit(k)) b(nrow) = -gear%qd(idx_len(k))/dt
           row_of(k) = nrow
         else
           q_buf(idx_len(k)) = gear%axial(k)
