@@ -23,15 +23,17 @@
 !! returned for the audit channel `strut_impacts`.
 !!
 !! Solution by block elimination (Mq diagonal): S = Mb - C Mq^-1 C^T (6 x 6, the body's inertia
-!! as seen through the free legs), W = G Mq^-1 G^T + U S^-1 U^T with U = G Mq^-1 C^T; W is at most
-!! 36 x 36 and is factored with LAPACK's Cholesky. Gears that are rigid (all struts locked, qd = 0)
-!! take no part: their square regular A_i holds qd_i = 0.
+!! as seen through the free legs), W = D + U S^-1 U^T with D = G Mq^-1 G^T block diagonal (one
+!! block of at most 9 x 9 per gear) and U = G Mq^-1 C^T; W is solved with the Woodbury identity,
+!! so that only the blocks D_i and two 6 x 6 matrices are factored (LAPACK's unblocked Cholesky).
+!! Gears that are rigid (all struts locked, qd = 0) take no part: their square regular A_i holds
+!! qd_i = 0.
 module landyn_impact
   use landyn_kinds, only: wp, msg_len, max_gears
   use landyn_body, only: body_t
-  use landyn_gear, only: gear_t, n_q, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_matrix
+  use landyn_gear, only: gear_t, n_q, n_phi, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_matrix
   use landyn_kinematics, only: mv3
-  use landyn_lapack, only: solve_spd, factor_spd, solve_factored_spd
+  use landyn_lapack, only: factor_spd_unblocked, solve_upper_triangular, solve_factored_spd_multi
   implicit none
   private
 
@@ -72,8 +74,9 @@ contains
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! message on failure
     real(wp) :: a(max_rows, n_q, max_gears), c(6, n_q, max_gears), minv(n_q, max_gears)
-    real(wp) :: g(max_sys_rows), lam(max_sys_rows), w(max_sys_rows, max_sys_rows), u(max_sys_rows, 6)
-    real(wp) :: s(6, 6), su(6, max_sys_rows), y(6), dq(n_q), db(6), resid
+    real(wp) :: g(max_sys_rows), lam(max_sys_rows), u(max_sys_rows, 6), z(max_sys_rows), zz(max_sys_rows, 6)
+    real(wp) :: d(max_rows, max_rows, max_gears), s(6, 6), kk(6, 6), rr(6), y(6), dq(n_q), db(6), resid
+    real(wp) :: rhs(max_rows, 7)
     integer :: nrow(max_gears), off(max_gears), i, j, k, ii, jj, nr, n_act
     integer :: act(max_gears)
     character(len=msg_len) :: m2
@@ -89,6 +92,10 @@ contains
       n_act = n_act + 1
       act(n_act) = i
       call gear_velocity_rows(gear(i), a(:, :, n_act), nrow(n_act))
+      ! Phi_q at this configuration is what the next step's DAE needs too: cache it.
+      gear(i)%phq = a(1:n_phi, :, n_act)
+      gear(i)%phq_q = gear(i)%q
+      gear(i)%phq_ok = .true.
       off(n_act) = nr
       do k = 1, nrow(n_act)
         g(nr + k) = dot_product(a(k, :, n_act), gear(i)%qd)
@@ -98,12 +105,17 @@ contains
     end do
     if (n_act == 0 .or. resid <= tol) return
 
-    ! S = Mb - sum C_i Mq_i^-1 C_i^T and U = G Mq^-1 C^T.
+    ! S = Mb - sum C_i Mq_i^-1 C_i^T, U_i = A_i Mq_i^-1 C_i^T, D_i = A_i Mq_i^-1 A_i^T.
+    ! W = D + U S^-1 U^T is solved with the Woodbury identity, so that only the per-gear blocks
+    ! D_i (at most 9 x 9) and two 6 x 6 systems are factored:
+    !   W^-1 g = D^-1 g - D^-1 U K^-1 U^T D^-1 g,  K = S + U^T D^-1 U.
     s = 0.0_wp
     do k = 1, 3
       s(k, k) = body%mass
     end do
     s(4:6, 4:6) = body%inertia
+    kk = 0.0_wp
+    rr = 0.0_wp
     do j = 1, n_act
       i = act(j)
       minv(:, j) = 1.0_wp/gear_mass_matrix(gear(i), gear(i)%q)
@@ -113,46 +125,56 @@ contains
           s(ii, jj) = s(ii, jj) - sum(c(ii, :, j)*minv(:, j)*c(jj, :, j))
         end do
       end do
-      do k = 1, nrow(j)
-        do ii = 1, 6
-          u(off(j) + k, ii) = sum(a(k, :, j)*minv(:, j)*c(ii, :, j))
+      associate (n => nrow(j), o => off(j))
+        do k = 1, n
+          do ii = 1, 6
+            u(o + k, ii) = sum(a(k, :, j)*minv(:, j)*c(ii, :, j))
+          end do
         end do
-      end do
+        do jj = 1, n
+          do ii = 1, jj
+            d(ii, jj, j) = sum(a(ii, :, j)*minv(:, j)*a(jj, :, j))
+          end do
+        end do
+        call factor_spd_unblocked(n, d(:, :, j), max_rows, stat, m2, 'system velocity projection (A M^-1 A^T)')
+        if (stat /= 0) then
+          errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
+          return
+        end if
+        ! [z, Z] = D_i^-1 [g_i, U_i] (one multi-column solve)
+        rhs(1:n, 1) = g(o + 1:o + n)
+        rhs(1:n, 2:7) = u(o + 1:o + n, :)
+        call solve_factored_spd_multi(n, 7, d(:, :, j), max_rows, rhs, max_rows, stat, m2, &
+                                      'system velocity projection (A M^-1 A^T)')
+        if (stat /= 0) then; errmsg = m2; return; end if
+        z(o + 1:o + n) = rhs(1:n, 1)
+        zz(o + 1:o + n, :) = rhs(1:n, 2:7)
+        ! K += U_i^T Z_i, r += U_i^T z_i
+        do jj = 1, 6
+          do ii = 1, jj
+            kk(ii, jj) = kk(ii, jj) + dot_product(u(o + 1:o + n, ii), zz(o + 1:o + n, jj))
+          end do
+          rr(jj) = rr(jj) + dot_product(u(o + 1:o + n, jj), z(o + 1:o + n))
+        end do
+      end associate
     end do
-    call factor_spd(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
+    kk = kk + s
+    call factor_spd_unblocked(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
     if (stat /= 0) then
       errmsg = trim(m2)//': the legs are too heavy for the body (kinetic energy not positive definite)'
       return
     end if
-    ! su = S^-1 U^T
-    do k = 1, nr
-      y = u(k, :)
-      call solve_factored_spd(6, s, 6, y, stat, m2, 'system velocity projection')
-      if (stat /= 0) then; errmsg = m2; return; end if
-      su(:, k) = y
-    end do
-    ! W = G Mq^-1 G^T (block diagonal) + U S^-1 U^T (upper triangle).
-    do jj = 1, nr
-      do ii = 1, jj
-        w(ii, jj) = dot_product(u(ii, :), su(:, jj))
-      end do
-    end do
-    do j = 1, n_act
-      do jj = 1, nrow(j)
-        do ii = 1, jj
-          w(off(j) + ii, off(j) + jj) = w(off(j) + ii, off(j) + jj) + sum(a(ii, :, j)*minv(:, j)*a(jj, :, j))
-        end do
-      end do
-    end do
-    lam(1:nr) = g(1:nr)
-    call solve_spd(nr, w, max_sys_rows, lam, stat, m2, 'system velocity projection (G M^-1 G^T)')
-    if (stat /= 0) then
-      errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
-      return
-    end if
+    call factor_spd_unblocked(6, kk, 6, stat, m2, 'system velocity projection (Woodbury capacitance)')
+    if (stat /= 0) then; errmsg = m2; return; end if
+    ! t = K^-1 r;  lam = z - Z t
+    call solve_upper_triangular(6, kk, 6, rr, .true.)
+    call solve_upper_triangular(6, kk, 6, rr, .false.)
+    lam(1:nr) = z(1:nr) - matmul(zz(1:nr, :), rr)
     dissipated = 0.5_wp*dot_product(lam(1:nr), g(1:nr))
     ! y = S^-1 U^T lam;  dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y);  dv_b = -Mb^-1 sum C_i dqd_i.
-    y = matmul(su(:, 1:nr), lam(1:nr))
+    y = matmul(lam(1:nr), u(1:nr, :))
+    call solve_upper_triangular(6, s, 6, y, .true.)
+    call solve_upper_triangular(6, s, 6, y, .false.)
     db = 0.0_wp
     do j = 1, n_act
       i = act(j)
