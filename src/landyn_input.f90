@@ -69,6 +69,12 @@ module landyn_input
   integer, parameter :: snippet_len = 100           !! longest deck excerpt quoted in a message [-]
   integer, parameter :: key_len = 128               !! longest variable reference compared for duplicates [-]
   integer, parameter :: comment_col = 46            !! column of the `!` comments in written decks [-]
+  integer, parameter :: short_digits = 3           !! digit counts tried one by one before bisection [-]
+  !> ES formats with 1..17 significant digits and a 3-digit exponent (es_text)
+  character(len=*), parameter :: es_formats(17) = [character(len=12) :: '(es30.0e3)', '(es30.1e3)', &
+    '(es30.2e3)', '(es30.3e3)', '(es30.4e3)', '(es30.5e3)', '(es30.6e3)', '(es30.7e3)', '(es30.8e3)', &
+    '(es30.9e3)', '(es30.10e3)', '(es30.11e3)', '(es30.12e3)', '(es30.13e3)', '(es30.14e3)', '(es30.15e3)', &
+    '(es30.16e3)']
 
   !> Description of one namelist variable: the single source for names, units and hints.
   type :: var_t
@@ -1751,28 +1757,82 @@ contains
     end function vals
   end subroutine put_partial
 
-  !> Shortest decimal text that reads back as exactly x.
+  !> Shortest decimal text that reads back as exactly x. Reading back is monotone in the number
+  !! of digits d (the d+1-digit rounding is at least as close to x as the d-digit one), so after
+  !! the short texts (d <= 3, the usual deck values) the shortest d is found by bisection: a
+  !! random 17-digit value costs 7 conversions instead of 17 (validation formats every value,
+  !! once per campaign case).
   pure function fmt_real(x) result(s)
     real(wp), intent(in) :: x              !! value [any unit]
     character(len=:), allocatable :: s     !! e.g. '5.0e-6', '0.475', '16000.0' [-]
-    character(len=40) :: buf
-    integer :: d
-    real(wp) :: y
-    do d = 1, 17
-      buf = es_text(x, d)
-      read (buf, *) y
-      if (same_real(x, y)) exit
+    integer :: d, lo, hi, mid
+    logical :: whole
+    call whole_number_text(x, s, whole)
+    if (whole) return
+    do d = 1, short_digits
+      if (real_ok(d)) then
+        s = pretty(es_text(x, d))
+        return
+      end if
     end do
-    s = pretty(buf)
+    lo = short_digits   ! fails
+    hi = 17             ! 17 digits always read back exactly
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (real_ok(mid)) then
+        hi = mid
+      else
+        lo = mid
+      end if
+    end do
+    s = pretty(es_text(x, hi))
+  contains
+    pure logical function real_ok(dd)
+      integer, intent(in) :: dd   !! significant digits [-]
+      real(wp) :: y
+      character(len=40) :: b
+      b = es_text(x, dd)
+      read (b, *) y
+      real_ok = same_real(x, y)
+    end function real_ok
   end function fmt_real
 
-  !> Shortest decimal degrees that deg_to_rad converts back to exactly x.
+  !> The text fmt_real gives for a whole number 1 <= |x| < 1e7 or a positive zero ('16000.0',
+  !! '-3.0', '0.0'), made without formatted I/O; .false. for any other x.
+  pure subroutine whole_number_text(x, s, done)
+    real(wp), intent(in) :: x                        !! value [any unit]
+    character(len=:), allocatable, intent(inout) :: s  !! text when done [-]
+    logical, intent(out) :: done                     !! x was such a number [-]
+    integer :: n
+    done = .false.
+    if (same_real(x, 0.0_wp)) then
+      s = '0.0'
+      done = .true.
+      return
+    end if
+    if (.not. (abs(x) >= 1.0_wp .and. abs(x) < 1.0e7_wp)) return
+    if (.not. same_real(aint(x), x)) return
+    n = nint(abs(x))
+    s = '.0'
+    do
+      s = achar(iachar('0') + mod(n, 10))//s
+      n = n/10
+      if (n == 0) exit
+    end do
+    if (x < 0.0_wp) s = '-'//s
+    done = .true.
+  end subroutine whole_number_text
+
+  !> Shortest decimal degrees that deg_to_rad converts back to exactly x: the candidates are
+  !! x*rad2deg and its neighbours (+-1, +-2 ulp), tried digit count by digit count, the first
+  !! that works wins. As in fmt_real, short texts (d <= 3) are tried one by one and longer ones
+  !! by bisection over d, so the text always converts back to x; it is the shortest one except
+  !! where a non-exact neighbour happens to work at fewer digits than the exact candidates.
   pure function fmt_angle(x) result(s)
     real(wp), intent(in) :: x              !! angle [rad]
     character(len=:), allocatable :: s     !! angle in degrees [-]
-    character(len=40) :: buf
-    real(wp) :: cand(5), y
-    integer :: d, k
+    real(wp) :: cand(5)
+    integer :: d, k, lo, hi, mid
     cand(1) = x*rad2deg
     if (.not. abs(x) >= tiny(1.0_wp)) then   ! zero (or subnormal): no neighbours to try
       s = fmt_real(cand(1))
@@ -1782,17 +1842,45 @@ contains
     cand(3) = nearest(cand(1), -1.0_wp)
     cand(4) = nearest(cand(2), 1.0_wp)
     cand(5) = nearest(cand(3), -1.0_wp)
-    do d = 1, 17
-      do k = 1, size(cand)
-        buf = es_text(cand(k), d)
-        read (buf, *) y
+    do d = 1, short_digits
+      k = first_ok(d)
+      if (k > 0) then
+        s = pretty(es_text(cand(k), d))
+        return
+      end if
+    end do
+    if (first_ok(17) == 0) then
+      s = pretty(es_text(cand(1), 17))
+      return
+    end if
+    lo = short_digits
+    hi = 17
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (first_ok(mid) > 0) then
+        hi = mid
+      else
+        lo = mid
+      end if
+    end do
+    s = pretty(es_text(cand(first_ok(hi)), hi))
+  contains
+    !> First candidate whose dd-digit text converts back to x (0: none).
+    pure integer function first_ok(dd)
+      integer, intent(in) :: dd   !! significant digits [-]
+      real(wp) :: y
+      character(len=40) :: b
+      integer :: kk
+      first_ok = 0
+      do kk = 1, size(cand)
+        b = es_text(cand(kk), dd)
+        read (b, *) y
         if (same_real(deg_to_rad(y), x)) then
-          s = pretty(buf)
+          first_ok = kk
           return
         end if
       end do
-    end do
-    s = pretty(es_text(cand(1), 17))
+    end function first_ok
   end function fmt_angle
 
   !> Values joined with ', ', runs of four or more equal values written as r*value.
@@ -1847,9 +1935,7 @@ contains
     real(wp), intent(in) :: x     !! value [any unit]
     integer, intent(in) :: d      !! significant digits, 1..17 [-]
     character(len=40) :: buf      !! e.g. ' 5.0E-006' [-]
-    character(len=16) :: fmt
-    write (fmt, '(a,i0,a)') '(es30.', max(d - 1, 0), 'e3)'
-    write (buf, fmt) x
+    write (buf, es_formats(min(max(d, 1), 17))) x
     buf = adjustl(buf)
   end function es_text
 
