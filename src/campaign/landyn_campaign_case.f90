@@ -118,12 +118,15 @@ contains
 
   !> Run case `id`: build its input, run the simulation, evaluate the criteria, and write its
   !! time history when `save_history`. Never fails: problems go into the row's status and message.
-  subroutine run_case(camp, id, save_history, command_line, row)
+  !! `timing`, when present, gets the wall-clock split of the case: (1) input (case values, case
+  !! deck, reading, checks), (2) run_simulation, (3) the rest (metrics, criteria, history file).
+  subroutine run_case(camp, id, save_history, command_line, row, timing)
     type(campaign_t), intent(in) :: camp          !! campaign [-]
     integer, intent(in) :: id                     !! case id [-]
     logical, intent(in) :: save_history          !! write the time-history file [-]
     character(len=*), intent(in) :: command_line  !! recorded in the history file [-]
     type(case_row_t), intent(out) :: row          !! the case's row [-]
+    real(wp), intent(out), optional :: timing(3)  !! input, simulation, rest [s]
     type(landyn_input_t) :: inp
     type(input_errors_t) :: errors
     type(sim_result_t) :: res
@@ -131,9 +134,11 @@ contains
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
     integer :: st, i
-    integer(kind=8) :: c0, c1, crate
+    integer(kind=8) :: c0, c1, crate, c_in, c_sim
 
     call system_clock(c0, crate)
+    c_in = -1
+    c_sim = -1
     row = new_row(id, camp%n_par, camp%n_gears)
     call case_values(camp, id, values, st, m1)
     if (st /= 0) then
@@ -158,7 +163,9 @@ contains
       return
     end if
     msg = ''
+    call system_clock(c_in)
     call run_simulation(inp, res, st, msg, -1)
+    call system_clock(c_sim)
     if (st /= 0) then
       row%status = status_failed
       row%message = trim(msg)
@@ -202,6 +209,11 @@ contains
       row%message = sanitize(row%message)
       call system_clock(c1)
       row%wall_time = real(c1 - c0, wp)/real(crate, wp)
+      if (present(timing)) then
+        if (c_in < 0) c_in = c1
+        if (c_sim < 0) c_sim = c_in
+        timing = real([c_in - c0, c_sim - c_in, c1 - c_sim], wp)/real(crate, wp)
+      end if
     end subroutine finish_row
 
   end subroutine run_case

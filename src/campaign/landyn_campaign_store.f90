@@ -27,7 +27,7 @@ module landyn_campaign_store
   private
 
   public :: summary_meta_t, meta_from_campaign, write_summary, read_summary
-  public :: journal_open, journal_append, journal_read
+  public :: journal_open, journal_append, journal_flush, journal_read
   public :: success_probability, wilson_interval, schema_version
   public :: results_t, results_init, results_add, results_rows, results_missing
 
@@ -710,12 +710,15 @@ contains
         int_text(meta%n_gears)
   end function journal_header
 
-  !> Append one row to the journal and flush it.
-  subroutine journal_append(unit, row, stat, errmsg)
+  !> Append one row to the journal and flush it (unless `flush_now` is .false.: the caller then
+  !! flushes with journal_flush before it waits or computes, so that a kill loses only rows
+  !! received in the last moments).
+  subroutine journal_append(unit, row, stat, errmsg, flush_now)
     integer, intent(in) :: unit                 !! journal unit [-]
     type(case_row_t), intent(in) :: row         !! row [-]
     integer, intent(out) :: stat                !! 0 ok [-]
     character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    logical, intent(in), optional :: flush_now  !! flush at once (default .true.) [-]
     integer :: ibuf(row_int_count), k
     real(wp), allocatable :: rbuf(:)
     character(len=:), allocatable :: text
@@ -726,9 +729,24 @@ contains
     write (fmt, '(a,i0,a,i0,a)') '(a1,', row_int_count, '(1x,i11),', max(size(rbuf), 1), '(1x,z16.16))'
     write (unit, fmt, advance='no', iostat=stat, iomsg=iomsg) 'R', ibuf, [(transfer(rbuf(k), 0_int64), k=1, size(rbuf))]
     if (stat == 0) write (unit, '(1x,a,a)', iostat=stat, iomsg=iomsg) text, ' $'
-    if (stat == 0) flush (unit)
+    if (present(flush_now)) then
+      if (stat == 0 .and. flush_now) flush (unit, iostat=stat, iomsg=iomsg)
+    else
+      if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
+    end if
     if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
   end subroutine journal_append
+
+  !> Flush the journal's lines to the operating system.
+  subroutine journal_flush(unit, stat, errmsg)
+    integer, intent(in) :: unit                 !! journal unit [-]
+    integer, intent(out) :: stat                !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    character(len=256) :: iomsg
+    iomsg = ''
+    flush (unit, iostat=stat, iomsg=iomsg)
+    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
+  end subroutine journal_flush
 
   !> Rows of a journal (in file order). stat = 1 when the file is not a journal of the campaign
   !! `meta` describes; n_bad counts lines that did not parse (a torn last line).
