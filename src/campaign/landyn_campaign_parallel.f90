@@ -88,7 +88,9 @@ module landyn_campaign_parallel
   integer, parameter :: p_rows = 11     !! rank 0: rows recorded [-]
   integer, parameter :: p_nckpt = 12    !! rank 0: checkpoints written [-]
   integer, parameter :: p_ckpt_max = 13 !! rank 0: longest checkpoint [s]
-  integer, parameter :: n_prof = 13     !! slots [-]
+  integer, parameter :: p_book_cpu = 14 !! rank 0: CPU time of messages, journal and table (unlike the wall
+                                        !! times above, not inflated when the rank shares its core) [s]
+  integer, parameter :: n_prof = 14     !! slots [-]
 
   integer, parameter :: row_slots = depth_master_works + 2  !! send buffers of a worker's rows [-]
 
@@ -211,7 +213,11 @@ contains
         code_ = exit_incomplete
         return
       end if
-      rows = results_rows(table)
+      if (table%n_have == table%n_cases) then
+        call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
+      else
+        rows = results_rows(table)
+      end if
       msg = ''
       call write_summary(summary, meta, rows, opts%command_line, st2, msg)
       if (st2 /= 0) then
@@ -430,7 +436,8 @@ contains
       type(MPI_Status), intent(in) :: st_    !! status of the probe that found the row [-]
       integer :: st, n, w_
       character(len=:), allocatable :: buf
-      real(wp) :: t_
+      real(wp) :: t_, c0, c1
+      call cpu_time(c0)
       t_ = MPI_Wtime()
       w_ = st_%MPI_SOURCE
       call MPI_Get_count(st_, MPI_CHARACTER, n)
@@ -450,6 +457,8 @@ contains
         active(w_) = .false.
       end if
       prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t_)
+      call cpu_time(c1)
+      prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
       if (.not. stopped) call record(row, w_)
     end subroutine handle
 
@@ -517,7 +526,8 @@ contains
       integer, intent(in) :: from         !! rank that ran it [-]
       character(len=msg_len) :: msg
       integer :: st
-      real(wp) :: t_, t2
+      real(wp) :: t_, t2, c0, c1
+      call cpu_time(c0)
       t_ = MPI_Wtime()
       call results_add(table, r)
       msg = ''
@@ -535,6 +545,8 @@ contains
       call flush_journal(.false.)
       t2 = MPI_Wtime()
       prof(p_record) = prof(p_record) + (t2 - t_)
+      call cpu_time(c1)
+      prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
       if (t2 >= t_next_ckpt .and. table%n_have < table%n_cases) then
         call flush_journal(.true.)
         t_ = MPI_Wtime()
@@ -692,7 +704,7 @@ contains
       t = 'loop='//g(p(p_loop))//' input='//g(p(p_input))//' sim='//g(p(p_sim))//' after='//g(p(p_after))// &
           ' wait='//g(p(p_wait))//' comm='//g(p(p_comm))//' record='//g(p(p_record))//' ckpt='//g(p(p_ckpt))// &
           ' cases='//int_text(nint(p(p_cases)))//' steps='//int_text(nint(p(p_steps)))//' rows='// &
-          int_text(nint(p(p_rows)))
+          int_text(nint(p(p_rows)))//' book_cpu='//g(p(p_book_cpu))
     end function acct
 
     function g(x) result(t)

@@ -262,7 +262,12 @@ contains
           ' of '//trim(inputs(i))//' is outside 1 .. '//int_text(table%n_cases)//'; ignored'
       end do
     end do
-    rows = results_rows(table)
+    if (allocated(rows)) deallocate (rows)
+    if (table%n_have == table%n_cases) then
+      call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
+    else
+      rows = results_rows(table)
+    end if
     msg = ''
     call write_summary(out_file, meta, rows, command_line, st, msg)
     if (st /= 0) then
