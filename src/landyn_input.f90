@@ -1765,18 +1765,19 @@ contains
   pure function fmt_real(x) result(s)
     real(wp), intent(in) :: x              !! value [any unit]
     character(len=:), allocatable :: s     !! e.g. '5.0e-6', '0.475', '16000.0' [-]
-    integer :: d, lo, hi, mid
+    integer :: d, lo, hi, mid, d_lo
     logical :: whole
     call whole_number_text(x, s, whole)
     if (whole) return
-    do d = 1, short_digits
+    d_lo = fewest_digits(x)
+    do d = d_lo, short_digits
       if (real_ok(d)) then
         s = pretty(es_text(x, d))
         return
       end if
     end do
-    lo = short_digits   ! fails
-    hi = 17             ! 17 digits always read back exactly
+    lo = max(short_digits, d_lo - 1)   ! fails
+    hi = 17                            ! 17 digits always read back exactly
     do while (hi - lo > 1)
       mid = (lo + hi)/2
       if (real_ok(mid)) then
@@ -1796,6 +1797,39 @@ contains
       real_ok = same_real(x, y)
     end function real_ok
   end function fmt_real
+
+  !> A lower bound of the digits fmt_real and fmt_angle can need, found with arithmetic only: the
+  !! fewest significant digits d for which x lies within a relative 1e-12 of a d-digit decimal.
+  !! A text that converts back to x (or, for fmt_angle, to an angle within a few ulps of x*rad2deg)
+  !! lies within a relative 1e-15 of x, so no shorter text can work. 1 when x is zero or too
+  !! large or small for exact powers of ten.
+  pure function fewest_digits(x) result(d)
+    real(wp), intent(in) :: x   !! value [any unit]
+    integer :: d                !! digits, 1..17 [-]
+    real(wp) :: a, r
+    integer :: e, k, dd
+    d = 1
+    a = abs(x)
+    if (.not. (a >= 1.0e-250_wp .and. a <= 1.0e250_wp)) return
+    e = floor(log10(a))
+    if (e > -22 .and. e < 22) then
+      if (a < 10.0_wp**e) e = e - 1   ! never too large: a too small e only makes the test milder
+    end if
+    do dd = 1, 17
+      k = dd - 1 - e                  ! a*10^k has dd digits before the point
+      if (abs(k) > 22) return         ! 10^|k| not exact: no bound (d = 1)
+      if (k >= 0) then
+        r = a*10.0_wp**k
+      else
+        r = a/10.0_wp**(-k)
+      end if
+      if (abs(r - anint(r)) <= 1.0e-12_wp*r) then
+        d = dd
+        return
+      end if
+    end do
+    d = 17
+  end function fewest_digits
 
   !> The text fmt_real gives for a whole number 1 <= |x| < 1e7 or a positive zero ('16000.0',
   !! '-3.0', '0.0'), made without formatted I/O; .false. for any other x.
@@ -1832,7 +1866,7 @@ contains
     real(wp), intent(in) :: x              !! angle [rad]
     character(len=:), allocatable :: s     !! angle in degrees [-]
     real(wp) :: cand(5)
-    integer :: d, k, lo, hi, mid
+    integer :: d, k, lo, hi, mid, d_lo
     cand(1) = x*rad2deg
     if (.not. abs(x) >= tiny(1.0_wp)) then   ! zero (or subnormal): no neighbours to try
       s = fmt_real(cand(1))
@@ -1842,7 +1876,8 @@ contains
     cand(3) = nearest(cand(1), -1.0_wp)
     cand(4) = nearest(cand(2), 1.0_wp)
     cand(5) = nearest(cand(3), -1.0_wp)
-    do d = 1, short_digits
+    d_lo = fewest_digits(cand(1))
+    do d = d_lo, short_digits
       k = first_ok(d)
       if (k > 0) then
         s = pretty(es_text(cand(k), d))
@@ -1853,7 +1888,7 @@ contains
       s = pretty(es_text(cand(1), 17))
       return
     end if
-    lo = short_digits
+    lo = max(short_digits, d_lo - 1)
     hi = 17
     do while (hi - lo > 1)
       mid = (lo + hi)/2
