@@ -105,7 +105,9 @@ def part_efficiency(a, run, res):
     for r in range(a.repeats):
         for ranks in ((1, 2) if r % 2 == 0 else (2, 1)):
             out = "eff_%d_%d.h5" % (ranks, r)
-            wall, r0, tot, _ = run.batch(ranks, "scaling.nml", out)
+            wall, r0, tot, out_text = run.batch(ranks, "scaling.nml", out)
+            if ranks == 2:
+                last2 = out_text
             walls[ranks].append(wall)
             accts[ranks].append((r0, tot))
             rate = a.cases * 3600.0 / (wall * ranks)
@@ -153,6 +155,10 @@ def part_efficiency(a, run, res):
           % (c_sim, steps, 1e6 * c_sim / steps, 1e6 * (c_in + c_after), 1e6 * c_in, 1e6 * c_after,
              100 * (c_in + c_after) / (c_sim + c_in + c_after), 1e6 * r0_row, startup))
     print("   results of 1 and 2 ranks identical row for row: %s" % ("yes" if same else "NO"))
+    print("   landyn_batch's report of the last 2-rank run:")
+    for line in last2.splitlines():
+        if re.match(r"\s*(this run|rank time|per case):", line):
+            print("   " + line)
     print("   after: " + load())
     res.update(c_sim=c_sim, c_in=c_in, c_after=c_after, steps=steps, step=c_sim / steps, speedup=speedup,
                startup=startup, same=same)
