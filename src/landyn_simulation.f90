@@ -21,8 +21,9 @@ module landyn_simulation
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
                             to_global
-  use landyn_contact, only: contact_law_t, make_contact_law
+  use landyn_contact, only: contact_law_t, make_contact_law, advance_contact_state
   use landyn_friction, only: friction_law_t, make_friction_law
+  use landyn_footpad_state, only: footpad_state_t
   use landyn_tube_friction, only: tube_friction_t, make_tube_friction
   implicit none
   private
@@ -35,10 +36,11 @@ module landyn_simulation
     type(body_t) :: body
     type(gear_t) :: gear(max_gears)
     type(terrain_plane_t) :: plane(max_gears)
-    ! One law instance per footpad, allocated here once: laws with history (contact) or a stick
-    ! state (friction) keep their footpad's state in their instance; the others are plain copies.
-    class(contact_law_t), allocatable :: contact(:)    !! normal contact law of footpad i
-    class(friction_law_t), allocatable :: friction(:)  !! friction law of footpad i
+    ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
+    ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
+    class(contact_law_t), allocatable :: contact       !! normal contact law
+    class(friction_law_t), allocatable :: friction     !! friction law
+    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
@@ -120,8 +122,6 @@ contains
     type(gear_geometry_t) :: geom
     type(strut_mass_t) :: sm(3)
     type(tube_friction_t) :: tube
-    class(contact_law_t), allocatable :: contact
-    class(friction_law_t), allocatable :: friction
     real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
     integer :: i, k
     character(len=msg_len) :: m2
@@ -129,12 +129,11 @@ contains
     stat = 0
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_contact_law(inp%contact, contact, stat, m2)
+    call make_contact_law(inp%contact, model%contact, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
-    allocate (model%contact(model%n_gears), source=contact)
-    call make_friction_law(inp%friction, friction, stat, m2)
+    call make_friction_law(inp%friction, model%friction, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
-    allocate (model%friction(model%n_gears), source=friction)
+    model%footpad = footpad_state_t()
     call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
                             inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
                             tube, stat, m2)
@@ -247,6 +246,7 @@ contains
     real(wp) :: w_normal, w_friction, w_thrust, w_impact, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
     real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
     integer :: mode(3, max_gears)
+    type(footpad_state_t) :: trial(max_gears)
     logical :: touched
     integer(kind=8) :: c0, c1, crate
     character(len=msg_len) :: m2
@@ -293,21 +293,23 @@ contains
         vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
         delta(i) = penetration(model%plane(i), xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), vd(:, i))
-        if (model%contact(i)%has_history) call model%contact(i)%update(delta(i), delta_dot(i))
+        ! trial footpad state of this step: committed with the step below
+        trial(i) = model%footpad(i)
+        if (model%contact%has_history) call advance_contact_state(trial(i)%contact, delta(i), delta_dot(i))
         if (delta(i) > 0.0_wp) then
-          fn(i) = model%contact(i)%normal_force(delta(i), delta_dot(i))
+          fn(i) = model%contact%normal_force(delta(i), delta_dot(i), trial(i)%contact)
           touched = .true.
         else
           fn(i) = 0.0_wp
         end if
         vslip = slip_velocity(model%plane(i), vd(:, i))
-        if (model%friction(i)%has_stiction) then
+        if (model%friction%has_stiction) then
           ! stick state: advanced with the footpad's tangential displacement over the last step
           dslip = 0.0_wp
           if (n > 0) dslip = slip_velocity(model%plane(i), xd(:, i) - xd_prev(:, i))
-          call model%friction(i)%stick_slip_force(vslip, dslip, fn(i), ft)
+          call model%friction%stick_slip_force(trial(i)%friction, vslip, dslip, fn(i), ft)
         else
-          ft = model%friction(i)%friction_force(vslip, fn(i))
+          ft = model%friction%friction_force(vslip, fn(i))
         end if
         fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
       end do
@@ -377,7 +379,7 @@ contains
         ke_legs = leg_energy(model, inp%simulation%gravity)
         e_el = 0.0_wp
         do i = 1, ng
-          if (delta(i) > 0.0_wp) e_el = e_el + model%contact(i)%elastic_energy(delta(i))
+          if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i), trial(i)%contact)
         end do
         call record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
                     ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
@@ -403,6 +405,8 @@ contains
         return
       end if
       w_impact = w_impact + e_imp
+      ! ---- commit: footpad histories and stick states, strut modes
+      model%footpad(1:ng) = trial(1:ng)
       do i = 1, ng
         call gear_settle(model%gear(i))
         call count_mode_switches(model%gear(i), mode(:, i), res%mode_switches(:, i))
@@ -609,8 +613,9 @@ contains
       fn(i) = 0.0_wp
       fg(:, i) = 0.0_wp
       if (delta(i) > 0.0_wp) then
-        fn(i) = model%contact(i)%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
-        e_el = e_el + model%contact(i)%elastic_energy(delta(i))
+        fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)), &
+                                           model%footpad(i)%contact)
+        e_el = e_el + model%contact%elastic_energy(delta(i), model%footpad(i)%contact)
       end if
     end do
     ke_legs = leg_energy(model, inp%simulation%gravity)
