@@ -336,7 +336,8 @@ contains
     real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
     real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
     real(wp) :: vslip(2), dslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
-    real(wp) :: xt(3), e_el, ke_legs, tilt, speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
+    real(wp) :: xt(3), e_el, ke_legs, ke_body, tilt, speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
+    real(wp) :: fnm
     type(footpad_state_t) :: trial(max_gears)
     character(len=msg_len) :: m2
 
@@ -377,17 +378,25 @@ contains
         end if
         fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
       end do
-      ! ---- energy audit: work of the ground forces over the last step (force x displacement)
+      thrust_l = 0.0_wp
+      if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) thrust_l = inp%engine%thrust*inp%engine%direction
+      thrust_g = mv3(r, thrust_l)
+      ! ---- energy audit: work of the ground forces and the thrust over the last step, by the
+      ! trapezoidal rule (mean of the forces at both ends times the displacement): the scheme is
+      ! the leapfrog (positions at t_n, the stored velocities at t_n - dt/2), whose kinetic energy
+      ! at t_n (velocities synchronised, below) changes by exactly that to second order
       if (n > 0) then
         do i = 1, ng
-          sim%loop%w_normal = sim%loop%w_normal + sim%loop%fn_prev(i)*(delta(i) - sim%loop%delta_prev(i))
-          sim%loop%w_friction = sim%loop%w_friction - dot_product(sim%loop%fground_prev(:, i), xd(:, i) - sim%loop%xd_prev(:, i)) &
-                           - sim%loop%fn_prev(i)*(delta(i) - sim%loop%delta_prev(i))
+          fnm = 0.5_wp*(sim%loop%fn_prev(i) + fn(i))
+          sim%loop%w_normal = sim%loop%w_normal + fnm*(delta(i) - sim%loop%delta_prev(i))
+          sim%loop%w_friction = sim%loop%w_friction &
+            - dot_product(0.5_wp*(sim%loop%fground_prev(:, i) + fground(:, i)), xd(:, i) - sim%loop%xd_prev(:, i)) &
+            - fnm*(delta(i) - sim%loop%delta_prev(i))
           if (sim%loop%fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
             + norm2(slip_velocity(model%plane(i), xd(:, i) - sim%loop%xd_prev(:, i)))
         end do
         xt = body_point_position(model%body, inp%engine%point)
-        sim%loop%w_thrust = sim%loop%w_thrust + dot_product(sim%loop%thrust_prev, xt - sim%loop%xt_prev)
+        sim%loop%w_thrust = sim%loop%w_thrust + dot_product(0.5_wp*(sim%loop%thrust_prev + thrust_g), xt - sim%loop%xt_prev)
         sim%loop%xt_prev = xt
       end if
       do i = 1, ng
@@ -415,13 +424,10 @@ contains
       fb_l = symmetric_sum(gf, ng)
       force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
-      ! engine thrust
-      thrust_l = 0.0_wp
+      ! engine thrust (computed with the footpad forces above)
       if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) then
-        thrust_l = inp%engine%thrust*inp%engine%direction
         moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
       end if
-      thrust_g = mv3(r, thrust_l)
       force = force + thrust_g
       sim%loop%thrust_prev = thrust_g
       ! ---- Step 6: body accelerations
@@ -441,13 +447,15 @@ contains
 
       ! ---- output sample (state at t_n with the forces at t_n)
       if (t >= sim%loop%t_next_out - 0.5_wp*dt) then
-        ke_legs = leg_energy(model, inp%simulation%gravity)
+        ! kinetic energies with the velocities at t_n: the stored ones (t_n - dt/2) plus half a step
+        ! of the accelerations just computed
+        call synchronised_energies(model, dt, inp%simulation%gravity, ke_body, ke_legs)
         e_el = 0.0_wp
         do i = 1, ng
           if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i), trial(i)%contact)
         end do
         call record(res, model, t, ovl, xd, fground, fn, delta, vd, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
-                    sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, inp%simulation%gravity)
+                    sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, inp%simulation%gravity, ke_body)
         sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
       end if
       if (n == nstep) then
@@ -606,9 +614,38 @@ contains
     end do
   end subroutine count_mode_switches
 
+  !> Kinetic energies at t_n for the audit. The semi-implicit Euler step is the leapfrog: its
+  !! positions belong to t_n and its stored velocities to t_n - dt/2, so the velocities at t_n are
+  !! the stored ones plus dt/2 times the accelerations evaluated at t_n (body and legs). The model
+  !! is used as scratch and left as it was.
+  subroutine synchronised_energies(model, dt, gravity, ke_body, ke_legs)
+    type(model_t), intent(inout) :: model   !! model with the accelerations of t_n; unchanged on return
+    real(wp), intent(in) :: dt              !! step [s]
+    real(wp), intent(in) :: gravity         !! [m/s^2]
+    real(wp), intent(out) :: ke_body        !! body kinetic energy (total mass) [J]
+    real(wp), intent(out) :: ke_legs        !! leg energy terms (landyn leg_energy) [J]
+    real(wp) :: v(3), w(3), qd(9, max_gears)
+    integer :: i
+    v = model%body%v
+    w = model%body%omega
+    model%body%v = v + 0.5_wp*dt*model%body%acc
+    model%body%omega = w + 0.5_wp*dt*model%body%alpha
+    do i = 1, model%n_gears
+      qd(:, i) = model%gear(i)%qd
+      model%gear(i)%qd = qd(:, i) + 0.5_wp*dt*model%gear(i)%qdd
+    end do
+    ke_body = body_kinetic_energy(model%body)
+    ke_legs = leg_energy(model, gravity)
+    model%body%v = v
+    model%body%omega = w
+    do i = 1, model%n_gears
+      model%gear(i)%qd = qd(:, i)
+    end do
+  end subroutine synchronised_energies
+
   !> Records one output sample.
   subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
-                    ke0, pe0, ke_legs, e_el, gravity)
+                    ke0, pe0, ke_legs, e_el, gravity, ke_body)
     type(sim_result_t), intent(inout) :: res      !! result
     type(model_t), intent(in) :: model            !! model
     real(wp), intent(in) :: t                     !! time [s]
@@ -627,6 +664,7 @@ contains
     real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
     real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
     real(wp), intent(in) :: gravity               !! [m/s^2]
+    real(wp), intent(in), optional :: ke_body     !! body kinetic energy; default from the stored velocities [J]
     integer :: k, i
     real(wp) :: s(3), pe, ke, crush, e_in
     if (res%n_out >= size(res%t)) return
@@ -662,6 +700,7 @@ contains
     res%acc_normal_force = 0.0_wp
     res%acc_strut_force = 0.0_wp
     ke = body_kinetic_energy(model%body)
+    if (present(ke_body)) ke = ke_body
     pe = -model%body%mass*gravity*model%body%x(3)
     e_in = ke0 + (pe0 - pe) + w_thrust
     res%energy(k, 1) = ke
