@@ -31,7 +31,7 @@ module landyn_input
   use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
                                   find_item_names, line_of, first_nonblank, one_line => one_line_text, &
                                   strip_commas => separators_to_blanks, remove_blanks, mask_non_ascii, &
-                                  bare_name_in_value
+                                  bare_name_in_value, numbers_within
   implicit none
   private
 
@@ -269,7 +269,7 @@ contains
     end if
     call read_whole_file(path, text, stat, msg)
     if (stat /= 0) then
-      call errors%add(path//': cannot read the input deck: '//msg)
+      call errors%add(path//': cannot open or read the input deck: '//msg)
       stat = 2
       return
     end if
@@ -714,7 +714,7 @@ contains
                         fmt_int(string_limit(ig, base))//' characters')
         cycle
       end if
-      call check_magnitudes(value, ok)
+      ok = numbers_within(value, max_decimal_exponent)
       if (.not. ok) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
                         snippet(value)//' is out of range; valid: |value| <= 1e30')
@@ -790,79 +790,6 @@ contains
     h = '0x'//digits(b/16 + 1:b/16 + 1)//digits(mod(b, 16) + 1:mod(b, 16) + 1)
   end function hex_byte
 
-  !> Reject numbers whose decimal exponent exceeds max_decimal_exponent before they are read
-  !! (reading them would overflow, which traps in Debug builds).
-  pure subroutine check_magnitudes(value, ok)
-    character(len=*), intent(in) :: value  !! value text of one item [-]
-    logical, intent(out) :: ok             !! no number is too large [-]
-    integer :: p, n, nint_digits, expo, esign, mag
-    logical :: in_mantissa_digits, seen_point, lead
-    character(len=1) :: quote, c
-    ok = .true.
-    n = len(value)
-    quote = ' '
-    p = 1
-    do while (p <= n)
-      c = value(p:p)
-      if (quote /= ' ') then
-        if (c == quote) quote = ' '
-        p = p + 1
-        cycle
-      end if
-      if (c == '"' .or. c == "'") then
-        quote = c
-        p = p + 1
-        cycle
-      end if
-      if (.not. (is_digit(c) .or. c == '.')) then
-        p = p + 1
-        cycle
-      end if
-      ! A number starts here: count significant integer digits, then read the exponent.
-      nint_digits = 0
-      seen_point = .false.
-      lead = .true.
-      in_mantissa_digits = .true.
-      do while (p <= n .and. in_mantissa_digits)
-        c = value(p:p)
-        if (is_digit(c)) then
-          if (.not. seen_point) then
-            if (.not. (lead .and. c == '0')) then
-              nint_digits = nint_digits + 1
-              lead = .false.
-            end if
-          end if
-          p = p + 1
-        else if (c == '.' .and. .not. seen_point) then
-          seen_point = .true.
-          p = p + 1
-        else
-          in_mantissa_digits = .false.
-        end if
-      end do
-      expo = 0
-      if (p <= n) then
-        c = lower(value(p:p))
-        if (c == 'e' .or. c == 'd' .or. c == 'q') p = p + 1
-        esign = 1
-        if (p <= n) then
-          if (value(p:p) == '+' .or. value(p:p) == '-') then
-            if (value(p:p) == '-') esign = -1
-            p = p + 1
-          end if
-        end if
-        do while (p <= n)
-          if (.not. is_digit(value(p:p))) exit
-          if (expo < 100000) expo = 10*expo + (iachar(value(p:p)) - iachar('0'))
-          p = p + 1
-        end do
-        expo = esign*expo
-      end if
-      mag = nint_digits - 1 + expo
-      if (nint_digits > 0 .and. mag > max_decimal_exponent) ok = .false.
-      if (nint_digits == 0 .and. expo > max_decimal_exponent) ok = .false.
-    end do
-  end subroutine check_magnitudes
 
   !> Read one item (buffer "&group name = value /") into the group's part of `inp`.
   subroutine read_item(ig, buffer, inp, ios, msg)

@@ -20,6 +20,8 @@ module landyn_campaign_deck
   use landyn_kinds, only: wp, max_gears
   use landyn_config, only: landyn_input_t, default_input, unset_real, is_set, max_stages, path_len
   use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
+  use landyn_namelist_text, only: has_nonfinite_word, numbers_within
+  use landyn_files, only: read_whole_file
   use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, real_text, &
                                  real_text_short, quote_text, close_name_hint, dir_of, join_path, base_name_no_ext
   use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
@@ -285,8 +287,9 @@ contains
     call parse_campaign_deck(deck_text, deck_name, camp, rc, errors)
     camp%base_text = base_text
     camp%list_text = list_text
-    if (len_trim(rc%base_deck) > 0 .and. len(base_text) > 0) call attach_base_deck(camp, errors)
-    if (camp%mode == 'list' .and. len_trim(rc%list_file) > 0 .and. len(list_text) > 0) call attach_list(camp, errors)
+    ! an empty base deck is valid (the defaults); an empty case list is reported by attach_list
+    if (len_trim(rc%base_deck) > 0) call attach_base_deck(camp, errors)
+    if (camp%mode == 'list' .and. len_trim(rc%list_file) > 0) call attach_list(camp, errors)
     if (errors%count() == n0) call finish_campaign(camp, rc, errors)
     stat = merge(0, 1, errors%count() == n0)
   end subroutine build_campaign
@@ -297,29 +300,7 @@ contains
     character(len=:), allocatable, intent(out) :: text   !! contents [-]
     integer, intent(out) :: stat                         !! 0 ok [-]
     character(len=:), allocatable, intent(out) :: msg    !! reason on failure [-]
-    integer :: u, nbytes
-    character(len=256) :: iomsg
-    iomsg = ''
-    text = ''
-    msg = ''
-    open (newunit=u, file=trim(path), access='stream', form='unformatted', action='read', status='old', &
-          iostat=stat, iomsg=iomsg)
-    if (stat /= 0) then
-      msg = trim(iomsg)
-      return
-    end if
-    inquire (unit=u, size=nbytes)
-    if (nbytes < 0) then
-      stat = 1
-      msg = 'its size is unknown'
-      close (u)
-      return
-    end if
-    deallocate (text)
-    allocate (character(len=nbytes) :: text)
-    if (nbytes > 0) read (u, iostat=stat, iomsg=iomsg) text
-    close (u)
-    if (stat /= 0) msg = trim(iomsg)
+    call read_whole_file(path, text, stat, msg)
   end subroutine read_text_file
 
   ! ================================================================ deck parsing
@@ -1427,13 +1408,21 @@ contains
       end if
       do j = 1, ncol
         iomsg = ''
-        read (cells(j), *, iostat=ios, iomsg=iomsg) rows(j, nrow)
+        ios = 0
+        ! one number per cell: no second value, separator or comment, nothing beyond |x| < 1e31
+        if (scan(trim(adjustl(cells(j))), ' '//achar(9)//';#/*!') > 0 .or. &
+            has_nonfinite_word(cells(j)) .or. .not. numbers_within(cells(j), 30) .or. &
+            verify(trim(adjustl(cells(j))), '0123456789+-.eEdD') > 0) then
+          ios = 1
+        else
+          read (cells(j), *, iostat=ios, iomsg=iomsg) rows(j, nrow)
+        end if
         if (ios == 0) then
           if (.not. ieee_is_finite(rows(j, nrow))) ios = -1
         end if
         if (ios /= 0 .or. len_trim(cells(j)) == 0) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &
-                          quote_text(trim(cells(j)))//' is not a finite number')
+                          quote_text(trim(cells(j)))//' is not one finite number (|x| < 1e31, one per cell)')
           rows(j, nrow) = 0.0_wp
         else if (camp%par(j)%is_int .and. abs(rows(j, nrow) - anint(rows(j, nrow))) > 0.0_wp) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &
