@@ -260,7 +260,7 @@ contains
         call move_alloc(tmp, sd%variant)
       end if
       if (ios /= 0) then
-        call errors%add(path//': &variant '//int_text(k)//': '//trim(msg))
+        call errors%add(path//': &variant '//int_text(k)//': '//trim(msg)//' (&variant takes label and set)')
         write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
         sd%variant(nv)%overrides = ''
         cycle
