@@ -1422,7 +1422,7 @@ contains
         end if
         if (ios /= 0 .or. len_trim(cells(j)) == 0) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &
-                          quote_text(trim(cells(j)))//' is not one finite number (|x| < 1e31, one per cell)')
+                          quote_text(trim(cells(j)))//' is not a finite number (valid: one number per cell, |x| < 1e31)')
           rows(j, nrow) = 0.0_wp
         else if (camp%par(j)%is_int .and. abs(rows(j, nrow) - anint(rows(j, nrow))) > 0.0_wp) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &
