@@ -212,7 +212,7 @@ class Fuzzer:
             rc, out = self.run("batch", exe, ["--check", "c.nml"], d, files)
             self.check_files("batch", rc, d, files, files)
             if rc == 0 and rng.random() < 0.3 and files["lc.nml"] == BASE_DECK:
-                rc, out = self.run("batch", exe, ["--case", "1", "-q", "-o", "case.h5"], d, files)
+                rc, out = self.run("batch", exe, ["c.nml", "--case", "1", "-q", "-o", "case.h5"], d, files)
                 written = ["case.h5"] if rc == 0 else []
                 self.check_files("batch", rc, d, list(files) + written + [f for f in os.listdir(d)
                                                                          if f.startswith("c_case")], files)
