@@ -29,7 +29,7 @@ module landyn_campaign_deck
   private
 
   public :: campaign_t, param_t, criteria_t
-  public :: load_campaign, build_campaign, case_values, case_deck_text, case_input, text_fingerprint
+  public :: load_campaign, build_campaign, use_summary_file, case_values, case_deck_text, case_input, text_fingerprint
   public :: param_description, max_values, max_saved, max_body_points, max_params, label_len
   public :: run_variable_table, default_deck_variable, default_deck_variables
 
@@ -90,6 +90,7 @@ module landyn_campaign_deck
     character(len=:), allocatable :: list_text       !! case list text [-]
     character(len=:), allocatable :: summary_file    !! summary file [-]
     character(len=:), allocatable :: history_prefix  !! history files are <prefix><id>.h5 [-]
+    logical :: history_prefix_given = .false.         !! &campaign history_prefix was given [-]
     integer(int64) :: seed = 1_int64                 !! Monte Carlo seed [-]
     integer :: n_samples = 0                         !! Monte Carlo sample count [-]
     integer :: n_cases = 0                           !! number of cases [-]
@@ -271,6 +272,17 @@ contains
     stat = merge(0, 1, errors%count() == n0)
   end subroutine load_campaign
 
+  !> With a summary file given on the command line (-o), the time-history files follow it
+  !! (<summary without .h5>_case<id>.h5) unless the deck names history_prefix, so that two runs
+  !! with different -o never overwrite each other's histories. Call on every rank after the
+  !! campaign is built (camp%summary_file, the deck's, is left as it is).
+  subroutine use_summary_file(camp, path)
+    type(campaign_t), intent(inout) :: camp    !! campaign [-]
+    character(len=*), intent(in) :: path       !! summary file from -o ('' keeps the deck's) [-]
+    if (len(path) == 0) return
+    if (.not. camp%history_prefix_given) camp%history_prefix = strip_h5(path)//'_case'
+  end subroutine use_summary_file
+
   !> Build a campaign from the texts of its deck, base deck and case list ('' when absent).
   !! stat = 0 ready, 1 problems found (appended to `errors`).
   subroutine build_campaign(deck_name, deck_text, base_text, list_text, camp, errors, stat)
@@ -413,6 +425,7 @@ contains
     end if
     if (len_trim(rc%history_prefix) > 0) then
       camp%history_prefix = trim(rc%history_prefix)
+      camp%history_prefix_given = .true.
     else
       camp%history_prefix = strip_h5(camp%summary_file)//'_case'
     end if

@@ -340,6 +340,16 @@ def t_batch_misuse(x, d):
     rc, out, err = run(B, ["e.nml", "-o", ""], d)
     expect(rc, 1, "landyn_batch -o '' is a usage error", err)
 
+    write(d, "h.nml", "&campaign base_deck = 'empty.nml', mode = 'grid', save_histories = 1 /\n"
+                      "&parameter name = 'simulation%t_end', values = 0.005 /\n")
+    rc1, out, err1 = run(B, ["-q", "h.nml", "-o", "one.h5"], d)
+    rc2, out, err2 = run(B, ["-q", "h.nml", "-o", "two.h5"], d)
+    check(rc1 == 0 and rc2 == 0, "two campaigns with different -o run (%s %s)" % (err1[-200:], err2[-200:]))
+    check(os.path.exists(os.path.join(d, "one_case000001.h5")) and os.path.exists(os.path.join(d, "two_case000001.h5")),
+          "their history files follow -o and do not overwrite each other: %s" % files_in(d))
+    rc, out, err = run(B, ["h.nml", "--case", "1", "-q", "-o", "three.h5"], d)
+    check(rc == 0 and os.path.exists(os.path.join(d, "three_case000001.h5")), "--case -o: history files follow -o")
+
     text = open(os.path.join(d, "e.nml")).read()
     rc, out, err = run(B, ["-q", "e.nml", "-o", "e.nml", "--force"], d)
     expect(rc, 4, "the summary file may not be the campaign deck, even with --force", err)
