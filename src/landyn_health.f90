@@ -109,8 +109,12 @@ contains
     ! ---- 3 initial penetration (first stored sample)
     n = res%n_out
     if (n >= 1 .and. allocated(res%penetration)) then
-      r = maxval(res%penetration(1:ng, 1))
-      if (.not. ieee_is_finite(r)) r = huge(1.0_wp)
+      ! (finiteness first: comparing a NaN traps in Debug builds)
+      if (all(ieee_is_finite(res%penetration(1:ng, 1)))) then
+        r = maxval(res%penetration(1:ng, 1))
+      else
+        r = huge(1.0_wp)
+      end if
       if (r > initial_penetration_max) then
         write (b1, '(es10.3)') r
         call put(3, health_fail, 'a footpad starts '//trim(adjustl(b1))//' m below the ground (at most 1 mm): '// &
@@ -122,8 +126,12 @@ contains
     if (n >= 1 .and. allocated(res%strut_length)) then
       do ig = 1, ng
         do k = 1, 3
-          r = minval(res%strut_length(k, ig, 1:n))
-          if (.not. (r > 0.0_wp) .or. .not. all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
+          if (all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
+            r = minval(res%strut_length(k, ig, 1:n))
+          else
+            r = -huge(1.0_wp)
+          end if
+          if (r <= 0.0_wp) then
             write (b1, '(es10.3)') r
             write (b2, '(i0,a,i0)') ig, ', strut ', k
             call put(4, health_fail, 'gear '//trim(b2)//': strut length reaches '//trim(adjustl(b1))// &
