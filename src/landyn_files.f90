@@ -40,10 +40,10 @@ module landyn_files
   interface
     subroutine c_file_info(path, kind, dev, ino, writable) bind(C, name='landyn_file_info')
       import :: c_char, c_int, c_long_long
-      character(kind=c_char), dimension(*), intent(in) :: path
-      integer(c_int), intent(out) :: kind
-      integer(c_long_long), intent(out) :: dev, ino
-      integer(c_int), intent(out) :: writable
+      character(kind=c_char), dimension(*), intent(in) :: path   !! NUL-terminated file name [-]
+      integer(c_int), intent(out) :: kind                        !! kind_* [-]
+      integer(c_long_long), intent(out) :: dev, ino              !! device and inode: the file's identity [-]
+      integer(c_int), intent(out) :: writable                    !! 1: a write permission bit is set [-]
     end subroutine c_file_info
   end interface
 
