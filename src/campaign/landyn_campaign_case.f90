@@ -14,6 +14,7 @@ module landyn_campaign_case
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_health, only: health_t, check_health, health_fail
   use landyn_output, only: write_result_file
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
   use landyn_kinematics, only: rot_zyx
@@ -127,6 +128,7 @@ contains
     type(landyn_input_t) :: inp
     type(input_errors_t) :: errors
     type(sim_result_t) :: res
+    type(health_t) :: health
     real(wp) :: values(camp%n_par)
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
@@ -168,6 +170,12 @@ contains
       return
     end if
     row%status = status_ok
+    call check_health(inp, res, health)
+    if (health%status() == health_fail) then
+      ! physically meaningless (docs/health.md): recorded as a failed run, its numbers kept
+      row%status = status_failed
+      row%message = 'run-health check failed: '//health%messages
+    end if
     row%crush = res%crush_net
     row%margin = res%stroke_margin
     row%min_margin = minval(res%stroke_margin)
@@ -186,7 +194,7 @@ contains
     if (save_history) then
       path = history_file_name(camp, id)
       inp%output%file = path
-      call write_result_file(path, inp, res, command_line, st, msg)
+      call write_result_file(path, inp, res, command_line, st, msg, health)
       if (st == 0) then
         row%history_file = path
       else

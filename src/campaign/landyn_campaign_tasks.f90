@@ -9,7 +9,7 @@ module landyn_campaign_tasks
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_campaign_nml, only: int_text, real_text_short, lower_case
-  use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description
+  use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
                                    results_init, results_add, results_rows, results_missing, success_probability
@@ -144,6 +144,7 @@ contains
     end if
     path = out_file
     if (len_trim(path) == 0) path = part_file_name(camp, k1, k2)
+    call use_summary_file(camp, out_file)   ! history files follow -o (issue 10)
     allocate (rows(k2 - k1 + 1))
     do id = k1, k2
       if (.not. quiet) write (err_u, '(a)') 'landyn_batch: running case '//int_text(id)//' of '//int_text(camp%n_cases)

@@ -101,7 +101,10 @@ def test_grid(env):
     """2 x 2 grid on 1 and 2 ranks: identical; saved history = what landyn computes."""
     env.mpi(1, "grid.nml", "-o", "grid_np1.h5")
     env.mpi(2, "grid.nml", "-o", "grid_np2.h5")
-    env.same("grid_np1.h5", "grid_np2.h5", history=True)
+    # history files follow -o (issue 10): grid_np1_case*.h5 and grid_np2_case*.h5, never shared
+    env.same("grid_np1.h5", "grid_np2.h5")
+    check(os.path.exists(env.path("grid_np1_case000002.h5")) and os.path.exists(env.path("grid_np2_case000002.h5")),
+          "each run's history files are named after its summary file (-o)")
     f = h5py.File(env.path("grid_np2.h5"), "r")
     check(list(f["cases/case_id"][()]) == [1, 2, 3, 4], "rows ordered by case id")
     check(f.attrs["complete"] == 1 and f.attrs["n_rows"] == 4, "summary complete")
@@ -113,7 +116,7 @@ def test_grid(env):
     check(f["cases/crush_length"].shape == (4, 4, 3), "crush_length shape (cases, gears, struts)")
     check(all(f["cases/status"][()] == 0), "all cases ran")
     hist = f["cases/history_file"][()][1].decode()
-    check(hist == "grid_case000002.h5" and os.path.exists(env.path(hist)), "history of case 2 written")
+    check(hist == "grid_np2_case000002.h5" and os.path.exists(env.path(hist)), "history of case 2 written")
     h = h5py.File(env.path(hist), "r")
     check(np.array_equal(h["summary/crush_length"][()], f["cases/crush_length"][1]),
           "history file and summary row agree")
