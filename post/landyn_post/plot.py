@@ -529,7 +529,8 @@ def plot_options(a, res: Result) -> PlotOptions:
 
 def _main(argv=None) -> int:
     p = cli.make_parser(
-        "landyn-plot", "Standard figures of a LANDYN result file (PNG and/or PDF), optionally a report PDF.",
+        "landyn-plot", "Standard figures of a LANDYN result file (PNG and/or PDF), optionally a report PDF;\n"
+        "for a landyn_study file the crush length per measure option and variant (<stem>_study.png).",
         epilog="figures:\n" + "\n".join(f"  {n:15s} {c}" for n, _, c in FIGURES)
         + "\n\nThe crush-length figure shows the paper's Table 3 (theory, MSC Adams) when the result's touchdown\n"
           "conditions are one of its load cases (or --load-case), or the values of --reference CSV.\n"
@@ -555,6 +556,16 @@ def _main(argv=None) -> int:
                    help="verdict criterion: every stroke margin >= MM (default 0: no strut bottoms out)")
     p.add_argument("--max-overload", type=float, metavar="G", help="verdict criterion: peak overload <= G")
     a = p.parse_args(argv)
+    from .exchange import file_kind
+    kind = file_kind(a.file)
+    if kind == "study":
+        from .study import write_study_figures
+        for fn in write_study_figures(a.file, cli.output_dir(a.outdir or cli.stem(a.file) + "_plots"), a.format, a.dpi):
+            print(fn)
+        return cli.EXIT_OK
+    if kind == "campaign":
+        raise LandynPostError(f"{a.file}: a campaign summary: plot it with landyn-dispersion (Monte Carlo: histograms, "
+                              "failure causes, --sensitivity) or landyn-envelope (grid: stability envelope)")
     res = load(a.file)
     opts = plot_options(a, res)
     outdir = cli.output_dir(a.outdir or cli.stem(a.file) + "_plots")
