@@ -227,14 +227,15 @@ def sensitivity_figure(out, title, labels, eng, inputs, sens, success, ran, crit
     metrics = [m for m in SENS_METRICS if np.isfinite(sens[m[0]][ran]).sum() >= 3 and np.ptp(sens[m[0]][ran]) > 0]
     rho = np.full((len(labels), len(metrics)), np.nan)
     print("  Spearman rank correlation (input vs metric; p-value in parentheses):")
-    print("    " + f"{'input':44s}" + "".join(f"{m[1][:22]:>24s}" for m in metrics))
+    w = max([len(eng[lab]) for lab in labels] + [5]) + 2
+    print("    " + f"{'input':{w}s}" + "".join(f"{m[1][:22]:>24s}" for m in metrics))
     for i, lab in enumerate(labels):
         cells = []
         for j, m in enumerate(metrics):
             r, pv, _ = spearman(inputs[lab][ran], sens[m[0]][ran])
             rho[i, j] = r
             cells.append(f"{r:+.3f} ({pv:.2g})" if np.isfinite(r) else "-")
-        print("    " + f"{eng[lab][:44]:44s}" + "".join(f"{c:>24s}" for c in cells))
+        print("    " + f"{eng[lab]:{w}s}" + "".join(f"{c:>24s}" for c in cells))
     scat = [m for m in metrics if m[0] in ("min_stroke_margin", "peak_overload")]
     ncol = max(len(labels), 1)
     fig, axs = plt.subplots(len(scat) + 1, ncol, figsize=(3.6 * ncol, 3.0 * (len(scat) + 1)), squeeze=False)
