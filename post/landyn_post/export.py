@@ -60,7 +60,7 @@ def _main(argv=None) -> int:
                "  --summary    also <stem>_crush.csv (or next to OUT): per-strut crush lengths in Table 3 rows\n"
                "  --tables     every other table as CSV: <stem>_summary.csv (per gear and strut), <stem>_scalars.csv\n"
                "               (every scalar, the provenance and the root attributes) ... in DIR (default <stem>_tables/)\n"
-               "  --mat        every dataset to MATLAB (default <stem>.mat; layout in docs/output.md)\n"
+               "  --mat        every dataset to MATLAB (default <stem>.mat; layout in post/README.md)\n"
                "  --xdmf       <stem>.xdmf + <stem>_mesh.h5: struts and footpads moving, for ParaView\n"
                "outputs of a campaign summary or a study file:\n"
                "  default      every table as CSV in OUT (default <stem>_csv/): campaign <stem>_cases.csv (one\n"

@@ -176,7 +176,7 @@ def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
     """Axial force of every strut over time (compression +), primaries and secondaries, with the
     honeycomb crush levels."""
     plt = _plt()
-    fig, axs = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    fig, axs = plt.subplots(2, 1, figsize=(9.5, 7), sharex=True)
     t = res.time
     notes = [("(a) primaries", draw_curves(axs[0], t, [(f"gear {i + 1}", res.strut_force[:, i, 0] * KN,
                                                          dict(color=_gear_color(i))) for i in range(res.n_gears)])),
@@ -197,8 +197,8 @@ def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
     axs[0].set_ylabel("primary axial force [kN]\n(compression +)")
     axs[1].set_ylabel("secondary axial force [kN]\n(compression +)")
     axs[1].set_xlabel("time [s]")
-    axs[0].legend(fontsize=7, ncol=4, loc="center right")
-    axs[1].legend(fontsize=6, ncol=4, loc="center right")
+    axs[0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    axs[1].legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     for ax in axs:
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Strut axial forces")
