@@ -16,9 +16,10 @@ when it exits 0. Skipped (listed in SKIP with the reason, and printed):
   * the two long paper studies study_contact.nml (8 variants) and study_friction.nml (7 variants),
     about 30 s each on one core: study_tube.nml runs the same program and paths.
 
-Shortened (the command as written, on a copy of its deck): examples/campaign/dispersion.nml runs
-with n_samples = 16 instead of 500 (500 cases take about 3 minutes on 2 cores, beyond the test
-budget); the histogram and sensitivity example then reads that file.
+Shortened (the command as written, on a copy of its deck, for the 10-minute budget of the test
+suite): examples/campaign/dispersion.nml runs with n_samples = 16 instead of 500 (500 cases take
+about 3 minutes on 2 cores), examples/campaign/envelope.nml on a 3 x 3 grid instead of 7 x 7
+(49 cases, 1.5 minutes on one loaded core); the plotting and export examples read those files.
 
 A console script declared in SOURCE_DIR/post/pyproject.toml but missing from .venv/bin (an
 environment installed before the script was added; `pip install -e post/` creates it) is
@@ -43,7 +44,9 @@ SKIP = {
     "build/release/landyn_study input/study_friction.nml": "long (7 variants x 2 load cases, ~30 s); "
                                                            "study_tube.nml runs the same program",
 }
-SHORTEN = {"examples/campaign/dispersion.nml": (r"(?m)^(\s*n_samples\s*=\s*)\d+", r"\g<1>16")}
+SHORTEN = {"examples/campaign/dispersion.nml": [(r"(?m)^(\s*n_samples\s*=\s*)\d+", r"\g<1>16")],
+           "examples/campaign/envelope.nml": [(r"(?m)^(\s*start = 0\.0, stop = 3\.0, count = )7", r"\g<1>3"),
+                                              (r"(?m)^(\s*start = 0\.0, stop = 24\.0, count = )7", r"\g<1>3")]}
 
 
 def blocks(path):
@@ -71,7 +74,7 @@ def command_key(cmd):
 def console_scripts(src):
     text = open(os.path.join(src, "post", "pyproject.toml"), encoding="utf-8").read()
     sect = text.split("[project.scripts]", 1)[1].split("\n[", 1)[0]
-    return dict(re.findall(r'^\s*([\w-]+)\s*=\s*"([\w.]+):(\w+)"', sect, re.M))
+    return {n: (m, f) for n, m, f in re.findall(r'^\s*([\w-]+)\s*=\s*"([\w.]+):(\w+)"', sect, re.M)}
 
 
 def setup_dir(a):
@@ -82,15 +85,22 @@ def setup_dir(a):
     for d in ("input", "post"):
         os.symlink(os.path.join(a.src, d), os.path.join(a.workdir, d))
     shutil.copytree(os.path.join(a.src, "examples"), os.path.join(a.workdir, "examples"))
-    for rel, (pat, rep) in SHORTEN.items():
+    for rel, subs in SHORTEN.items():
         p = os.path.join(a.workdir, rel)
-        text, n = re.subn(pat, rep, open(p).read())
-        assert n == 1, f"{rel}: the line to shorten was not found"
+        text = open(p).read()
+        for pat, rep in subs:
+            text, n = re.subn(pat, rep, text)
+            assert n == 1, f"{rel}: the line to shorten ({pat}) was not found"
         open(p, "w").write(text)
+        print(f"note: {rel} shortened for the test budget: {'; '.join(r for _, r in subs)}")
     # .venv: the environment's bin entries, plus shims for console scripts it lacks
     venv_real = os.path.dirname(os.path.dirname(os.path.abspath(a.python)))
-    vbin = os.path.join(a.workdir, ".venv", "bin")
+    vdir = os.path.join(a.workdir, ".venv")
+    vbin = os.path.join(vdir, "bin")
     os.makedirs(vbin)
+    for name in os.listdir(venv_real):          # pyvenv.cfg, lib, ...: the interpreter finds its packages
+        if name != "bin":
+            os.symlink(os.path.join(venv_real, name), os.path.join(vdir, name))
     for name in os.listdir(os.path.join(venv_real, "bin")):
         os.symlink(os.path.join(venv_real, "bin", name), os.path.join(vbin, name))
     for name, (mod, func) in console_scripts(a.src).items():
