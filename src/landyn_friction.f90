@@ -1,4 +1,4 @@
-!> Footpad-ground friction laws (paper eq. 17, section 4.2, Tables 7-8; MODEL_NOTES base friction).
+!> Footpad-ground friction laws (paper eq. 17, section 4.2, Tables 7-8; docs/model_conventions.md base friction).
 !!
 !! Conventions
 !! - v_slip is the 2-component tangential slip velocity of the footpad relative to the ground in

@@ -66,7 +66,7 @@ def check(cond, what):
 
 
 def find_table3(src):
-    # a copy of ../shared/reference/table3_crush_lengths.csv (the paper's Table 3) kept in the repository
+    # the paper's Table 3 (identical to post/landyn_post/data/table3_crush_lengths.csv, docs/model_conventions.md)
     for cand in (os.path.join(src, "tests", "regression", "data", "table3_crush_lengths.csv"),):
         if os.path.exists(cand):
             return cand
