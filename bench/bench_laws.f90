@@ -18,8 +18,8 @@ program bench_laws
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t, load_input
   use landyn_simulation, only: sim_result_t, run_simulation
-  use landyn_contact, only: contact_law_t, make_contact_law
-  use landyn_friction, only: friction_law_t, make_friction_law
+  use landyn_contact, only: contact_law_t, make_contact_law, contact_state_t, advance_contact_state
+  use landyn_friction, only: friction_law_t, make_friction_law, friction_state_t
   implicit none
 
   integer, parameter :: n_contact = 8, n_friction = 8, n_samples = 400000
@@ -139,6 +139,7 @@ contains
     character(len=*), intent(in) :: name      !! law name
     real(wp) :: per_call                      !! [s]
     class(contact_law_t), allocatable :: law
+    type(contact_state_t) :: cst
     type(landyn_input_t) :: tmp
     integer :: k, st, rep
     integer(int64) :: c0, c1, rate
@@ -152,8 +153,8 @@ contains
     do rep = 1, 5
       call system_clock(c0, rate)
       do k = 1, n_samples
-        if (law%has_history) call law%update(delta(k), delta_dot(k))
-        if (delta(k) > 0.0_wp) acc = acc + law%normal_force(delta(k), delta_dot(k))
+        if (law%has_history) call advance_contact_state(cst, delta(k), delta_dot(k))
+        if (delta(k) > 0.0_wp) acc = acc + law%normal_force(delta(k), delta_dot(k), cst)
       end do
       call system_clock(c1)
       per_call = min(per_call, real(c1 - c0, wp)/real(rate, wp)/real(n_samples, wp))
@@ -166,6 +167,7 @@ contains
     character(len=*), intent(in) :: name      !! law name
     real(wp) :: per_call                      !! [s]
     class(friction_law_t), allocatable :: law
+    type(friction_state_t) :: fst
     type(landyn_input_t) :: tmp
     integer :: k, st, rep
     integer(int64) :: c0, c1, rate
@@ -181,7 +183,7 @@ contains
       call system_clock(c0, rate)
       do k = 1, n_samples
         if (law%has_stiction) then
-          call law%stick_slip_force(vslip(:, k), 5.0e-6_wp*vslip(:, k), fn(k), ft)
+          call law%stick_slip_force(fst, vslip(:, k), 5.0e-6_wp*vslip(:, k), fn(k), ft)
         else
           ft = law%friction_force(vslip(:, k), fn(k))
         end if

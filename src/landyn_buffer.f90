@@ -7,7 +7,7 @@
 !! (N = F, no driving force); beyond a bound it crushes with N = bound and the excess drives its
 !! sliding coordinate; a crushing strut whose sliding speed reaches zero locks again.
 !!
-!! Stroke convention (Table 3's sense, MODEL_NOTES.md): each buffer has a stroke coordinate s
+!! Stroke convention (Table 3's sense, docs/model_conventions.md): each buffer has a stroke coordinate s
 !! whose positive direction is the one Table 3 reports positive: for the primary strut
 !! s = L0 - L (shortening), for a secondary strut s = L - L0 (lengthening).
 !!

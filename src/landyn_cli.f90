@@ -57,6 +57,10 @@ contains
     character(len=*), intent(in) :: what       !! its name in messages, e.g. 'deck' [-]
     character(len=:), allocatable :: problem   !! message, '' if none [-]
     problem = ''
+    if (len(arg) == 0) then
+      problem = 'empty '//what//' name ('''')'
+      return
+    end if
     if (len(arg) > 0) then
       if (arg(1:1) == '-') then
         problem = 'unknown option '//arg

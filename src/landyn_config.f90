@@ -1,6 +1,6 @@
 !> The resolved input of one LANDYN run: one derived type per namelist group, gathered in
 !! `landyn_input_t`. Defaults are the paper's demonstration lander (Wang et al. 2023, Table 1)
-!! and load case LC-1, read as in MODEL_NOTES.md. Lengths in m, masses in kg, forces in N,
+!! and load case LC-1, read as in docs/model_conventions.md. Lengths in m, masses in kg, forces in N,
 !! times in s. Angles are stored here in RADIANS (decks give degrees; the namelist reader converts).
 module landyn_config
   use landyn_kinds, only: wp, max_gears, pi
@@ -179,7 +179,7 @@ module landyn_config
     character(len=:), allocatable :: deck_text  !! the deck text as given
   end type landyn_input_t
 
-  !> Gear 1 hard points of the demonstration lander (Table 1 with MODEL_NOTES readings for e1, f1) [m].
+  !> Gear 1 hard points of the demonstration lander (Table 1 with the docs/model_conventions.md readings of e1, f1) [m].
   real(wp), parameter, public :: paper_a1(3) = [3.89_wp, 0.0_wp, -2.18_wp]
   real(wp), parameter, public :: paper_b1(3) = [3.37_wp, 1.23_wp, -1.01_wp]
   real(wp), parameter, public :: paper_c1(3) = [3.37_wp, -1.23_wp, -1.01_wp]

@@ -26,11 +26,13 @@
 !! with d_max = d = D1 = damping_depth, C = D = D1 = damping, D2 = damping2.
 !!
 !! History. Hunt-Crossley needs the impact velocity of the current contact and the regolith law
-!! the deepest sinkage reached: such laws set `has_history` and read `state`, the contact history
-!! of the one footpad the instance belongs to. The simulation holds one instance per footpad
-!! (allocated once at set-up) and calls `update(delta, delta_dot)` once per step before
-!! `normal_force`; laws without history are never updated, so their cost is unchanged. All
-!! evaluations stay pure functions of (delta, delta_dot) and the instance.
+!! the deepest sinkage reached: such laws set `has_history` and read a `contact_state_t`, the
+!! contact history of one footpad, passed to every evaluation. The laws themselves are immutable
+!! parameter objects (one instance serves all footpads): the state belongs to the model state, and
+!! `advance_contact_state(state, delta, delta_dot)` moves it on, called by the integrator only when
+!! it commits a step; laws without history ignore the state, so their cost is unchanged. Every
+!! evaluation is a pure function of (delta, delta_dot, state) and the law. Without a state the
+!! history laws evaluate as on a fresh contact (no recorded impact, no deeper crater).
 !!
 !! Adding a law: extend contact_law_t (or hertz_spring_t) in this module, implement the deferred
 !! procedures (pure, allocation-free), add its name to contact_law_names and a `case` to
@@ -48,7 +50,7 @@ module landyn_contact
             kelvin_voigt_bilinear_t, hunt_crossley_t, regolith_t
   public :: base_contact, adams_impact, hertz_contact, kelvin_voigt, kelvin_voigt_step, kelvin_voigt_bilinear, &
             hunt_crossley, regolith
-  public :: make_contact_law
+  public :: make_contact_law, advance_contact_state
   public :: contact_law_names
 
   !> Names accepted in &contact law, for messages and documentation.
@@ -62,42 +64,43 @@ module landyn_contact
     real(wp) :: delta_max = 0.0_wp    !! deepest penetration reached so far; kept after lift-off [m]
   end type contact_state_t
 
-  !> A footpad-ground normal contact law (one instance per footpad when it has history).
+  !> A footpad-ground normal contact law: immutable parameters (the history is a contact_state_t).
   type, abstract :: contact_law_t
     character(len=name_len) :: name = ''  !! law name as given in &contact law [-]
-    logical :: has_history = .false.      !! the law reads `state`: call update once per step [-]
-    type(contact_state_t) :: state        !! history of this instance's footpad
+    logical :: has_history = .false.      !! the law reads a contact_state_t: advance it once per step [-]
   contains
     procedure(normal_force_i), deferred :: normal_force
     procedure(spring_force_i), deferred :: spring_force
     procedure(elastic_energy_i), deferred :: elastic_energy
     procedure :: dissipation_power
-    procedure :: update => contact_update
   end type contact_law_t
 
   abstract interface
     !> Normal force magnitude F_Z >= 0 along the outward surface normal.
-    pure function normal_force_i(self, delta, delta_dot) result(f)
-      import :: contact_law_t, wp
+    pure function normal_force_i(self, delta, delta_dot, state) result(f)
+      import :: contact_law_t, contact_state_t, wp
       class(contact_law_t), intent(in) :: self  !! the law
       real(wp), intent(in) :: delta             !! penetration, > 0 inside the ground [m]
       real(wp), intent(in) :: delta_dot         !! penetration rate, > 0 moving deeper [m/s]
+      type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
       real(wp) :: f                             !! normal force, >= 0 [N]
     end function normal_force_i
 
     !> Conservative (spring) part of the normal force, dE/d(delta).
-    pure function spring_force_i(self, delta) result(f)
-      import :: contact_law_t, wp
+    pure function spring_force_i(self, delta, state) result(f)
+      import :: contact_law_t, contact_state_t, wp
       class(contact_law_t), intent(in) :: self  !! the law
       real(wp), intent(in) :: delta             !! penetration [m]
+      type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
       real(wp) :: f                             !! spring force [N]
     end function spring_force_i
 
     !> Energy stored in the spring part at penetration delta (0 for delta <= 0).
-    pure function elastic_energy_i(self, delta) result(e)
-      import :: contact_law_t, wp
+    pure function elastic_energy_i(self, delta, state) result(e)
+      import :: contact_law_t, contact_state_t, wp
       class(contact_law_t), intent(in) :: self  !! the law
       real(wp), intent(in) :: delta             !! penetration [m]
+      type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
       real(wp) :: e                             !! stored elastic energy [J]
     end function elastic_energy_i
   end interface
@@ -392,38 +395,42 @@ contains
 
   ! ---------------------------------------------------------------- common procedures
 
-  !> Advance the contact history by one step (laws with has_history; call before normal_force).
-  !! A contact starts at the first update with delta > 0: its penetration rate is the impact
+  !> Advances one footpad's contact history to the penetration delta (laws with has_history; done
+  !! before the forces are evaluated at that penetration, and committed with the step).
+  !! A contact starts at the first advance with delta > 0: its penetration rate is the impact
   !! velocity. delta <= 0 ends the contact; the deepest penetration is kept (a crater stays).
-  pure subroutine contact_update(self, delta, delta_dot)
-    class(contact_law_t), intent(inout) :: self  !! the law instance of one footpad
-    real(wp), intent(in) :: delta                !! penetration [m]
-    real(wp), intent(in) :: delta_dot            !! penetration rate [m/s]
+  pure subroutine advance_contact_state(state, delta, delta_dot)
+    type(contact_state_t), intent(inout) :: state  !! contact history of one footpad
+    real(wp), intent(in) :: delta                  !! penetration [m]
+    real(wp), intent(in) :: delta_dot              !! penetration rate [m/s]
     if (delta > 0.0_wp) then
-      if (.not. self%state%touching) then
-        self%state%touching = .true.
-        self%state%v_impact = max(delta_dot, 0.0_wp)
+      if (.not. state%touching) then
+        state%touching = .true.
+        state%v_impact = max(delta_dot, 0.0_wp)
       end if
-      self%state%delta_max = max(self%state%delta_max, delta)
+      state%delta_max = max(state%delta_max, delta)
     else
-      self%state%touching = .false.
+      state%touching = .false.
     end if
-  end subroutine contact_update
+  end subroutine advance_contact_state
 
   !> Power removed from the mechanical system by the contact: (F_Z - spring_force) * delta_dot.
   !! Includes the spring energy lost when the clamp F_Z >= 0 is active during fast unloading.
-  pure function dissipation_power(self, delta, delta_dot) result(p)
+  pure function dissipation_power(self, delta, delta_dot, state) result(p)
     class(contact_law_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta             !! penetration [m]
     real(wp), intent(in) :: delta_dot         !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: p                             !! dissipated power [W]
-    p = (self%normal_force(delta, delta_dot) - self%spring_force(delta))*delta_dot
+    p = (self%normal_force(delta, delta_dot, state) - self%spring_force(delta, state))*delta_dot
   end function dissipation_power
 
-  pure function hertz_spring_force(self, delta) result(f)
+  pure function hertz_spring_force(self, delta, state) result(f)
     class(hertz_spring_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                              !! K delta^n, 0 for delta <= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
     if (delta > 0.0_wp) then
       f = self%stiffness*delta**self%exponent
     else
@@ -431,10 +438,12 @@ contains
     end if
   end function hertz_spring_force
 
-  pure function hertz_elastic_energy(self, delta) result(e)
+  pure function hertz_elastic_energy(self, delta, state) result(e)
     class(hertz_spring_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: e                              !! K delta^(n+1)/(n+1), 0 for delta <= 0 [J]
+    if (present(state)) e = 0.0_wp   ! the law has no history
     if (delta > 0.0_wp) then
       e = self%stiffness*delta**(self%exponent + 1.0_wp)/(self%exponent + 1.0_wp)
     else
@@ -444,12 +453,14 @@ contains
 
   ! ---------------------------------------------------------------- normal forces
 
-  pure function base_normal_force(self, delta, delta_dot) result(f)
+  pure function base_normal_force(self, delta, delta_dot, state) result(f)
     class(base_contact_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration, > 0 inside the ground [m]
     real(wp), intent(in) :: delta_dot          !! penetration rate, > 0 moving deeper [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                              !! normal force, >= 0 [N]
     real(wp) :: kappa
+    if (present(state)) f = 0.0_wp   ! the law has no history
 
     if (delta <= 0.0_wp) then
       f = 0.0_wp
@@ -463,11 +474,13 @@ contains
     f = max(0.0_wp, self%stiffness*delta**self%exponent + kappa*self%damping*delta_dot)
   end function base_normal_force
 
-  pure function adams_impact_normal_force(self, delta, delta_dot) result(f)
+  pure function adams_impact_normal_force(self, delta, delta_dot, state) result(f)
     class(adams_impact_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
     real(wp), intent(in) :: delta_dot          !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                              !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
@@ -476,19 +489,22 @@ contains
                     + adams_step(delta, 0.0_wp, 0.0_wp, self%penetration, self%damping)*delta_dot)
   end function adams_impact_normal_force
 
-  pure function hertz_normal_force(self, delta, delta_dot) result(f)
+  pure function hertz_normal_force(self, delta, delta_dot, state) result(f)
     class(hertz_contact_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta               !! penetration [m]
     real(wp), intent(in) :: delta_dot           !! penetration rate (no effect) [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                               !! K delta^n [N]
-    f = self%spring_force(delta) + 0.0_wp*delta_dot   ! rate-independent (the product only reads delta_dot)
+    f = self%spring_force(delta, state) + 0.0_wp*delta_dot   ! rate-independent (the product only reads delta_dot)
   end function hertz_normal_force
 
-  pure function kelvin_voigt_normal_force(self, delta, delta_dot) result(f)
+  pure function kelvin_voigt_normal_force(self, delta, delta_dot, state) result(f)
     class(kelvin_voigt_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
     real(wp), intent(in) :: delta_dot          !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                              !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
@@ -496,11 +512,13 @@ contains
     f = max(0.0_wp, self%stiffness*delta**self%exponent + self%damping*delta_dot)
   end function kelvin_voigt_normal_force
 
-  pure function kelvin_voigt_step_normal_force(self, delta, delta_dot) result(f)
+  pure function kelvin_voigt_step_normal_force(self, delta, delta_dot, state) result(f)
     class(kelvin_voigt_step_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta                   !! penetration [m]
     real(wp), intent(in) :: delta_dot               !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                                   !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
     if (delta <= 0.0_wp) then
       f = 0.0_wp
     else if (delta <= self%step_depth) then
@@ -510,11 +528,13 @@ contains
     end if
   end function kelvin_voigt_step_normal_force
 
-  pure function kelvin_voigt_bilinear_normal_force(self, delta, delta_dot) result(f)
+  pure function kelvin_voigt_bilinear_normal_force(self, delta, delta_dot, state) result(f)
     class(kelvin_voigt_bilinear_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta                       !! penetration [m]
     real(wp), intent(in) :: delta_dot                   !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
     real(wp) :: f                                       !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
@@ -523,17 +543,19 @@ contains
                     + self%damping2*delta_dot*abs(delta_dot))
   end function kelvin_voigt_bilinear_normal_force
 
-  pure function hunt_crossley_normal_force(self, delta, delta_dot) result(f)
-    class(hunt_crossley_t), intent(in) :: self  !! the law (its state holds the impact velocity)
+  pure function hunt_crossley_normal_force(self, delta, delta_dot, state) result(f)
+    class(hunt_crossley_t), intent(in) :: self  !! the law (the state holds the impact velocity)
     real(wp), intent(in) :: delta               !! penetration [m]
     real(wp), intent(in) :: delta_dot           !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                               !! normal force, >= 0 [N]
     real(wp) :: v, lambda
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
     end if
-    v = max(self%state%v_impact, self%min_impact_speed)
+    v = self%min_impact_speed
+    if (present(state)) v = max(state%v_impact, self%min_impact_speed)
     if (self%alpha > 0.0_wp) then
       lambda = 1.5_wp*min(self%alpha, 1.0_wp/v)          ! e = max(0, 1 - alpha v)
     else
@@ -545,24 +567,26 @@ contains
   ! ---------------------------------------------------------------- regolith
 
   !> Deepest sinkage for the evaluation at delta (robust when update was not called).
-  pure function regolith_zmax(self, delta) result(zm)
-    class(regolith_t), intent(in) :: self  !! the law
+  pure function regolith_zmax(delta, state) result(zm)
     real(wp), intent(in) :: delta          !! penetration [m]
-    real(wp) :: zm                         !! max(state%delta_max, delta) [m]
-    zm = max(self%state%delta_max, delta)
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
+    real(wp) :: zm                         !! max(state%delta_max, delta); delta without a state [m]
+    zm = delta
+    if (present(state)) zm = max(state%delta_max, delta)
   end function regolith_zmax
 
-  pure function regolith_normal_force(self, delta, delta_dot) result(f)
-    class(regolith_t), intent(in) :: self  !! the law (its state holds the deepest sinkage)
+  pure function regolith_normal_force(self, delta, delta_dot, state) result(f)
+    class(regolith_t), intent(in) :: self  !! the law (the state holds the deepest sinkage)
     real(wp), intent(in) :: delta          !! penetration (sinkage) [m]
     real(wp), intent(in) :: delta_dot      !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! normal force, >= 0 [N]
     real(wp) :: zm
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
     end if
-    zm = regolith_zmax(self, delta)
+    zm = regolith_zmax(delta, state)
     if (delta >= zm) then
       f = self%soil_stiffness*delta**self%soil_exponent + self%drag*max(delta_dot, 0.0_wp)**2
     else
@@ -572,36 +596,39 @@ contains
   end function regolith_normal_force
 
   !> Elastic part: the virgin curve at the deepest sinkage, the unloading line below it.
-  pure function regolith_spring_force(self, delta) result(f)
+  pure function regolith_spring_force(self, delta, state) result(f)
     class(regolith_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta          !! penetration [m]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! elastic force [N]
     real(wp) :: zm
     if (delta <= 0.0_wp) then
       f = 0.0_wp
       return
     end if
-    zm = regolith_zmax(self, delta)
+    zm = regolith_zmax(delta, state)
     f = max(0.0_wp, self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta))
   end function regolith_spring_force
 
   !> Energy the unloading line would give back: f_el^2 / (2 k_u).
-  pure function regolith_elastic_energy(self, delta) result(e)
+  pure function regolith_elastic_energy(self, delta, state) result(e)
     class(regolith_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta          !! penetration [m]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: e                          !! recoverable elastic energy [J]
-    e = self%spring_force(delta)**2/(2.0_wp*self%unload_stiffness)
+    e = self%spring_force(delta, state)**2/(2.0_wp*self%unload_stiffness)
   end function regolith_elastic_energy
 
   !> F delta_dot - dE/dt: plastic sinkage work and drag on the virgin curve, damping below it.
-  pure function regolith_dissipation_power(self, delta, delta_dot) result(p)
+  pure function regolith_dissipation_power(self, delta, delta_dot, state) result(p)
     class(regolith_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta          !! penetration [m]
     real(wp), intent(in) :: delta_dot      !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: p                          !! dissipated power [W]
     real(wp) :: f_el, de_dt, zm
-    f_el = self%spring_force(delta)
-    zm = regolith_zmax(self, delta)
+    f_el = self%spring_force(delta, state)
+    zm = regolith_zmax(delta, state)
     if (delta <= 0.0_wp) then
       de_dt = 0.0_wp
     else if (delta >= zm) then
@@ -611,7 +638,7 @@ contains
     else
       de_dt = f_el*delta_dot
     end if
-    p = self%normal_force(delta, delta_dot)*delta_dot - de_dt
+    p = self%normal_force(delta, delta_dot, state)*delta_dot - de_dt
   end function regolith_dissipation_power
 
 end module landyn_contact

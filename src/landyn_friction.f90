@@ -1,4 +1,4 @@
-!> Footpad-ground friction laws (paper eq. 17, section 4.2, Tables 7-8; MODEL_NOTES base friction).
+!> Footpad-ground friction laws (paper eq. 17, section 4.2, Tables 7-8; docs/model_conventions.md base friction).
 !!
 !! Conventions
 !! - v_slip is the 2-component tangential slip velocity of the footpad relative to the ground in
@@ -23,8 +23,10 @@
 !! Sticking. ty1, ty2, ty4 and ty5 jump at zero slip (sgn(v)); Table 7 states their stick branch
 !! as min(F_e, mu_s N) with F_e the applied tangential force, which a footpad coupled to the legs
 !! and the body cannot know. These laws set `has_stiction` and are evaluated with
-!! stick_slip_force: an elastic-plastic "bristle" per footpad (state%z, the footpad's tangential
-!! displacement from its stick anchor). While stuck the ground holds the footpad with the
+!! stick_slip_force: an elastic-plastic "bristle" per footpad (a friction_state_t: z, the footpad's
+!! tangential displacement from its stick anchor). The laws are immutable parameter objects; the
+!! stick state belongs to the model state and is passed in, and the integrator works on a trial
+!! copy of it that it commits with the step. While stuck the ground holds the footpad with the
 !! spring-damper -k z - c v; when that force would exceed mu_s N the footpad slips with the law's
 !! sliding force mu(|v|) N + C_v |v|, directed as that trial force (a return mapping: -v/|v| in
 !! steady sliding, the held force's direction at break-away), the anchor being dragged along
@@ -62,14 +64,13 @@ module landyn_friction
     integer :: n_transitions = 0    !! number of stick <-> slip switches so far [-]
   end type friction_state_t
 
-  !> A footpad-ground friction law (one instance per footpad when it has stiction).
+  !> A footpad-ground friction law: immutable parameters (the stick state is a friction_state_t).
   type, abstract :: friction_law_t
     character(len=name_len) :: name = ''     !! law name as given in &friction law [-]
     logical :: has_stiction = .false.        !! discontinuous at zero slip: use stick_slip_force [-]
     real(wp) :: mu_stick = 0.0_wp            !! static coefficient bounding the stick force [-]
     real(wp) :: stick_stiffness = 1.0e8_wp   !! k of the stick spring [N/m]
     real(wp) :: stick_damping = 1.0e5_wp     !! c of the stick damper [N s/m]
-    type(friction_state_t) :: state          !! stick state of this instance's footpad
   contains
     procedure(friction_force_i), deferred :: friction_force
     procedure(coefficient_i), deferred :: coefficient
@@ -369,11 +370,13 @@ contains
 
   ! ---------------------------------------------------------------- stick-slip (laws with stiction)
 
-  !> Friction force of a law with stiction, advancing this footpad's stick state by one step.
+  !> Friction force of a law with stiction, advancing the footpad's stick state `state` by one step
+  !! (the caller passes a trial copy and commits it with the step; the law is not changed).
   !! dx_slip is the footpad's tangential displacement since the previous call (the slip velocity
   !! times the step in a semi-implicit Euler scheme). See the module documentation.
-  pure subroutine stick_slip_force(self, v_slip, dx_slip, f_normal, f_t)
-    class(friction_law_t), intent(inout) :: self  !! the law instance of one footpad
+  pure subroutine stick_slip_force(self, state, v_slip, dx_slip, f_normal, f_t)
+    class(friction_law_t), intent(in) :: self     !! the law
+    type(friction_state_t), intent(inout) :: state  !! stick state of the footpad, advanced by the step
     real(wp), intent(in) :: v_slip(2)             !! slip velocity, local (t1, t2) [m/s]
     real(wp), intent(in) :: dx_slip(2)            !! tangential displacement since the last call, local [m]
     real(wp), intent(in) :: f_normal              !! normal force magnitude [N]
@@ -384,13 +387,13 @@ contains
     n = max(f_normal, 0.0_wp)
     if (.not. (n > 0.0_wp)) then
       ! no contact: the next contact starts stuck, with an unloaded anchor where it touches down
-      self%state%z = 0.0_wp
-      self%state%stuck = .true.
+      state%z = 0.0_wp
+      state%stuck = .true.
       f_t = 0.0_wp
       return
     end if
-    was_stuck = self%state%stuck
-    z_tr = self%state%z + dx_slip
+    was_stuck = state%stuck
+    z_tr = state%z + dx_slip
     f_tr = -self%stick_stiffness*z_tr - self%stick_damping*v_slip
     fmag = norm2(f_tr)
     ! magnitude of the law's sliding force at this slip speed, mu(|v|) N + C_v |v|
@@ -408,18 +411,18 @@ contains
       lim = slide
     end if
     if (fmag <= lim) then
-      self%state%stuck = .true.
-      self%state%z = z_tr
+      state%stuck = .true.
+      state%z = z_tr
       f_t = f_tr
     else
       ! slip: the sliding force, directed as the trial force (return mapping). In steady sliding
       ! that is -v_slip/|v_slip|; at break-away, when the slip velocity is still tiny and its
       ! direction meaningless, it is the direction of the force the footpad was held with.
-      self%state%stuck = .false.
+      state%stuck = .false.
       f_t = (slide/fmag)*f_tr
-      self%state%z = -f_t/self%stick_stiffness    ! the anchor is dragged along
+      state%z = -f_t/self%stick_stiffness    ! the anchor is dragged along
     end if
-    if (self%state%stuck .neqv. was_stuck) self%state%n_transitions = self%state%n_transitions + 1
+    if (state%stuck .neqv. was_stuck) state%n_transitions = state%n_transitions + 1
   end subroutine stick_slip_force
 
   ! ---------------------------------------------------------------- coulomb_step

@@ -44,7 +44,8 @@ module landyn_gear
   implicit none
   private
 
-  public :: gear_t, strut_mass_t, buffer_slot_t
+  public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t
+  public :: gear_save_state, gear_restore_state
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
   public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle
@@ -82,6 +83,38 @@ module landyn_gear
     real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
     real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
   end type strut_kin_t
+
+  !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
+  !! accumulators) and the caches that depend on it: a snapshot that gear_restore_state puts back
+  !! exactly, so that a step can be rejected or repeated (the geometry, masses and buffer laws are
+  !! parameters and stay in gear_t).
+  type :: gear_state_t
+    real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
+    real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    logical :: locked(3) = .true.                 !! strut locked [-]
+    integer :: dir(3) = 0                         !! sliding direction [-]
+    real(wp) :: s_lock(3) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: s_hismin(3) = 0.0_wp              !! most negative stroke reached [m]
+    real(wp) :: s_hismax(3) = 0.0_wp              !! most positive stroke reached [m]
+    real(wp) :: axial(3) = 0.0_wp                 !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    real(wp) :: work_crush(3) = 0.0_wp            !! energy absorbed by each buffer [J]
+    real(wp) :: max_violation = 0.0_wp            !! largest violation after correction [m]
+    real(wp) :: max_drift = 0.0_wp                !! largest violation before correction [m]
+    integer :: n_correction_iter = 0              !! largest number of correction iterations [-]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    logical :: rigid = .false.                    !! rigid state [-]
+    logical :: rigid_cache = .false.              !! rigid caches valid [-]
+    type(strut_kin_t) :: sk_c(3)                  !! cached strut kinematics
+    real(wp) :: mdiag_c(n_q) = 0.0_wp             !! cached mass matrix diagonal [kg, kg m^2]
+    real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! cached constraint rows [-, m]
+    real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! cached Cholesky factor
+    logical :: phq_ok = .false.                   !! Phi_q cache valid [-]
+    real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
+    real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
+  end type gear_state_t
 
   !> One landing gear: geometry, masses, buffers and state.
   type :: gear_t
@@ -199,6 +232,68 @@ contains
       end if
     end do
   end subroutine gear_init
+
+  !> Snapshot of the gear's evolving state (gear_state_t).
+  pure subroutine gear_save_state(gear, gs)
+    type(gear_t), intent(in) :: gear          !! gear
+    type(gear_state_t), intent(out) :: gs     !! its evolving state
+    gs%q = gear%q
+    gs%qd = gear%qd
+    gs%qdd = gear%qdd
+    gs%locked = gear%locked
+    gs%dir = gear%dir
+    gs%s_lock = gear%s_lock
+    gs%s_hismin = gear%s_hismin
+    gs%s_hismax = gear%s_hismax
+    gs%axial = gear%axial
+    gs%f_body = gear%f_body
+    gs%m_body = gear%m_body
+    gs%work_crush = gear%work_crush
+    gs%max_violation = gear%max_violation
+    gs%max_drift = gear%max_drift
+    gs%n_correction_iter = gear%n_correction_iter
+    gs%tube_bound = gear%tube_bound
+    gs%rigid = gear%rigid
+    gs%rigid_cache = gear%rigid_cache
+    gs%sk_c = gear%sk_c
+    gs%mdiag_c = gear%mdiag_c
+    gs%a_c = gear%a_c
+    gs%chol_c = gear%chol_c
+    gs%phq_ok = gear%phq_ok
+    gs%phq = gear%phq
+    gs%phq_q = gear%phq_q
+  end subroutine gear_save_state
+
+  !> Puts a snapshot back: the gear continues exactly as from the moment it was taken.
+  pure subroutine gear_restore_state(gear, gs)
+    type(gear_t), intent(inout) :: gear       !! gear
+    type(gear_state_t), intent(in) :: gs      !! snapshot from gear_save_state
+    gear%q = gs%q
+    gear%qd = gs%qd
+    gear%qdd = gs%qdd
+    gear%locked = gs%locked
+    gear%dir = gs%dir
+    gear%s_lock = gs%s_lock
+    gear%s_hismin = gs%s_hismin
+    gear%s_hismax = gs%s_hismax
+    gear%axial = gs%axial
+    gear%f_body = gs%f_body
+    gear%m_body = gs%m_body
+    gear%work_crush = gs%work_crush
+    gear%max_violation = gs%max_violation
+    gear%max_drift = gs%max_drift
+    gear%n_correction_iter = gs%n_correction_iter
+    gear%tube_bound = gs%tube_bound
+    gear%rigid = gs%rigid
+    gear%rigid_cache = gs%rigid_cache
+    gear%sk_c = gs%sk_c
+    gear%mdiag_c = gs%mdiag_c
+    gear%a_c = gs%a_c
+    gear%chol_c = gs%chol_c
+    gear%phq_ok = gs%phq_ok
+    gear%phq = gs%phq
+    gear%phq_q = gs%phq_q
+  end subroutine gear_restore_state
 
   !> Footpad position and velocity in the gear frame.
   pure subroutine gear_footpad(gear, pos, vel)

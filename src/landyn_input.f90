@@ -27,9 +27,11 @@ module landyn_input
                            name_len, path_len
   use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, is_digit, edit_distance, &
                             fmt_int => int_text, quoted => quote_text
+  use landyn_files, only: read_whole_file
   use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
                                   find_item_names, line_of, first_nonblank, one_line => one_line_text, &
-                                  strip_commas => separators_to_blanks, remove_blanks
+                                  strip_commas => separators_to_blanks, remove_blanks, mask_non_ascii, &
+                                  bare_name_in_value, numbers_within
   implicit none
   private
 
@@ -55,6 +57,15 @@ module landyn_input
   end type input_errors_t
 
   ! Group indices.
+  ! Bounds of docs/input (physically motivated, and far from floating-point trouble)
+  real(wp), parameter :: max_steps = 1.0e9_wp          !! most time steps of a run, t_end/dt [-]
+  real(wp), parameter :: max_samples = 1.0e6_wp        !! most stored output samples, t_end/interval [-]
+  real(wp), parameter :: max_t_end = 3600.0_wp         !! longest simulated time [s]
+  real(wp), parameter :: min_body_mass = 1.0_wp        !! lightest lander [kg]
+  real(wp), parameter :: min_body_inertia = 1.0e-3_wp  !! smallest principal moment of inertia [kg m^2]
+  real(wp), parameter :: min_contact_exponent = 0.5_wp !! smallest contact penetration exponent [-]
+  real(wp), parameter :: max_contact_exponent = 4.0_wp !! largest contact penetration exponent [-]
+  real(wp), parameter :: max_hard_point = 100.0_wp     !! largest |coordinate| of a gear hard point [m]
   integer, parameter :: g_simulation = 1, g_lander = 2, g_engine = 3, g_gears = 4, g_primary = 5, &
                         g_secondary = 6, g_contact = 7, g_friction = 8, g_terrain = 9, g_initial = 10, &
                         g_output = 11, n_groups = 11
@@ -253,36 +264,22 @@ contains
     type(landyn_input_t), intent(out) :: inp       !! input read (defaults where the deck is silent)
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     integer, intent(out) :: stat                   !! 0 ok, 1 errors in the deck, 2 file not readable [-]
-    character(len=:), allocatable :: text
-    character(len=512) :: msg
-    integer :: u, ios, nbytes
+    character(len=:), allocatable :: text, msg
 
     inp = default_input()
-    inp%deck_name = trim(path)
-    msg = ''
-    open (newunit=u, file=trim(path), access='stream', form='unformatted', action='read', status='old', &
-          iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call errors%add(trim(path)//': cannot open the input deck: '//trim(msg))
+    inp%deck_name = path
+    if (len(path) == 0) then
+      call errors%add("'': cannot read the input deck: empty file name")
       stat = 2
       return
     end if
-    inquire (unit=u, size=nbytes)
-    if (nbytes < 0) then
-      call errors%add(trim(path)//': cannot read the input deck: its size is unknown')
-      close (u)
+    call read_whole_file(path, text, stat, msg)
+    if (stat /= 0) then
+      call errors%add(path//': cannot open or read the input deck: '//msg)
       stat = 2
       return
     end if
-    allocate (character(len=nbytes) :: text)
-    if (nbytes > 0) read (u, iostat=ios, iomsg=msg) text
-    close (u)
-    if (ios /= 0) then
-      call errors%add(trim(path)//': cannot read the input deck: '//trim(msg))
-      stat = 2
-      return
-    end if
-    call read_input_text(text, trim(path), inp, errors, stat)
+    call read_input_text(text, path, inp, errors, stat)
   end subroutine read_input_file
 
   !> Read a deck held in a string (lines separated by new_line('a')) into `inp`, starting from
@@ -588,7 +585,8 @@ contains
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     character(len=:), allocatable :: work, gname
     integer :: seen(n_groups)
-    integer :: n, p, q, e, ig, qpos, next_p, line
+    integer, allocatable :: bad(:)
+    integer :: n, p, q, e, ig, qpos, next_p, line, k
     logical :: terminated
 
     allocate (character(len=len(text)) :: work)
@@ -598,6 +596,11 @@ contains
                       snippet(work(qpos:)))
       work(qpos:) = repeat(' ', len(work) - qpos + 1)
     end if
+    call mask_non_ascii(work, bad)
+    do k = 1, size(bad)
+      call errors%add(loc(deck_name, work, bad(k))//'byte '//hex_byte(text(bad(k):bad(k)))// &
+                      ' is not ASCII text; decks are ASCII text (UTF-8 only inside quoted strings and ! comments)')
+    end do
     seen = 0
     n = len(work)
     p = 1
@@ -705,7 +708,19 @@ contains
                         ' ('//trim(base)//' takes '//trim(all_vars(iv)%takes)//unit_text(iv)//')')
         cycle
       end if
-      call check_magnitudes(value, ok)
+      if (len(bare_name_in_value(value)) > 0) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//": '"//bare_name_in_value(value)// &
+                        "' after "//lhs//' = ... is a name without a value ('//snippet(item)// &
+                        "); give it as 'name = value' or remove it")
+        cycle
+      end if
+      if (longest_string(value) > string_limit(ig, base)) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' is too long ('// &
+                        fmt_int(longest_string(value))//' characters); valid: at most '// &
+                        fmt_int(string_limit(ig, base))//' characters')
+        cycle
+      end if
+      ok = numbers_within(value, max_decimal_exponent)
       if (.not. ok) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
                         snippet(value)//' is out of range; valid: |value| <= 1e30')
@@ -724,79 +739,63 @@ contains
     end do
   end subroutine read_group
 
-  !> Reject numbers whose decimal exponent exceeds max_decimal_exponent before they are read
-  !! (reading them would overflow, which traps in Debug builds).
-  pure subroutine check_magnitudes(value, ok)
-    character(len=*), intent(in) :: value  !! value text of one item [-]
-    logical, intent(out) :: ok             !! no number is too large [-]
-    integer :: p, n, nint_digits, expo, esign, mag
-    logical :: in_mantissa_digits, seen_point, lead
-    character(len=1) :: quote, c
-    ok = .true.
-    n = len(value)
+  !> Length of the longest quoted string in a value text (0 if none); doubled quotes count once.
+  pure function longest_string(value) result(n)
+    character(len=*), intent(in) :: value  !! value text [-]
+    integer :: n                           !! longest quoted string [characters]
+    character(len=1) :: quote
+    integer :: p, cur
+    n = 0
+    cur = 0
     quote = ' '
     p = 1
-    do while (p <= n)
-      c = value(p:p)
+    do while (p <= len(value))
       if (quote /= ' ') then
-        if (c == quote) quote = ' '
-        p = p + 1
-        cycle
-      end if
-      if (c == '"' .or. c == "'") then
-        quote = c
-        p = p + 1
-        cycle
-      end if
-      if (.not. (is_digit(c) .or. c == '.')) then
-        p = p + 1
-        cycle
-      end if
-      ! A number starts here: count significant integer digits, then read the exponent.
-      nint_digits = 0
-      seen_point = .false.
-      lead = .true.
-      in_mantissa_digits = .true.
-      do while (p <= n .and. in_mantissa_digits)
-        c = value(p:p)
-        if (is_digit(c)) then
-          if (.not. seen_point) then
-            if (.not. (lead .and. c == '0')) then
-              nint_digits = nint_digits + 1
-              lead = .false.
+        if (value(p:p) == quote) then
+          if (p < len(value)) then
+            if (value(p + 1:p + 1) == quote) then
+              cur = cur + 1
+              p = p + 2
+              cycle
             end if
           end if
-          p = p + 1
-        else if (c == '.' .and. .not. seen_point) then
-          seen_point = .true.
-          p = p + 1
+          quote = ' '
+          n = max(n, cur)
         else
-          in_mantissa_digits = .false.
+          cur = cur + 1
         end if
-      end do
-      expo = 0
-      if (p <= n) then
-        c = lower(value(p:p))
-        if (c == 'e' .or. c == 'd' .or. c == 'q') p = p + 1
-        esign = 1
-        if (p <= n) then
-          if (value(p:p) == '+' .or. value(p:p) == '-') then
-            if (value(p:p) == '-') esign = -1
-            p = p + 1
-          end if
-        end if
-        do while (p <= n)
-          if (.not. is_digit(value(p:p))) exit
-          if (expo < 100000) expo = 10*expo + (iachar(value(p:p)) - iachar('0'))
-          p = p + 1
-        end do
-        expo = esign*expo
+      else if (value(p:p) == '"' .or. value(p:p) == "'") then
+        quote = value(p:p)
+        cur = 0
       end if
-      mag = nint_digits - 1 + expo
-      if (nint_digits > 0 .and. mag > max_decimal_exponent) ok = .false.
-      if (nint_digits == 0 .and. expo > max_decimal_exponent) ok = .false.
+      p = p + 1
     end do
-  end subroutine check_magnitudes
+    if (quote /= ' ') n = max(n, cur)
+  end function longest_string
+
+  !> Longest character value a variable holds (huge for non-character variables).
+  pure function string_limit(ig, base) result(n)
+    integer, intent(in) :: ig               !! group index [-]
+    character(len=*), intent(in) :: base    !! variable name in lower case [-]
+    integer :: n                            !! limit [characters]
+    type(simulation_cfg_t) :: sdef
+    n = huge(1)
+    if (ig == g_output .and. base == 'file') n = path_len
+    if (ig == g_simulation .and. base == 'title') n = len(sdef%title)
+    if (base == 'law') n = name_len
+  end function string_limit
+
+  !> A byte as "0xHH".
+  pure function hex_byte(c) result(h)
+    character(len=1), intent(in) :: c   !! byte [-]
+    character(len=4) :: h               !! its hexadecimal text [-]
+    character(len=16), parameter :: digits = '0123456789ABCDEF'
+    integer :: b
+    b = iachar(c)
+    if (b < 0) b = b + 256
+    h = '0x'//digits(b/16 + 1:b/16 + 1)//digits(mod(b, 16) + 1:mod(b, 16) + 1)
+  end function hex_byte
+
 
   !> Read one item (buffer "&group name = value /") into the group's part of `inp`.
   subroutine read_item(ig, buffer, inp, ios, msg)
@@ -1320,9 +1319,16 @@ contains
     character(len=*), parameter :: g = 'simulation'
     call require(errors, s%dt > 0.0_wp, pre, g, 'dt', fmt_real(s%dt)//' s', 'dt > 0 s')
     call require(errors, s%t_end > 0.0_wp, pre, g, 't_end', fmt_real(s%t_end)//' s', 't_end > 0 s')
-    if (s%dt > 0.0_wp .and. s%t_end > 0.0_wp) &
+    call require(errors, s%t_end <= max_t_end, pre, g, 't_end', fmt_real(s%t_end)//' s', &
+                 't_end <= '//fmt_real(max_t_end)//' s')
+    if (s%dt > 0.0_wp .and. s%t_end > 0.0_wp) then
       call require(errors, s%dt <= s%t_end, pre, g, 'dt', fmt_real(s%dt)//' s', &
                    'dt <= t_end = '//fmt_real(s%t_end)//' s')
+      ! t_end/dt is compared as dt >= t_end/max_steps: no overflow for any finite dt
+      call require(errors, s%dt >= s%t_end/max_steps, pre, g, 'dt', fmt_real(s%dt)//' s', &
+                   'dt >= t_end/'//fmt_real(max_steps)//' = '//fmt_real(s%t_end/max_steps)// &
+                   ' s (at most '//fmt_real(max_steps)//' time steps)')
+    end if
     call require(errors, s%gravity >= 0.0_wp, pre, g, 'gravity', fmt_real(s%gravity)//' m/s^2', 'gravity >= 0 m/s^2')
     call require(errors, s%rest_speed > 0.0_wp, pre, g, 'rest_speed', fmt_real(s%rest_speed)//' m/s', &
                  'rest_speed > 0 m/s')
@@ -1339,6 +1345,10 @@ contains
       call require(errors, o%interval >= s%dt .and. o%interval <= s%t_end, pre, 'output', 'interval', &
                    fmt_real(o%interval)//' s', 'dt <= interval <= t_end, here '//fmt_real(s%dt)//' s .. '// &
                    fmt_real(s%t_end)//' s')
+      if (o%interval > 0.0_wp) &
+        call require(errors, o%interval >= s%t_end/max_samples, pre, 'output', 'interval', &
+                     fmt_real(o%interval)//' s', 'interval >= t_end/'//fmt_real(max_samples)//' = '// &
+                     fmt_real(s%t_end/max_samples)//' s (at most '//fmt_real(max_samples)//' stored samples)')
     else
       call require(errors, o%interval > 0.0_wp, pre, 'output', 'interval', fmt_real(o%interval)//' s', &
                    'dt <= interval <= t_end')
@@ -1353,11 +1363,15 @@ contains
     character(len=*), parameter :: g = 'lander', u = ' kg m^2'
     real(wp) :: t(3, 3), m1, m2, m3
     logical :: positive_diagonal
-    call require(errors, l%mass > 0.0_wp, pre, g, 'mass', fmt_real(l%mass)//' kg', 'mass > 0 kg')
-    call require(errors, l%ixx > 0.0_wp, pre, g, 'ixx', fmt_real(l%ixx)//u, 'ixx > 0'//u)
-    call require(errors, l%iyy > 0.0_wp, pre, g, 'iyy', fmt_real(l%iyy)//u, 'iyy > 0'//u)
-    call require(errors, l%izz > 0.0_wp, pre, g, 'izz', fmt_real(l%izz)//u, 'izz > 0'//u)
-    positive_diagonal = l%ixx > 0.0_wp .and. l%iyy > 0.0_wp .and. l%izz > 0.0_wp
+    call require(errors, l%mass >= min_body_mass, pre, g, 'mass', fmt_real(l%mass)//' kg', &
+                 'mass >= '//fmt_real(min_body_mass)//' kg')
+    call require(errors, l%ixx >= min_body_inertia, pre, g, 'ixx', fmt_real(l%ixx)//u, &
+                 'ixx >= '//fmt_real(min_body_inertia)//u)
+    call require(errors, l%iyy >= min_body_inertia, pre, g, 'iyy', fmt_real(l%iyy)//u, &
+                 'iyy >= '//fmt_real(min_body_inertia)//u)
+    call require(errors, l%izz >= min_body_inertia, pre, g, 'izz', fmt_real(l%izz)//u, &
+                 'izz >= '//fmt_real(min_body_inertia)//u)
+    positive_diagonal = l%ixx >= min_body_inertia .and. l%iyy >= min_body_inertia .and. l%izz >= min_body_inertia
     if (.not. positive_diagonal) return
     t = reshape([l%ixx, -l%ixy, -l%ixz, -l%ixy, l%iyy, -l%iyz, -l%ixz, -l%iyz, l%izz], [3, 3])
     m1 = t(1, 1)
@@ -1409,6 +1423,14 @@ contains
       pts = reshape([g%point_a(:, i), g%point_b(:, i), g%point_c(:, i), g%point_d(:, i), g%point_e(:, i), &
                      g%point_f(:, i)], [3, 6])
       if (.not. all(is_set(pts))) cycle   ! reported by resolve_input
+      if (any(abs(pts) > max_hard_point)) then
+        do j = 1, 6
+          if (any(abs(pts(:, j)) > max_hard_point)) &
+            call errors%add(pre//'&gears: point_'//letters(j)//'(:, '//fmt_int(i)//') = ('//fmt_reals(pts(:, j))// &
+                            ') m is out of range; valid: every coordinate within +-'//fmt_real(max_hard_point)//' m')
+        end do
+        cycle
+      end if
       do j = 1, 5
         do k = j + 1, 6
           if (norm2(pts(:, j) - pts(:, k)) < coincide_tol) &
@@ -1502,6 +1524,9 @@ contains
                  'stop_damping >= 0 N s/m')
     call part(s%outer_mass, s%outer_cm, s%outer_inertia, 'outer')
     call part(s%inner_mass, s%inner_cm, s%inner_inertia, 'inner')
+    if (s%inner_mass >= 0.0_wp) &
+      call require(errors, s%inner_mass > 0.0_wp, pre, g, 'inner_mass', fmt_real(s%inner_mass)//' kg', &
+                   'inner_mass > 0 kg (the sliding lower part of a secondary strut needs mass)')
   contains
     subroutine part(m, cm, j, which)
       real(wp), intent(in) :: m, cm, j              !! mass [kg], mass-centre distance [m], inertia [kg m^2]
@@ -1521,7 +1546,9 @@ contains
                  'one of '//quoted_list(contact_law_names))
     call require(errors, c%stiffness > 0.0_wp, pre, 'contact', 'stiffness', fmt_real(c%stiffness)//' N/m^n', &
                  'stiffness > 0')
-    call require(errors, c%exponent > 0.0_wp, pre, 'contact', 'exponent', fmt_real(c%exponent), 'exponent > 0')
+    call require(errors, c%exponent >= min_contact_exponent .and. c%exponent <= max_contact_exponent, pre, &
+                 'contact', 'exponent', fmt_real(c%exponent), fmt_real(min_contact_exponent)//' <= exponent <= '// &
+                 fmt_real(max_contact_exponent))
     call require(errors, c%damping >= 0.0_wp, pre, 'contact', 'damping', fmt_real(c%damping)//' N s/m', &
                  'damping >= 0 N s/m')
     call require(errors, c%damping_depth > 0.0_wp, pre, 'contact', 'damping_depth', &

@@ -31,7 +31,7 @@
 !! * Gear geometry: hard points a (primary upper universal joint), b, c (left / right secondary
 !!   upper universal joints), d (footpad ball joint), e, f (left / right secondary lower ball
 !!   joints on the primary's outer tube), given in the GEAR frame at the nominal, uncrushed
-!!   configuration. Left secondary runs b -> e, right secondary c -> f (MODEL_NOTES pairing).
+!!   configuration. Left secondary runs b -> e, right secondary c -> f (docs/model_conventions.md pairing).
 !! * Strut frames. Each strut (upper joint P, lower end X) has a nominal frame R0 = [x0 y0 z0]
 !!   (columns, in the gear frame): z0 = unit vector from P toward X at the nominal configuration,
 !!   x0 = normalize(ey x z0) with ey = (0,1,0) of the gear frame (ex if z0 is nearly parallel to

@@ -6,12 +6,13 @@
 !!
 !! Library code: nothing here stops or prints; every procedure is pure.
 module landyn_namelist_text
-  use landyn_strings, only: lower_case, is_blank_char, is_letter, is_ident_char
+  use landyn_strings, only: lower_case, is_blank_char, is_letter, is_ident_char, is_digit
   implicit none
   private
 
   public :: strip_comments, next_ampersand, group_name_end, find_group_end, find_item_names, name_start
   public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
+  public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word
 
 contains
 
@@ -250,5 +251,224 @@ contains
       if (.not. is_blank_char(t(i:i))) s = s//t(i:i)
     end do
   end function remove_blanks
+
+  !> Blank every byte of `work` that is not printable ASCII (nor tab, line end or form feed) and
+  !! return the position of the first such byte of each line that has one. Decks are ASCII text;
+  !! inside quoted strings valid UTF-8 is accepted too (a title with a degree sign); other bytes
+  !! are allowed only in comments (strip them first).
+  pure subroutine mask_non_ascii(work, first_bad)
+    character(len=*), intent(inout) :: work            !! comment-free text [-]
+    integer, allocatable, intent(out) :: first_bad(:)  !! one position per offending line [-]
+    integer :: p, c, last_line_reported, line, nc, k
+    character(len=1) :: quote
+    allocate (first_bad(0))
+    last_line_reported = 0
+    line = 1
+    quote = ' '
+    p = 0
+    do while (p < len(work))
+      p = p + 1
+      c = ichar(work(p:p))
+      if (c == 10) then
+        line = line + 1
+        cycle
+      end if
+      if (c == 9 .or. c == 12 .or. (c >= 32 .and. c <= 126)) then
+        if (quote /= ' ') then
+          if (work(p:p) == quote) quote = ' '
+        else if (work(p:p) == '"' .or. work(p:p) == "'") then
+          quote = work(p:p)
+        end if
+        cycle
+      end if
+      if (quote /= ' ') then
+        ! a complete UTF-8 sequence inside a string is kept
+        nc = 0
+        if (c >= 194 .and. c <= 223) nc = 1
+        if (c >= 224 .and. c <= 239) nc = 2
+        if (c >= 240 .and. c <= 244) nc = 3
+        if (nc > 0 .and. p + nc <= len(work)) then
+          if (all([(ichar(work(k:k)) >= 128 .and. ichar(work(k:k)) <= 191, k = p + 1, p + nc)])) then
+            p = p + nc
+            cycle
+          end if
+        end if
+      end if
+      if (line /= last_line_reported) then
+        first_bad = [first_bad, p]
+        last_line_reported = line
+      end if
+      work(p:p) = ' '
+    end do
+  end subroutine mask_non_ascii
+
+  !> First name without '= value' in the value text of an item (outside quotes), e.g. `dt` in
+  !! `t_end = 0.05, dt`; '' when there is none. Logical constants (t, f, .true., false, ...) and
+  !! nan/inf are values, not names.
+  pure function bare_name_in_value(value) result(name)
+    character(len=*), intent(in) :: value   !! text after the item's '=' [-]
+    character(len=:), allocatable :: name   !! the bare name, '' if none [-]
+    character(len=1) :: quote
+    character(len=:), allocatable :: tok
+    integer :: p, q
+    name = ''
+    quote = ' '
+    p = 1
+    do while (p <= len(value))
+      if (quote /= ' ') then
+        if (value(p:p) == quote) quote = ' '
+        p = p + 1
+        cycle
+      end if
+      if (value(p:p) == '"' .or. value(p:p) == "'") then
+        quote = value(p:p)
+        p = p + 1
+        cycle
+      end if
+      if (is_blank_char(value(p:p)) .or. value(p:p) == ',' .or. value(p:p) == '*') then
+        p = p + 1
+        cycle
+      end if
+      q = p
+      do while (q <= len(value))
+        if (is_blank_char(value(q:q)) .or. value(q:q) == ',' .or. value(q:q) == '*' .or. &
+            value(q:q) == '"' .or. value(q:q) == "'") exit
+        q = q + 1
+      end do
+      tok = lower_case(value(p:q - 1))
+      if (tok(1:1) == '+' .or. tok(1:1) == '-') tok = tok(2:)
+      if (len(tok) > 0) then
+        if (is_letter(tok(1:1)) .and. .not. value_word(tok)) then
+          name = value(p:q - 1)
+          return
+        end if
+      end if
+      p = q
+    end do
+  contains
+    pure logical function value_word(t)
+      character(len=*), intent(in) :: t   !! token in lower case [-]
+      select case (t)
+      case ('t', 'f', 'true', 'false', '.t.', '.f.', '.true.', '.false.', 'nan', 'inf', 'infinity')
+        value_word = .true.
+      case default
+        value_word = .false.
+      end select
+    end function value_word
+  end function bare_name_in_value
+
+  !> False when a number in the value text has a decimal exponent above max_decimal_exponent, found
+  !! before the text is read
+  !! (reading them would overflow, which traps in Debug builds).
+  pure function numbers_within(value, max_decimal_exponent) result(ok)
+    character(len=*), intent(in) :: value  !! value text of one item [-]
+    integer, intent(in) :: max_decimal_exponent  !! largest decimal exponent accepted [-]
+    logical :: ok                          !! no number is too large [-]
+    integer :: p, n, nint_digits, expo, esign, mag
+    logical :: in_mantissa_digits, seen_point, lead
+    character(len=1) :: quote, c
+    ok = .true.
+    n = len(value)
+    quote = ' '
+    p = 1
+    do while (p <= n)
+      c = value(p:p)
+      if (quote /= ' ') then
+        if (c == quote) quote = ' '
+        p = p + 1
+        cycle
+      end if
+      if (c == '"' .or. c == "'") then
+        quote = c
+        p = p + 1
+        cycle
+      end if
+      if (.not. (is_digit(c) .or. c == '.')) then
+        p = p + 1
+        cycle
+      end if
+      ! A number starts here: count significant integer digits, then read the exponent.
+      nint_digits = 0
+      seen_point = .false.
+      lead = .true.
+      in_mantissa_digits = .true.
+      do while (p <= n .and. in_mantissa_digits)
+        c = value(p:p)
+        if (is_digit(c)) then
+          if (.not. seen_point) then
+            if (.not. (lead .and. c == '0')) then
+              nint_digits = nint_digits + 1
+              lead = .false.
+            end if
+          end if
+          p = p + 1
+        else if (c == '.' .and. .not. seen_point) then
+          seen_point = .true.
+          p = p + 1
+        else
+          in_mantissa_digits = .false.
+        end if
+      end do
+      expo = 0
+      if (p <= n) then
+        c = lower_case(value(p:p))
+        if (c == 'e' .or. c == 'd' .or. c == 'q') p = p + 1
+        esign = 1
+        if (p <= n) then
+          if (value(p:p) == '+' .or. value(p:p) == '-') then
+            if (value(p:p) == '-') esign = -1
+            p = p + 1
+          end if
+        end if
+        do while (p <= n)
+          if (.not. is_digit(value(p:p))) exit
+          if (expo < 100000) expo = 10*expo + (iachar(value(p:p)) - iachar('0'))
+          p = p + 1
+        end do
+        expo = esign*expo
+      end if
+      mag = nint_digits - 1 + expo
+      if (nint_digits > 0 .and. mag > max_decimal_exponent) ok = .false.
+      if (nint_digits == 0 .and. expo > max_decimal_exponent) ok = .false.
+    end do
+  end function numbers_within
+  !> True when the value text (outside quotes) holds nan, inf or infinity as a word.
+  pure function has_nonfinite_word(value) result(yes)
+    character(len=*), intent(in) :: value   !! value text [-]
+    logical :: yes                          !! a non-finite word was found [-]
+    character(len=1) :: quote
+    character(len=:), allocatable :: tok
+    integer :: p, q
+    yes = .false.
+    quote = ' '
+    p = 1
+    do while (p <= len(value))
+      if (quote /= ' ') then
+        if (value(p:p) == quote) quote = ' '
+        p = p + 1
+        cycle
+      end if
+      if (value(p:p) == '"' .or. value(p:p) == "'") then
+        quote = value(p:p)
+        p = p + 1
+        cycle
+      end if
+      if (.not. is_letter(value(p:p))) then
+        p = p + 1
+        cycle
+      end if
+      q = p
+      do while (q <= len(value))
+        if (.not. is_ident_char(value(q:q))) exit
+        q = q + 1
+      end do
+      tok = lower_case(value(p:q - 1))
+      if (tok == 'nan' .or. tok == 'inf' .or. tok == 'infinity') then
+        yes = .true.
+        return
+      end if
+      p = q
+    end do
+  end function has_nonfinite_word
 
 end module landyn_namelist_text

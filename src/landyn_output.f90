@@ -8,6 +8,7 @@ module landyn_output
   use landyn_version, only: landyn_version_string, landyn_git_revision, landyn_build_type, landyn_fflags
   use landyn_input, only: resolved_input_text
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
+  use landyn_health, only: health_t, check_names, n_checks
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr
   implicit none
   private
@@ -29,18 +30,21 @@ contains
   end function iso_timestamp
 
   !> Writes the result file `path` (via `path`.partial and a rename).
-  subroutine write_result_file(path, inp, res, command_line, stat, errmsg)
+  !! With `health`, the run-health checks go to /summary/health (docs/output.md).
+  subroutine write_result_file(path, inp, res, command_line, stat, errmsg, health)
     character(len=*), intent(in) :: path           !! result file name
     type(landyn_input_t), intent(in) :: inp        !! resolved input
     type(sim_result_t), intent(in) :: res          !! results
     character(len=*), intent(in) :: command_line   !! the command that ran LANDYN
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message on failure
+    type(health_t), intent(in), optional :: health !! run-health checks [-]
     type(h5_file_t) :: f
 
     call h5_create_partial(f, path, stat, errmsg)
     if (stat /= 0) return
     call write_all(f, inp, res, command_line, stat, errmsg)
+    if (stat == 0 .and. present(health)) call write_health_group(f, health, stat, errmsg)
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_result_file
 
@@ -176,6 +180,27 @@ contains
     call h5_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
   end subroutine write_all
+
+  subroutine write_health_group(f, h, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file
+    type(health_t), intent(in) :: h                !! run-health checks
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message
+    character(len=:), allocatable :: m
+    call h5_write(f, '/summary/health/status', h%status(), '-', stat, errmsg, &
+      description='worst run-health check: 0 all passed, 1 warnings (doubtful), 2 failed (run meaningless); '// &
+                  'docs/health.md'); if (stat /= 0) return
+    call h5_write(f, '/summary/health/checks', check_names(1:n_checks), '-', stat, errmsg, &
+      description='names of the run-health checks'); if (stat /= 0) return
+    call h5_write(f, '/summary/health/results', h%result, '-', stat, errmsg, &
+      description='per check: 0 passed, 1 warning, 2 failed'); if (stat /= 0) return
+    m = 'none'
+    if (allocated(h%messages)) then
+      if (len(h%messages) > 0) m = h%messages
+    end if
+    call h5_write(f, '/summary/health/messages', m, '-', stat, errmsg, &
+      description='one line per check that did not pass; none when all passed')
+  end subroutine write_health_group
 
   pure function nonempty(s, fallback) result(r)
     character(len=*), intent(in) :: s          !! text

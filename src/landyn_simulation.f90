@@ -15,19 +15,22 @@ module landyn_simulation
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3, mtv3
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
-  use landyn_gear, only: gear_t, strut_mass_t, gear_init, gear_dynamics, gear_integrate, gear_footpad, &
+  use landyn_gear, only: gear_t, gear_state_t, gear_save_state, gear_restore_state, strut_mass_t, gear_init, &
+                         gear_dynamics, gear_integrate, gear_footpad, &
                          gear_leg_momentum, gear_relative_momenta, gear_settle
   use landyn_impact, only: system_velocity_projection
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
                             to_global
-  use landyn_contact, only: contact_law_t, make_contact_law
+  use landyn_contact, only: contact_law_t, make_contact_law, advance_contact_state
   use landyn_friction, only: friction_law_t, make_friction_law
+  use landyn_footpad_state, only: footpad_state_t
   use landyn_tube_friction, only: tube_friction_t, make_tube_friction
   implicit none
   private
 
   public :: sim_result_t, run_simulation, setup_model, model_t
+  public :: sim_t, sim_snapshot_t, sim_init, sim_step, sim_save, sim_restore
 
   !> Everything the time loop integrates.
   type :: model_t
@@ -35,14 +38,54 @@ module landyn_simulation
     type(body_t) :: body
     type(gear_t) :: gear(max_gears)
     type(terrain_plane_t) :: plane(max_gears)
-    ! One law instance per footpad, allocated here once: laws with history (contact) or a stick
-    ! state (friction) keep their footpad's state in their instance; the others are plain copies.
-    class(contact_law_t), allocatable :: contact(:)    !! normal contact law of footpad i
-    class(friction_law_t), allocatable :: friction(:)  !! friction law of footpad i
+    ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
+    ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
+    class(contact_law_t), allocatable :: contact       !! normal contact law
+    class(friction_law_t), allocatable :: friction     !! friction law
+    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
   end type model_t
+
+  !> The integrator's own evolving state (accumulators of the fixed-step loop).
+  type :: sim_loop_t
+    integer :: n = 0                                   !! steps taken [-]
+    real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
+    integer :: next_progress = 1                       !! next progress report (in 5 % of the steps) [-]
+    real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
+    real(wp) :: w_friction = 0.0_wp                    !! friction dissipation [J]
+    real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
+    real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
+    real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
+    real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
+    real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
+    real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
+    real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous step [m]
+    real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
+    real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
+    logical :: touched = .false.                       !! a footpad has touched the ground [-]
+    integer :: mode(3, max_gears) = 0                  !! crush mode of each strut at the last step [-]
+  end type sim_loop_t
+
+  !> One simulation in progress: the model (parameters and evolving state) and the integrator.
+  type :: sim_t
+    type(model_t) :: model                             !! the model
+    type(sim_loop_t) :: loop                           !! integrator state
+    real(wp) :: dt = 0.0_wp                            !! time step [s]
+    integer :: nstep = 0                               !! steps to the end time [-]
+    real(wp) :: l_char = 0.0_wp                        !! largest mass-centre to footpad distance [m]
+    real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
+    real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
+  end type sim_t
+
+  !> Everything of a simulation that evolves in time (see sim_save).
+  type :: sim_snapshot_t
+    type(body_t) :: body                               !! body state
+    type(gear_state_t) :: gear(max_gears)              !! gear states
+    type(footpad_state_t) :: footpad(max_gears)        !! footpad histories and stick states
+    type(sim_loop_t) :: loop                           !! integrator state
+  end type sim_snapshot_t
 
   !> Time series (columns = output samples) and summary of one run.
   type :: sim_result_t
@@ -120,8 +163,6 @@ contains
     type(gear_geometry_t) :: geom
     type(strut_mass_t) :: sm(3)
     type(tube_friction_t) :: tube
-    class(contact_law_t), allocatable :: contact
-    class(friction_law_t), allocatable :: friction
     real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
     integer :: i, k
     character(len=msg_len) :: m2
@@ -129,12 +170,11 @@ contains
     stat = 0
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_contact_law(inp%contact, contact, stat, m2)
+    call make_contact_law(inp%contact, model%contact, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
-    allocate (model%contact(model%n_gears), source=contact)
-    call make_friction_law(inp%friction, friction, stat, m2)
+    call make_friction_law(inp%friction, model%friction, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
-    allocate (model%friction(model%n_gears), source=friction)
+    model%footpad = footpad_state_t()
     call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
                             inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
                             tube, stat, m2)
@@ -235,54 +275,79 @@ contains
     integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
-
-    type(model_t), target :: model
-    integer :: ng, n_cap, nstep, n, i, next_progress
-    real(wp) :: dt, t, t_next_out, r(3, 3)
-    real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
-    real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
-    real(wp) :: vslip(2), dslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
-    real(wp) :: xd_prev(3, max_gears), delta_prev(max_gears), fn_prev(max_gears), fground_prev(3, max_gears)
-    real(wp) :: xt_prev(3), thrust_prev(3), xt(3)
-    real(wp) :: w_normal, w_friction, w_thrust, w_impact, ke0, pe0, e_el, ke_legs, tilt, l_char, rest_clock
-    real(wp) :: speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
-    integer :: mode(3, max_gears)
-    logical :: touched
+    type(sim_t) :: sim
+    logical :: done
     integer(kind=8) :: c0, c1, crate
-    character(len=msg_len) :: m2
 
     call system_clock(c0, crate)
+    call sim_init(inp, sim, res, stat, errmsg)
+    if (stat /= 0) return
+    do
+      call sim_step(sim, inp, res, done, stat, errmsg, progress_unit)
+      if (stat /= 0 .or. done) exit
+    end do
+    call system_clock(c1)
+    res%wall_time = real(c1 - c0, wp)/real(crate, wp)
+  end subroutine run_simulation
+
+  !> Builds the model, allocates the result and sets the integrator's state at t = 0.
+  subroutine sim_init(inp, sim, res, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_t), intent(out) :: sim             !! simulation at t = 0
+    type(sim_result_t), intent(out) :: res      !! result, allocated
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! message on failure
+    integer :: i, ng, n_cap
     stat = 0
     ng = inp%gears%n_gears
     res%n_gears = ng
-    call setup_model(inp, model, stat, errmsg)
+    call setup_model(inp, sim%model, stat, errmsg)
     if (stat /= 0) return
-    res%initial_position = model%body%x - matmul(model%body%r, model%body%mc)
-
-    dt = inp%simulation%dt
-    nstep = nint(inp%simulation%t_end/dt)
+    res%initial_position = sim%model%body%x - matmul(sim%model%body%r, sim%model%body%mc)
+    sim%dt = inp%simulation%dt
+    sim%nstep = nint(inp%simulation%t_end/sim%dt)
     n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
     call allocate_result(res, ng, n_cap)
-
-    l_char = 0.0_wp
+    sim%l_char = 0.0_wp
     do i = 1, ng
-      l_char = max(l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
+      sim%l_char = max(sim%l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
     end do
-
-    ke0 = body_kinetic_energy(model%body)
-    pe0 = -model%body%mass*inp%simulation%gravity*model%body%x(3)
-    w_normal = 0.0_wp; w_friction = 0.0_wp; w_thrust = 0.0_wp; w_impact = 0.0_wp
-    fn_prev = 0.0_wp; fground_prev = 0.0_wp; thrust_prev = 0.0_wp
-    delta_prev = 0.0_wp; xd_prev = 0.0_wp
-    xt_prev = body_point_position(model%body, inp%engine%point)
-    rest_clock = 0.0_wp
-    mode = 0
-    touched = .false.
-    t_next_out = 0.0_wp
-    next_progress = 1
+    sim%ke0 = body_kinetic_energy(sim%model%body)
+    sim%pe0 = -sim%model%body%mass*inp%simulation%gravity*sim%model%body%x(3)
+    sim%loop%xt_prev = body_point_position(sim%model%body, inp%engine%point)
+    sim%loop%n = 0
     res%end_reason = 'end time reached'
+  end subroutine sim_init
 
-    do n = 0, nstep
+  !> One pass of the fixed-step scheme (paper Fig. 6): forces and accelerations at t_n = n dt, the
+  !! output sample of t_n, then (unless t_n is the end time) the step to t_n+1 and its commit
+  !! (footpad histories, strut modes), followed by the divergence, tip-over and rest checks.
+  !! done = .true. when the run has ended (end time, rest, tip-over or failure).
+  subroutine sim_step(sim, inp, res, done, stat, errmsg, progress_unit)
+    type(sim_t), intent(inout) :: sim           !! simulation, advanced by one step
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res    !! time series and summary
+    logical, intent(out) :: done                !! the run has ended
+    integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
+    integer :: ng, n, nstep, i
+    real(wp) :: dt, t, r(3, 3)
+    real(wp) :: pos_g(3), vel_g(3), d_l(3), xd(3, max_gears), vd(3, max_gears)
+    real(wp) :: delta(max_gears), delta_dot(max_gears), fn(max_gears), ft(2), fground(3, max_gears)
+    real(wp) :: vslip(2), dslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
+    real(wp) :: xt(3), e_el, ke_legs, ke_body, tilt, speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
+    real(wp) :: fnm
+    type(footpad_state_t) :: trial(max_gears)
+    character(len=msg_len) :: m2
+
+    stat = 0
+    done = .false.
+    ng = sim%model%n_gears
+    n = sim%loop%n
+    nstep = sim%nstep
+    dt = sim%dt
+    associate (model => sim%model)
       t = n*dt
       r = model%body%r
       ! ---- Step 2: footpads and ground forces
@@ -293,42 +358,52 @@ contains
         vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
         delta(i) = penetration(model%plane(i), xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), vd(:, i))
-        if (model%contact(i)%has_history) call model%contact(i)%update(delta(i), delta_dot(i))
+        ! trial footpad state of this step: committed with the step below
+        trial(i) = model%footpad(i)
+        if (model%contact%has_history) call advance_contact_state(trial(i)%contact, delta(i), delta_dot(i))
         if (delta(i) > 0.0_wp) then
-          fn(i) = model%contact(i)%normal_force(delta(i), delta_dot(i))
-          touched = .true.
+          fn(i) = model%contact%normal_force(delta(i), delta_dot(i), trial(i)%contact)
+          sim%loop%touched = .true.
         else
           fn(i) = 0.0_wp
         end if
         vslip = slip_velocity(model%plane(i), vd(:, i))
-        if (model%friction(i)%has_stiction) then
+        if (model%friction%has_stiction) then
           ! stick state: advanced with the footpad's tangential displacement over the last step
           dslip = 0.0_wp
-          if (n > 0) dslip = slip_velocity(model%plane(i), xd(:, i) - xd_prev(:, i))
-          call model%friction(i)%stick_slip_force(vslip, dslip, fn(i), ft)
+          if (n > 0) dslip = slip_velocity(model%plane(i), xd(:, i) - sim%loop%xd_prev(:, i))
+          call model%friction%stick_slip_force(trial(i)%friction, vslip, dslip, fn(i), ft)
         else
-          ft = model%friction(i)%friction_force(vslip, fn(i))
+          ft = model%friction%friction_force(vslip, fn(i))
         end if
         fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
       end do
-      ! ---- energy audit: work of the ground forces over the last step (force x displacement)
+      thrust_l = 0.0_wp
+      if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) thrust_l = inp%engine%thrust*inp%engine%direction
+      thrust_g = mv3(r, thrust_l)
+      ! ---- energy audit: work of the ground forces and the thrust over the last step, by the
+      ! trapezoidal rule (mean of the forces at both ends times the displacement): the scheme is
+      ! the leapfrog (positions at t_n, the stored velocities at t_n - dt/2), whose kinetic energy
+      ! at t_n (velocities synchronised, below) changes by exactly that to second order
       if (n > 0) then
         do i = 1, ng
-          w_normal = w_normal + fn_prev(i)*(delta(i) - delta_prev(i))
-          w_friction = w_friction - dot_product(fground_prev(:, i), xd(:, i) - xd_prev(:, i)) &
-                       - fn_prev(i)*(delta(i) - delta_prev(i))
-          if (fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
-            + norm2(slip_velocity(model%plane(i), xd(:, i) - xd_prev(:, i)))
+          fnm = 0.5_wp*(sim%loop%fn_prev(i) + fn(i))
+          sim%loop%w_normal = sim%loop%w_normal + fnm*(delta(i) - sim%loop%delta_prev(i))
+          sim%loop%w_friction = sim%loop%w_friction &
+            - dot_product(0.5_wp*(sim%loop%fground_prev(:, i) + fground(:, i)), xd(:, i) - sim%loop%xd_prev(:, i)) &
+            - fnm*(delta(i) - sim%loop%delta_prev(i))
+          if (sim%loop%fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
+            + norm2(slip_velocity(model%plane(i), xd(:, i) - sim%loop%xd_prev(:, i)))
         end do
         xt = body_point_position(model%body, inp%engine%point)
-        w_thrust = w_thrust + dot_product(thrust_prev, xt - xt_prev)
-        xt_prev = xt
+        sim%loop%w_thrust = sim%loop%w_thrust + dot_product(0.5_wp*(sim%loop%thrust_prev + thrust_g), xt - sim%loop%xt_prev)
+        sim%loop%xt_prev = xt
       end if
       do i = 1, ng
         res%peak_penetration(i) = max(res%peak_penetration(i), delta(i))
         res%peak_normal_force(i) = max(res%peak_normal_force(i), fn(i))
       end do
-      xd_prev = xd; delta_prev = delta; fn_prev = fn; fground_prev = fground
+      sim%loop%xd_prev = xd; sim%loop%delta_prev = delta; sim%loop%fn_prev = fn; sim%loop%fground_prev = fground
 
       ! ---- Steps 3-4: gear dynamics and crush logic
       force = model%body%mass*model%g_vec
@@ -340,6 +415,7 @@ contains
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           call finish(model, res, t)
+          done = .true.
           return
         end if
         gf(:, i) = mv3(model%gear(i)%rot, model%gear(i)%f_body)
@@ -348,15 +424,12 @@ contains
       fb_l = symmetric_sum(gf, ng)
       force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
-      ! engine thrust
-      thrust_l = 0.0_wp
+      ! engine thrust (computed with the footpad forces above)
       if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) then
-        thrust_l = inp%engine%thrust*inp%engine%direction
         moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
       end if
-      thrust_g = mv3(r, thrust_l)
       force = force + thrust_g
-      thrust_prev = thrust_g
+      sim%loop%thrust_prev = thrust_g
       ! ---- Step 6: body accelerations
       call body_accelerations(model%body, force, moment)
       ovl = mtv3(r, model%body%acc - model%g_vec)/g_earth
@@ -373,17 +446,24 @@ contains
       end do
 
       ! ---- output sample (state at t_n with the forces at t_n)
-      if (t >= t_next_out - 0.5_wp*dt) then
-        ke_legs = leg_energy(model, inp%simulation%gravity)
+      if (t >= sim%loop%t_next_out - 0.5_wp*dt) then
+        ! kinetic energies with the velocities at t_n: the stored ones (t_n - dt/2) plus half a step
+        ! of the accelerations just computed
+        call synchronised_energies(model, dt, inp%simulation%gravity, ke_body, ke_legs)
         e_el = 0.0_wp
         do i = 1, ng
-          if (delta(i) > 0.0_wp) e_el = e_el + model%contact(i)%elastic_energy(delta(i))
+          if (delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(delta(i), trial(i)%contact)
         end do
-        call record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
-                    ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
-        t_next_out = t_next_out + inp%output%interval
+        call record(res, model, t, ovl, xd, fground, fn, delta, vd, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
+                    sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, inp%simulation%gravity, ke_body)
+        sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
       end if
-      if (n == nstep) exit
+      if (n == nstep) then
+        res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time
+        call finish(model, res, nstep*dt)
+        done = .true.
+        return
+      end if
 
       ! ---- Steps 4 and 6: advance the body and the gears
       call body_step(model%body, dt)
@@ -393,6 +473,7 @@ contains
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t + dt, ' s: ', trim(m2)
           call finish(model, res, t + dt)
+          done = .true.
           return
         end if
       end do
@@ -400,14 +481,18 @@ contains
       if (stat /= 0) then
         write (errmsg, '(a,es12.5,a,a)') 'velocity projection at t = ', t + dt, ' s: ', trim(m2)
         call finish(model, res, t + dt)
+        done = .true.
         return
       end if
-      w_impact = w_impact + e_imp
+      sim%loop%w_impact = sim%loop%w_impact + e_imp
+      ! ---- commit: footpad histories and stick states, strut modes
+      model%footpad(1:ng) = trial(1:ng)
       do i = 1, ng
         call gear_settle(model%gear(i))
-        call count_mode_switches(model%gear(i), mode(:, i), res%mode_switches(:, i))
+        call count_mode_switches(model%gear(i), sim%loop%mode(:, i), res%mode_switches(:, i))
       end do
       res%n_steps = n + 1
+      sim%loop%n = n + 1
 
       ! ---- divergence, tip-over and rest checks
       if (.not. (all(ieee_is_finite(model%body%x)) .and. all(ieee_is_finite(model%body%v)) .and. &
@@ -416,6 +501,7 @@ contains
         write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t + dt, &
           ' s: the integration diverged (reduce &simulation dt or check the input)'
         call finish(model, res, t + dt)
+        done = .true.
         return
       end if
       tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))
@@ -423,50 +509,67 @@ contains
       if (tilt > inp%simulation%tipover_angle) then
         res%tipped_over = .true.
         res%end_reason = 'tipped over'
-        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
+        call record_final(res, model, t + dt, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
+                          sim%loop%w_impact)
         call finish(model, res, t + dt)
-        call wall(res, c0, crate)
+        done = .true.
         return
       end if
-      speed_char = norm2(model%body%v) + norm2(model%body%omega)*l_char
-      if (touched .and. speed_char < inp%simulation%rest_speed) then
-        rest_clock = rest_clock + dt
+      speed_char = norm2(model%body%v) + norm2(model%body%omega)*sim%l_char
+      if (sim%loop%touched .and. speed_char < inp%simulation%rest_speed) then
+        sim%loop%rest_clock = sim%loop%rest_clock + dt
       else
-        rest_clock = 0.0_wp
+        sim%loop%rest_clock = 0.0_wp
       end if
-      if (inp%simulation%stop_at_rest .and. rest_clock >= inp%simulation%rest_time) then
+      if (inp%simulation%stop_at_rest .and. sim%loop%rest_clock >= inp%simulation%rest_time) then
         res%at_rest = .true.
         res%end_reason = 'at rest'
-        call record_final(res, model, t + dt, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
+        call record_final(res, model, t + dt, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
+                          sim%loop%w_impact)
         call finish(model, res, t + dt)
-        call wall(res, c0, crate)
+        done = .true.
         return
       end if
       if (progress_unit >= 0) then
-        if ((n + 1) >= next_progress*nstep/20) then
+        if ((n + 1) >= sim%loop%next_progress*nstep/20) then
           write (progress_unit, '(a,f8.4,a,f8.4,a,i3,a,f9.2,a)') 'landyn: t = ', t + dt, ' s of ', &
-            inp%simulation%t_end, ' s (', 5*next_progress, ' %), max primary stroke ', &
+            inp%simulation%t_end, ' s (', 5*sim%loop%next_progress, ' %), max primary stroke ', &
             1000.0_wp*maxval([(model%gear(i)%s_hismax(1), i=1, ng)]), ' mm'
           flush (progress_unit)
-          next_progress = next_progress + 1
+          sim%loop%next_progress = sim%loop%next_progress + 1
         end if
       end if
+    end associate
+  end subroutine sim_step
+
+  !> Snapshot of everything that evolves in a simulation: body, gears (coordinates, rates, crush
+  !! modes and history, caches), footpad histories and stick states, and the integrator's
+  !! accumulators. Restoring it makes the simulation continue exactly as from the moment it was
+  !! taken (bit for bit): the basis of rejected steps and event location.
+  subroutine sim_save(sim, snap)
+    type(sim_t), intent(in) :: sim              !! simulation
+    type(sim_snapshot_t), intent(out) :: snap   !! its evolving state
+    integer :: i
+    snap%body = sim%model%body
+    do i = 1, sim%model%n_gears
+      call gear_save_state(sim%model%gear(i), snap%gear(i))
     end do
-    res%at_rest = rest_clock >= inp%simulation%rest_time
-    call finish(model, res, nstep*dt)
-    call wall(res, c0, crate)
+    snap%footpad = sim%model%footpad
+    snap%loop = sim%loop
+  end subroutine sim_save
 
-  contains
-
-    subroutine wall(res_, c0_, crate_)
-      type(sim_result_t), intent(inout) :: res_  !! result
-      integer(kind=8), intent(in) :: c0_         !! start count
-      integer(kind=8), intent(in) :: crate_      !! count rate
-      call system_clock(c1)
-      res_%wall_time = real(c1 - c0_, wp)/real(crate_, wp)
-    end subroutine wall
-
-  end subroutine run_simulation
+  !> Puts a snapshot from sim_save back.
+  subroutine sim_restore(sim, snap)
+    type(sim_t), intent(inout) :: sim           !! simulation
+    type(sim_snapshot_t), intent(in) :: snap    !! snapshot
+    integer :: i
+    sim%model%body = snap%body
+    do i = 1, sim%model%n_gears
+      call gear_restore_state(sim%model%gear(i), snap%gear(i))
+    end do
+    sim%model%footpad = snap%footpad
+    sim%loop = snap%loop
+  end subroutine sim_restore
 
   !> Sum of the gears' loads, adding diametrically opposed gears (i, i + n/2) first when n is even:
   !! for a lander symmetric under rotation by 360/n deg their contributions then cancel exactly in
@@ -511,9 +614,38 @@ contains
     end do
   end subroutine count_mode_switches
 
+  !> Kinetic energies at t_n for the audit. The semi-implicit Euler step is the leapfrog: its
+  !! positions belong to t_n and its stored velocities to t_n - dt/2, so the velocities at t_n are
+  !! the stored ones plus dt/2 times the accelerations evaluated at t_n (body and legs). The model
+  !! is used as scratch and left as it was.
+  subroutine synchronised_energies(model, dt, gravity, ke_body, ke_legs)
+    type(model_t), intent(inout) :: model   !! model with the accelerations of t_n; unchanged on return
+    real(wp), intent(in) :: dt              !! step [s]
+    real(wp), intent(in) :: gravity         !! [m/s^2]
+    real(wp), intent(out) :: ke_body        !! body kinetic energy (total mass) [J]
+    real(wp), intent(out) :: ke_legs        !! leg energy terms (landyn leg_energy) [J]
+    real(wp) :: v(3), w(3), qd(9, max_gears)
+    integer :: i
+    v = model%body%v
+    w = model%body%omega
+    model%body%v = v + 0.5_wp*dt*model%body%acc
+    model%body%omega = w + 0.5_wp*dt*model%body%alpha
+    do i = 1, model%n_gears
+      qd(:, i) = model%gear(i)%qd
+      model%gear(i)%qd = qd(:, i) + 0.5_wp*dt*model%gear(i)%qdd
+    end do
+    ke_body = body_kinetic_energy(model%body)
+    ke_legs = leg_energy(model, gravity)
+    model%body%v = v
+    model%body%omega = w
+    do i = 1, model%n_gears
+      model%gear(i)%qd = qd(:, i)
+    end do
+  end subroutine synchronised_energies
+
   !> Records one output sample.
   subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
-                    ke0, pe0, ke_legs, e_el, gravity)
+                    ke0, pe0, ke_legs, e_el, gravity, ke_body)
     type(sim_result_t), intent(inout) :: res      !! result
     type(model_t), intent(in) :: model            !! model
     real(wp), intent(in) :: t                     !! time [s]
@@ -532,6 +664,7 @@ contains
     real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
     real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
     real(wp), intent(in) :: gravity               !! [m/s^2]
+    real(wp), intent(in), optional :: ke_body     !! body kinetic energy; default from the stored velocities [J]
     integer :: k, i
     real(wp) :: s(3), pe, ke, crush, e_in
     if (res%n_out >= size(res%t)) return
@@ -567,6 +700,7 @@ contains
     res%acc_normal_force = 0.0_wp
     res%acc_strut_force = 0.0_wp
     ke = body_kinetic_energy(model%body)
+    if (present(ke_body)) ke = ke_body
     pe = -model%body%mass*gravity*model%body%x(3)
     e_in = ke0 + (pe0 - pe) + w_thrust
     res%energy(k, 1) = ke
@@ -609,8 +743,9 @@ contains
       fn(i) = 0.0_wp
       fg(:, i) = 0.0_wp
       if (delta(i) > 0.0_wp) then
-        fn(i) = model%contact(i)%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)))
-        e_el = e_el + model%contact(i)%elastic_energy(delta(i))
+        fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)), &
+                                           model%footpad(i)%contact)
+        e_el = e_el + model%contact%elastic_energy(delta(i), model%footpad(i)%contact)
       end if
     end do
     ke_legs = leg_energy(model, inp%simulation%gravity)

@@ -32,8 +32,12 @@ module landyn_study
   use landyn_config, only: landyn_input_t, path_len
   use landyn_input, only: input_errors_t, read_input_file, apply_input_text, resolve_input, validate_input
   use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_health, only: health_t, check_health, health_fail
   use landyn_output, only: write_result_file, iso_timestamp
   use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_files, only: read_whole_file
+  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, line_of, &
+                                  mask_non_ascii
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr, rename_file, delete_file
   implicit none
   private
@@ -41,7 +45,7 @@ module landyn_study
   public :: study_t, variant_t, run_record_t
   public :: read_study, prepare_study, run_study, write_study_csv, write_study_h5
   public :: max_cases, max_sets, max_measures, label_len, set_len
-  public :: status_ok, status_input, status_failed
+  public :: status_ok, status_input, status_failed, status_unhealthy
 
   integer, parameter :: max_cases = 8        !! load cases per study
   integer, parameter :: max_sets = 32        !! `set` / `common` entries per group
@@ -51,6 +55,7 @@ module landyn_study
   integer, parameter :: status_ok = 0        !! run completed (a tip-over is a result)
   integer, parameter :: status_input = 2     !! invalid input: not run
   integer, parameter :: status_failed = 3    !! the simulation failed (diverged)
+  integer, parameter :: status_unhealthy = 6 !! completed, but a run-health check failed (docs/health.md)
   character(len=*), parameter :: strut_names(3) = [character(len=15) :: 'primary', 'secondary left', &
                                                    'secondary right']
 
@@ -116,25 +121,79 @@ contains
     namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
       measure_strut, keep_results
     namelist /variant/ label, set
-    integer :: u, ios, n0, i, nv, nsz
+    integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study
+    integer, allocatable :: bad(:)
     character(len=msg_len) :: msg
-    character(len=:), allocatable :: text, dir, ovr
+    character(len=:), allocatable :: text, dir, ovr, work, gname, rmsg, buf
+    integer, allocatable :: vs(:), ve(:)
     type(variant_t), allocatable :: tmp(:)
+    logical :: terminated
 
     n0 = errors%count()
     stat = 0
     sd%deck_name = trim(path)
-    call read_text(path, text, ios, msg)
+    call read_whole_file(path, text, ios, rmsg)
     if (ios /= 0) then
-      call errors%add(trim(path)//': cannot read the study deck: '//trim(msg))
+      call errors%add(path//': cannot read the study deck: '//rmsg)
       stat = 2
       return
     end if
     sd%deck_text = text
-    call check_groups(text, path, errors)
     dir = ''
     i = index(path, '/', back=.true.)
     if (i > 0) dir = path(1:i)
+
+    ! ---- split the deck into groups: one &study, &variant groups, nothing else
+    allocate (character(len=len(text)) :: work)
+    call strip_comments(text, work, qpos)
+    if (qpos > 0) then
+      call errors%add(path//':'//int_text(line_of(work, qpos))//': unterminated character string (no closing quote)')
+      work(qpos:) = repeat(' ', len(work) - qpos + 1)
+    end if
+    call mask_non_ascii(work, bad)
+    do k = 1, size(bad)
+      call errors%add(path//':'//int_text(line_of(work, bad(k)))//': a byte that is not ASCII text; decks are '// &
+                      'ASCII text (UTF-8 only inside quoted strings and ! comments)')
+    end do
+    buf = ''
+    n_study = 0
+    allocate (vs(0), ve(0))
+    p = 1
+    do while (p <= len(work))
+      if (index(' '//achar(9)//achar(10)//achar(12), work(p:p)) > 0) then
+        p = p + 1
+        cycle
+      end if
+      if (work(p:p) /= '&') then
+        e = next_ampersand(work, p)
+        call errors%add(path//':'//int_text(line_of(work, p))//': text outside any namelist group: '''// &
+                        short(work(p:e - 1))//''' (groups start with &name and end with /)')
+        p = e
+        cycle
+      end if
+      q = group_name_end(work, p)
+      gname = lower(work(p + 1:q - 1))
+      call find_group_end(work, q, e, terminated, next_p)
+      if (.not. terminated .and. (gname == 'study' .or. gname == 'variant')) &
+        call errors%add(path//':'//int_text(line_of(work, p))//': &'//gname//": group is not terminated by '/'")
+      select case (gname)
+      case ('study')
+        n_study = n_study + 1
+        if (n_study == 1) then
+          buf = work(p:e - 1)//' /'
+        else
+          call errors%add(path//':'//int_text(line_of(work, p))//': a second &study group; a study deck has '// &
+                          'exactly one')
+        end if
+      case ('variant')
+        vs = [vs, p]
+        ve = [ve, e - 1]
+      case default
+        call errors%add(path//':'//int_text(line_of(work, p))//": unknown group '&"//gname// &
+                        "'; a study deck has one &study and &variant groups")
+      end select
+      p = next_p
+    end do
 
     title = ''
     base_deck = ''
@@ -146,19 +205,14 @@ contains
     measure_gear = 0
     measure_strut = 0
     keep_results = .false.
-    open (newunit=u, file=trim(path), status='old', action='read', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      call errors%add(trim(path)//': cannot open the study deck: '//trim(msg))
-      stat = 2
-      return
-    end if
-    read (u, nml=study, iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      if (ios < 0) then
-        call errors%add(trim(path)//': no &study group (it names the load-case decks: base_deck = ...)')
-      else
-        call errors%add(trim(path)//': &study: '//trim(msg))
-      end if
+    ios = 0
+    if (n_study == 0) then
+      ios = -1
+      call errors%add(path//': no &study group (it names the load-case decks: base_deck = ...)')
+    else
+      msg = ''
+      read (buf, nml=study, iostat=ios, iomsg=msg)
+      if (ios /= 0) call errors%add(path//': &study: '//trim(msg))
     end if
     sd%title = title
     sd%n_cases = count(len_trim(base_deck) > 0)
@@ -175,6 +229,11 @@ contains
       sd%case_label(i) = case_label(i)
       if (len_trim(case_label(i)) == 0) sd%case_label(i) = default_case_label(base_deck(i))
     end do
+    do i = 2, sd%n_cases
+      if (any(sd%case_label(1:i - 1) == sd%case_label(i))) &
+        call errors%add(path//': &study: case_label '''//trim(sd%case_label(i))//''' is given twice; '// &
+                        'valid: distinct labels (they name the runs and the rows of the table)')
+    end do
     sd%common = ''
     call join_sets(common, 'common', path, sd%common, errors)
     sd%output = output
@@ -184,26 +243,27 @@ contains
     sd%keep_results = keep_results
     call set_measures(sd, measure_case, measure_gear, measure_strut, path, errors, 4)
 
-    ! every &variant, in order
-    rewind (u)
+    ! ---- every &variant, in order; every bad one reported
     nv = 0
-    allocate (sd%variant(8))
-    do
+    allocate (sd%variant(max(8, size(vs))))
+    do k = 1, size(vs)
       label = ''
       set = ''
-      read (u, nml=variant, iostat=ios, iomsg=msg)
-      if (ios < 0) exit
+      msg = ''
+      buf = work(vs(k):ve(k))//' /'
+      read (buf, nml=variant, iostat=ios, iomsg=msg)
       nv = nv + 1
-      if (ios > 0) then
-        write (msg, '(a,i0,a,a)') ': &variant ', nv, ': ', trim(msg)
-        call errors%add(trim(path)//trim(msg))
-        exit
-      end if
       if (nv > size(sd%variant)) then
         nsz = 2*size(sd%variant)
         allocate (tmp(nsz))
         tmp(1:nv - 1) = sd%variant(1:nv - 1)
         call move_alloc(tmp, sd%variant)
+      end if
+      if (ios /= 0) then
+        call errors%add(path//': &variant '//int_text(k)//': '//trim(msg)//' (&variant takes label and set)')
+        write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
+        sd%variant(nv)%overrides = ''
+        cycle
       end if
       sd%variant(nv)%label = label
       if (len_trim(label) == 0) write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
@@ -211,7 +271,6 @@ contains
       call join_sets(set, 'variant '//trim(sd%variant(nv)%label)//': set', path, ovr, errors)
       sd%variant(nv)%overrides = ovr
     end do
-    close (u)
     sd%n_variants = nv
     if (nv == 0 .and. errors%count() == n0) call errors%add(trim(path)//': no &variant group; valid: one or '// &
                                                              "more, e.g. &variant label = 'Base result' /")
@@ -220,6 +279,18 @@ contains
         call errors%add(trim(path)//': &variant label '''//trim(sd%variant(i)%label)//''' is given twice')
     end do
     stat = merge(0, 1, errors%count() == n0)
+  contains
+    pure function short(t) result(r)
+      character(len=*), intent(in) :: t     !! text [-]
+      character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]
+      integer :: j
+      r = t(1:min(len(t), 60))
+      do j = 1, len(r)
+        if (r(j:j) == achar(10) .or. r(j:j) == achar(9)) r(j:j) = ' '
+      end do
+      r = trim(r)
+      if (len(t) > 60) r = r//'...'
+    end function short
   end subroutine read_study
 
   !> Read, override, resolve and validate the input of every run (case x variant) before anything
@@ -308,6 +379,7 @@ contains
     integer, intent(out) :: stat                 !! 0, status_failed or 4 [-]
     character(len=*), intent(inout) :: errmsg    !! message of a file failure
     type(sim_result_t) :: res
+    type(health_t) :: health
     integer :: c, v, k, n, st
     character(len=msg_len) :: msg
     stat = 0
@@ -329,9 +401,15 @@ contains
             r%status = status_failed
             r%message = msg
             r%crush = ieee_value(1.0_wp, ieee_quiet_nan)
-            if (stat == 0) stat = status_failed
+            stat = status_failed
           else
+            call check_health(study%inp(c, v), res, health)
             r%status = status_ok
+            if (health%status() == health_fail) then
+              r%status = status_unhealthy
+              r%message = 'run-health check failed: '//health%messages
+              if (stat == 0) stat = status_unhealthy
+            end if
             r%n_gears = res%n_gears
             r%crush = 0.0_wp
             r%crush(:, 1:res%n_gears) = res%crush_net
@@ -343,7 +421,8 @@ contains
             r%t_final = res%t_final
             r%wall_time = res%wall_time
             if (study%keep_results) then
-              call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, st, msg)
+              call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, st, msg, &
+                                     health)
               if (st /= 0) then
                 stat = 4
                 errmsg = 'cannot write '//trim(study%inp(c, v)%output%file)//': '//trim(msg)
@@ -352,7 +431,8 @@ contains
             end if
           end if
           if (progress_unit >= 0) then
-            if (r%status == status_ok) then
+            if (r%status == status_unhealthy) write (progress_unit, '(a)') '  '//trim(r%message)
+            if (r%status /= status_failed) then
               write (progress_unit, '(a,3f8.1,a,f7.3,a,f7.2,a)') '  gear 1 crush [mm]', 1000.0_wp*r%crush(:, 1), &
                 ', energy residual', 100.0_wp*r%energy_residual, ' %, ', r%wall_time, ' s, '//trim(r%end_reason)
             else
@@ -574,6 +654,8 @@ contains
                           ', gear '//int_text(mg(m))//', strut '//int_text(ms(m))//') is invalid; valid: case 1..'// &
                           int_text(study%n_cases)//', gear 1..n_gears, strut 1..3 (primary, left, right)')
       end do
+      if (any(mc(1:n) < 1 .or. mc(1:n) > study%n_cases .or. mg(1:n) < 1 .or. mg(1:n) > max_gears .or. &
+              ms(1:n) < 1 .or. ms(1:n) > 3)) study%n_measures = 0   ! reported; no table row may use them
     else if (study%n_cases == 2) then
       study%n_measures = 9
       study%measure(:, 1:9) = paper
@@ -620,67 +702,7 @@ contains
     end do
   end subroutine join_sets
 
-  !> Report groups other than &study and &variant (the namelist reads would skip them silently).
-  subroutine check_groups(text, path, errors)
-    character(len=*), intent(in) :: text            !! deck text [-]
-    character(len=*), intent(in) :: path            !! deck name [-]
-    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
-    integer :: p, q, line
-    character(len=1) :: quote
-    logical :: comment, line_start
-    quote = ' '
-    comment = .false.
-    line_start = .true.
-    line = 1
-    p = 1
-    do while (p <= len(text))
-      if (text(p:p) == new_line('a')) then
-        comment = .false.
-        line_start = .true.
-        line = line + 1
-      else if (comment) then
-        continue
-      else if (quote /= ' ') then
-        if (text(p:p) == quote) quote = ' '
-      else if (text(p:p) == '!') then
-        comment = .true.
-      else if (text(p:p) == '"' .or. text(p:p) == "'") then
-        quote = text(p:p)
-        line_start = .false.
-      else if (text(p:p) == '&' .and. line_start) then
-        q = p + 1
-        do while (q <= len(text))
-          if (index('abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_', text(q:q)) == 0) exit
-          q = q + 1
-        end do
-        if (lower(text(p + 1:q - 1)) /= 'study' .and. lower(text(p + 1:q - 1)) /= 'variant' .and. &
-            lower(text(p + 1:q - 1)) /= 'end') &
-          call errors%add(trim(path)//':'//int_text(line)//": unknown group '"//text(p:q - 1)// &
-                          "'; a study deck has one &study and &variant groups")
-        line_start = .false.
-        p = q - 1
-      else if (text(p:p) /= ' ' .and. text(p:p) /= achar(9) .and. text(p:p) /= achar(13)) then
-        line_start = .false.
-      end if
-      p = p + 1
-    end do
-  end subroutine check_groups
 
-  !> Whole file as one string.
-  subroutine read_text(path, text, ios, msg)
-    character(len=*), intent(in) :: path                  !! file [-]
-    character(len=:), allocatable, intent(out) :: text    !! its content [-]
-    integer, intent(out) :: ios                           !! iostat [-]
-    character(len=*), intent(inout) :: msg                !! iomsg [-]
-    integer :: u, n
-    open (newunit=u, file=trim(path), access='stream', form='unformatted', action='read', status='old', &
-          iostat=ios, iomsg=msg)
-    if (ios /= 0) return
-    inquire (unit=u, size=n)
-    allocate (character(len=max(n, 0)) :: text)
-    if (n > 0) read (u, iostat=ios, iomsg=msg) text
-    close (u)
-  end subroutine read_text
 
   !> File name of a kept result: <output base>_<variant number>_<case label>.h5.
   function run_file_name(study, c, v) result(name)

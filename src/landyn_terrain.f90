@@ -1,4 +1,4 @@
-!> Planar terrain under each footpad (MODEL_NOTES "Footpad-ground contact and friction").
+!> Planar terrain under each footpad (docs/model_conventions.md, "Footpad-ground contact and friction").
 !!
 !! Conventions
 !! - Global frame O_g: x, y horizontal, z DOWN. "Elevation" is measured up (= -z).

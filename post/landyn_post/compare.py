@@ -2,14 +2,21 @@
 
 References:
   * another LANDYN result file (.h5): crush lengths and time histories;
-  * a per-strut crush-length CSV such as the paper's Table 3 (reference/table3_crush_lengths.csv),
-    values in mm, rows identified by `measure` (1-3 = gear 1 primary, left, right; 4-6 = gear 2 ...)
-    or by `gear` and `strut`;
+  * a per-strut crush-length CSV such as the paper's Table 3
+    (post/landyn_post/data/table3_crush_lengths.csv), values in mm, rows identified by `measure`
+    (1-3 = gear 1 primary, left, right; 4-6 = gear 2 ...) or by `gear` and `strut`;
   * a time-history CSV (--timeseries): a time column and named channels, mapped to LANDYN
     quantities by their landyn-export column names or by a --map file.
 
-Deviation = RESULT - REFERENCE. Exit status 0: all checks pass (or none requested); 1: a tolerance
-is exceeded; 2: error (malformed CSV, missing dataset, not HDF5, bad option).
+Nothing is dropped silently: every reference channel is compared or listed as not compared
+(--strict makes that a failure), every strut of the result without a reference value is listed,
+and a comparison in which no check ran does not pass.
+
+Deviation = RESULT - REFERENCE. Exit status (consistent with landyn's): 0 at least one check ran
+and every check passed; 1 usage error; 2 invalid input (file missing or malformed, unknown
+channel or unit); 3 a check failed (a tolerance exceeded, or with --strict a reference channel
+not compared or a strut not checked); 4 an output file could not be written; 5 nothing was
+checked (no tolerance given, or no channel had one).
 """
 from __future__ import annotations
 
@@ -24,27 +31,35 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import cli
+from .paper import load_case_in_title, load_case_of
 from .schema import (STRUT_LABELS, STRUTS, LandynPostError, Result, is_hdf5, load, measure_gear_strut,
                      measure_number, strut_index)
+from .units import engineering, known_units, parse_quantity, unit_factor
 
 MM = 1.0e3
 
 MAP_HELP = """\
 map file (--map): one channel per line, '#' starts a comment:
-  time = <time column> [* <factor>]                 # optional; default: first column, factor 1
-  <reference column> = <LANDYN channel> [* <factor>] [tol=<rms tolerance>]
-reference value * factor = LANDYN value in SI units (m, N, m/s, deg, g, J). Channels:
+  time = <time column> [* <factor> | unit=<unit>]     # optional; default: time_s/time/t or the first column
+  <reference column> = <LANDYN channel> [* <factor> | unit=<unit>] [tol=<rms>[unit]] [rtol=<pct>%]
+unit= names the reference column's unit (converted to the channel's unit); '* factor' is the
+factor that turns the reference value into the channel's unit. tol= is an absolute rms
+tolerance (in the unit given with it, else in unit=, else in the channel's unit), rtol= a
+relative one in % of the reference's range (max - min); a channel passes when its rms deviation
+<= tol + rtol/100 * range. Units: """ + known_units() + """
+LANDYN channel units: m, N, m/s, deg, deg/s, g, J. Channels:
   stroke[gear=1,strut=primary]   strut_force[gear=2,strut=secondary_left]   strut_length[...]
   normal_force[gear=1]  friction_force[gear=1]  penetration[gear=1]  slip_speed[gear=1]
   footpad_position[gear=1,comp=x]  ground_force[gear=1,comp=z]
   velocity[comp=z]  position[comp=z]  mass_centre_position[comp=x]  euler_angles[comp=pitch]
   angular_rate[comp=q]  overload[comp=z]  energy/honeycomb_work
 example (drop-test channels in mm and kN, time in ms):
-  time      = t_ms * 0.001
-  LG1_P_mm  = stroke[gear=1,strut=primary] * 0.001
-  LG1_FN_kN = normal_force[gear=1] * 1000  tol=5000
+  time      = t_ms unit=ms
+  LG1_P_mm  = stroke[gear=1,strut=primary] unit=mm  tol=2mm
+  LG1_FN_kN = normal_force[gear=1] unit=kN  tol=5kN rtol=2%
 Without --map, reference columns named like landyn-export columns (gear1_primary_stroke_m ...)
-are compared directly."""
+are compared directly. Reference columns that are neither mapped nor named like a channel are
+listed as not compared; with --strict that fails the comparison."""
 
 
 # ----------------------------------------------------------------------------------------- CSV input
@@ -177,16 +192,35 @@ def read_strut_csv(path: str, n_gears: int, load_case: str | None = None,
     return StrutReference(values, label)
 
 
+
+
+# ----------------------------------------------------------------------------------------- time histories
+
 @dataclass
 class MapEntry:
     ref_column: str
     channel: str
     factor: float = 1.0
-    tol: float | None = None
+    unit: str | None = None
+    tol: tuple[float, str | None] | None = None     # (value, unit or None)
+    rtol_pct: float | None = None
+    line: int = 0
 
 
 _MAP_LINE = re.compile(r"^(?P<ref>[^=]+?)\s*=\s*(?P<chan>[A-Za-z_][\w/]*(?:\[[^\]]*\])?)"
-                       r"(?:\s*\*\s*(?P<fac>[-+0-9.eEdD]+))?(?:\s+tol\s*=\s*(?P<tol>[-+0-9.eE]+))?\s*$")
+                       r"(?:\s*\*\s*(?P<fac>[-+0-9.eEdD]+))?(?P<opts>(?:\s+[A-Za-z]+\s*=\s*\S+)*)\s*$")
+_OPT = re.compile(r"([A-Za-z]+)\s*=\s*(\S+)")
+
+
+def _map_options(path: str, lineno: int, raw: str, text: str) -> dict[str, str]:
+    opts = {}
+    for k, v in _OPT.findall(text or ""):
+        k = k.lower()
+        if k not in ("unit", "tol", "rtol"):
+            raise LandynPostError(f"{path}: line {lineno}: unknown option {k!r} in {raw.strip()!r} "
+                                  "(options: unit=, tol=, rtol=)")
+        opts[k] = v
+    return opts
 
 
 def read_map(path: str) -> tuple[MapEntry | None, list[MapEntry]]:
@@ -199,22 +233,41 @@ def read_map(path: str) -> tuple[MapEntry | None, list[MapEntry]]:
             line = raw.split("#", 1)[0].strip()
             if not line:
                 continue
-            if line.lower().startswith("time") and re.match(r"^time\s*=", line, re.I):
-                m = re.match(r"^time\s*=\s*(?P<col>[^*]+?)(?:\s*\*\s*(?P<fac>[-+0-9.eE]+))?\s*$", line, re.I)
+            if re.match(r"^time\s*=", line, re.I):
+                m = re.match(r"^time\s*=\s*(?P<col>[^*=\s]+)(?:\s*\*\s*(?P<fac>[-+0-9.eE]+))?"
+                             r"(?P<opts>(?:\s+[A-Za-z]+\s*=\s*\S+)*)\s*$", line, re.I)
                 if not m:
                     raise LandynPostError(f"{path}: line {lineno}: malformed time line {raw.strip()!r}")
-                time_entry = MapEntry(m.group("col").strip(), "time", float(m.group("fac") or 1.0))
+                opts = _map_options(path, lineno, raw, m.group("opts"))
+                fac = float(m.group("fac") or 1.0)
+                if "unit" in opts:
+                    if m.group("fac"):
+                        raise LandynPostError(f"{path}: line {lineno}: give '* factor' or unit=, not both")
+                    fac = unit_factor(opts["unit"], "s", f"{path}: line {lineno}: ")
+                time_entry = MapEntry(m.group("col").strip(), "time", fac, opts.get("unit"), line=lineno)
                 continue
             m = _MAP_LINE.match(line)
             if not m:
-                raise LandynPostError(f"{path}: line {lineno}: expected '<column> = <channel> [* factor] [tol=X]', "
-                                      f"got {raw.strip()!r}")
+                raise LandynPostError(f"{path}: line {lineno}: expected '<column> = <channel> [* factor | unit=U] "
+                                      f"[tol=X[U]] [rtol=P%]', got {raw.strip()!r}")
+            opts = _map_options(path, lineno, raw, m.group("opts"))
             try:
                 fac = float((m.group("fac") or "1").lower().replace("d", "e"))
-                tol = float(m.group("tol")) if m.group("tol") else None
-            except ValueError:
-                raise LandynPostError(f"{path}: line {lineno}: malformed number in {raw.strip()!r}") from None
-            entries.append(MapEntry(m.group("ref").strip(), m.group("chan"), fac, tol))
+                tol = parse_quantity(opts["tol"]) if "tol" in opts else None
+                rtol = parse_quantity(opts["rtol"]) if "rtol" in opts else None
+            except (ValueError, LandynPostError) as exc:
+                raise LandynPostError(f"{path}: line {lineno}: {exc}") from None
+            if m.group("fac") and "unit" in opts:
+                raise LandynPostError(f"{path}: line {lineno}: give '* factor' or unit=, not both")
+            if tol is not None and (tol[0] < 0 or tol[1] == "%"):
+                raise LandynPostError(f"{path}: line {lineno}: tol= must be an absolute value >= 0 "
+                                      "(relative tolerances go in rtol=P%)")
+            if rtol is not None and (rtol[0] < 0 or rtol[1] not in (None, "%")):
+                raise LandynPostError(f"{path}: line {lineno}: rtol= must be a percentage >= 0, e.g. rtol=2%")
+            if any(e.ref_column == m.group("ref").strip() for e in entries):
+                raise LandynPostError(f"{path}: line {lineno}: column {m.group('ref').strip()!r} is mapped twice")
+            entries.append(MapEntry(m.group("ref").strip(), m.group("chan"), fac, opts.get("unit"), tol,
+                                    rtol[0] if rtol else None, lineno))
     if not entries:
         raise LandynPostError(f"{path}: no channel lines")
     return time_entry, entries
@@ -222,7 +275,8 @@ def read_map(path: str) -> tuple[MapEntry | None, list[MapEntry]]:
 
 @dataclass
 class Series:
-    """One channel to compare: LANDYN values and reference values on their own time bases (SI)."""
+    """One channel to compare: LANDYN values and reference values on their own time bases, in the
+    channel's unit; tolerances from the map (absolute in the channel's unit, relative in %)."""
     label: str
     units: str
     t: np.ndarray
@@ -230,11 +284,22 @@ class Series:
     t_ref: np.ndarray
     y_ref: np.ndarray
     tol: float | None = None
+    rtol_pct: float | None = None
+    gear: int | None = None
+    strut: int | None = None
+
+
+@dataclass
+class SeriesSet:
+    series: list[Series]
+    unmatched: list[str]           # reference columns not compared
+    notes: list[str] = field(default_factory=list)
 
 
 def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_column: str | None,
-                        time_factor: float) -> list[Series]:
-    """Reads a time-history CSV and pairs its channels with LANDYN channels."""
+                        time_factor: float) -> SeriesSet:
+    """Reads a time-history CSV and pairs its channels with LANDYN channels; every other column is
+    returned as unmatched."""
     header, rows = _read_csv_rows(path)
     data = np.empty((len(rows), len(header)))
     for k, (ln, r) in enumerate(rows):
@@ -258,20 +323,36 @@ def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_colum
         by_col = res.channel_by_column()
         entries = [MapEntry(c, by_col[c].label) for c in header if c in by_col and c != time_column]
         if not entries:
-            raise LandynPostError(f"{path}: no column is named like a LANDYN channel (e.g. gear1_primary_stroke_m); "
-                                  "give a --map file")
+            raise LandynPostError(f"{path}: no column is named like a LANDYN channel (e.g. gear1_primary_stroke_m; "
+                                  f"columns: {_preview(header)}); give a --map file")
     out = []
     for e in entries:
         if e.ref_column not in header:
-            raise LandynPostError(f"{path}: no column {e.ref_column!r} (named in the map; columns: {_preview(header)})")
+            raise LandynPostError(f"{path}: no column {e.ref_column!r} (named in the map, line {e.line}; "
+                                  f"columns: {_preview(header)})")
         ch = res.channel(e.channel)
-        y_ref = data[:, header.index(e.ref_column)] * e.factor
+        fac = e.factor
+        where = f"{map_path}: line {e.line}: " if map_path else ""
+        if e.unit:
+            fac = unit_factor(e.unit, ch.units, where)
+        tol = None
+        if e.tol is not None:
+            v, u = e.tol
+            u = u or e.unit
+            tol = v * (unit_factor(u, ch.units, where) if u else 1.0)
+        y_ref = data[:, header.index(e.ref_column)] * fac
         ok = np.isfinite(y_ref)
-        out.append(Series(f"{e.ref_column} -> {ch.label}", ch.units, res.time, ch.values, t_ref[ok], y_ref[ok], e.tol))
-    return out
+        if ok.sum() < 2:
+            raise LandynPostError(f"{path}: column {e.ref_column!r} has fewer than two values")
+        out.append(Series(f"{e.ref_column} -> {ch.label}", ch.units, res.time, ch.values, t_ref[ok], y_ref[ok],
+                          tol, e.rtol_pct, ch.gear, ch.index if ch.key in ("stroke", "strut_force", "strut_length")
+                          else None))
+    used = {e.ref_column for e in entries} | {time_column}
+    unmatched = [c for c in header if c not in used]
+    return SeriesSet(out, unmatched)
 
 
-def h5_series(res: Result, ref: Result, channels: list[str] | None) -> list[Series]:
+def h5_series(res: Result, ref: Result, channels: list[str] | None) -> SeriesSet:
     """Channels of two LANDYN results (default: strokes, strut forces, footpad forces, body motion)."""
     if ref.n_gears != res.n_gears:
         raise LandynPostError(f"{ref.path} has {ref.n_gears} gears, {res.path} has {res.n_gears}")
@@ -280,7 +361,9 @@ def h5_series(res: Result, ref: Result, channels: list[str] | None) -> list[Seri
     else:
         keys = ("stroke", "strut_force", "normal_force", "friction_force", "velocity", "euler_angles", "overload")
         pairs = list(zip(res.channels(keys), ref.channels(keys)))
-    return [Series(a.label, a.units, res.time, a.values, ref.time, b.values) for a, b in pairs]
+    out = [Series(a.label, a.units, res.time, a.values, ref.time, b.values, gear=a.gear,
+                  strut=a.index if a.key in ("stroke", "strut_force", "strut_length") else None) for a, b in pairs]
+    return SeriesSet(out, [])
 
 
 # ----------------------------------------------------------------------------------------- comparison
@@ -292,6 +375,8 @@ class CrushRow:
     strut: int
     value: float       # m
     ref: float         # m
+    allowed_mm: float | None = None
+    passed: bool | None = None
 
     @property
     def dev(self) -> float:
@@ -319,6 +404,9 @@ class SeriesStats:
     rms: float
     max_abs: float
     t_max: float
+    ref_range: float
+    allowed: float | None = None
+    passed: bool | None = None
 
 
 def resample(s: Series) -> SeriesStats:
@@ -334,15 +422,58 @@ def resample(s: Series) -> SeriesStats:
     y, yr = np.interp(t, s.t, s.y), np.interp(t, s.t_ref, s.y_ref)
     d = y - yr
     k = int(np.argmax(np.abs(d)))
-    return SeriesStats(s, t, y, yr, float(np.sqrt(np.mean(d * d))), float(abs(d[k])), float(t[k]))
+    return SeriesStats(s, t, y, yr, float(np.sqrt(np.mean(d * d))), float(abs(d[k])), float(t[k]),
+                       float(np.ptp(s.y_ref)))
+
+
+@dataclass
+class RmsTolerances:
+    """Command-line rms tolerances: absolute values by channel unit (or one bare number), and a
+    relative one in % of the reference range."""
+    by_unit: dict[str, float] = field(default_factory=dict)   # channel unit -> value in that unit
+    bare: float | None = None
+    rtol_pct: float | None = None
+
+    @classmethod
+    def parse(cls, items: list[str] | None, rtol_pct: float | None) -> "RmsTolerances":
+        t = cls(rtol_pct=rtol_pct)
+        for it in items or []:
+            v, u = parse_quantity(it)
+            if v < 0:
+                raise LandynPostError(f"--tol-rms {it}: must be >= 0")
+            if u == "%":
+                raise LandynPostError(f"--tol-rms {it}: relative tolerances go in --rtol-rms PCT")
+            if u is None:
+                if t.bare is not None:
+                    raise LandynPostError("--tol-rms: more than one value without a unit")
+                t.bare = v
+                continue
+            from .units import UNITS
+            kind, fac = UNITS[u]
+            if kind in t.by_unit:
+                raise LandynPostError(f"--tol-rms: two values for channels in {kind}")
+            t.by_unit[kind] = v * fac
+        return t
+
+    @property
+    def given(self) -> bool:
+        return bool(self.by_unit) or self.bare is not None or self.rtol_pct is not None
+
+    def check_bare(self, stats: list["SeriesStats"]) -> None:
+        units = sorted({st.series.units for st in stats if st.series.tol is None})
+        if self.bare is not None and len(units) > 1:
+            raise cli.LandynUsageError(f"--tol-rms {self.bare:g} has no unit, but the channels are in {', '.join(units)}: "
+                                  "give one value per unit, e.g. --tol-rms 2mm 5kN 0.1g (or --rtol-rms PCT)")
 
 
 @dataclass
 class Checks:
     tol_mm: float | None = None
     tol_pct: float | None = None
-    tol_rms: float | None = None
+    rms: RmsTolerances = field(default_factory=RmsTolerances)
     failures: list[str] = field(default_factory=list)
+    n_checked: int = 0
+    unchecked: list[str] = field(default_factory=list)     # compared, but no tolerance applied
 
     def crush_limit(self, ref_m: float) -> float | None:
         """Allowed |deviation| in mm: tol_mm + tol_pct % of |reference| (either alone if only one is given)."""
@@ -352,28 +483,55 @@ class Checks:
 
     def check_crush(self, rows: list[CrushRow]) -> None:
         for r in rows:
-            lim = self.crush_limit(r.ref)
-            if lim is not None and abs(r.dev) * MM > lim:
+            r.allowed_mm = self.crush_limit(r.ref)
+            if r.allowed_mm is None:
+                self.unchecked.append(f"crush No. {r.measure}")
+                continue
+            self.n_checked += 1
+            r.passed = abs(r.dev) * MM <= r.allowed_mm
+            if not r.passed:
                 self.failures.append(f"crush No. {r.measure} (gear {r.gear} {STRUT_LABELS[STRUTS[r.strut]]}): "
-                                     f"|deviation| {abs(r.dev) * MM:.2f} mm > allowed {lim:.2f} mm")
+                                     f"|deviation| {abs(r.dev) * MM:.2f} mm > allowed {r.allowed_mm:.2f} mm")
+
+    def series_limit(self, st: SeriesStats) -> float | None:
+        s = st.series
+        if s.tol is not None or s.rtol_pct is not None:          # the map line decides
+            return (s.tol or 0.0) + (s.rtol_pct or 0.0) / 100.0 * st.ref_range
+        a = self.rms.by_unit.get(s.units, self.rms.bare)
+        if a is None and self.rms.rtol_pct is None:
+            return None
+        return (a or 0.0) + (self.rms.rtol_pct or 0.0) / 100.0 * st.ref_range
 
     def check_series(self, stats: list[SeriesStats]) -> None:
+        self.rms.check_bare(stats)
         for st in stats:
-            tol = st.series.tol if st.series.tol is not None else self.tol_rms
-            if tol is not None and st.rms > tol:
+            st.allowed = self.series_limit(st)
+            if st.allowed is None:
+                self.unchecked.append(f"time history {st.series.label} (no tolerance for {st.series.units})")
+                continue
+            self.n_checked += 1
+            st.passed = st.rms <= st.allowed
+            if not st.passed:
                 self.failures.append(f"time history {st.series.label}: rms deviation {st.rms:.4g} {st.series.units} "
-                                     f"> tolerance {tol:g}")
+                                     f"> allowed {st.allowed:.4g} {st.series.units}")
 
 
 # ----------------------------------------------------------------------------------------- output
 
+def _verdict(passed: bool | None) -> str:
+    return "-" if passed is None else ("pass" if passed else "FAIL")
+
+
 def crush_table(rows: list[CrushRow], title: str) -> str:
-    head = f"{'No.':>4} {'gear':>4}  {'strut':<16}{'LANDYN':>10}{'reference':>11}{'dev':>9}{'dev':>9}"
-    lines = [title, head, f"{'':>4} {'':>4}  {'':<16}{'[mm]':>10}{'[mm]':>11}{'[mm]':>9}{'[%]':>9}", "-" * len(head)]
+    head = (f"{'No.':>4} {'gear':>4}  {'strut':<16}{'LANDYN':>10}{'reference':>11}{'dev':>9}{'dev':>9}"
+            f"{'allowed':>9}{'result':>8}")
+    lines = [title, head, f"{'':>4} {'':>4}  {'':<16}{'[mm]':>10}{'[mm]':>11}{'[mm]':>9}{'[%]':>9}{'[mm]':>9}",
+             "-" * len(head)]
     for r in rows:
         pct = f"{r.pct:9.2f}" if math.isfinite(r.pct) else f"{'-':>9}"
+        allowed = f"{r.allowed_mm:9.2f}" if r.allowed_mm is not None else f"{'-':>9}"
         lines.append(f"{r.measure:>4} {r.gear:>4}  {STRUT_LABELS[STRUTS[r.strut]]:<16}{r.value * MM:10.1f}"
-                     f"{r.ref * MM:11.1f}{r.dev * MM:9.2f}{pct}")
+                     f"{r.ref * MM:11.1f}{r.dev * MM:9.2f}{pct}{allowed}{_verdict(r.passed):>8}")
     if rows:
         dev = np.array([r.dev for r in rows]) * MM
         pct = np.array([r.pct for r in rows])
@@ -388,92 +546,186 @@ def crush_table(rows: list[CrushRow], title: str) -> str:
 
 def series_table(stats: list[SeriesStats]) -> str:
     w = max([len(s.series.label) for s in stats] + [7])
-    head = f"{'channel':<{w}}  {'units':<6}{'rms dev':>12}{'max |dev|':>12}{'at t [s]':>10}{'ref range':>12}{'samples':>9}"
-    lines = ["Time histories (LANDYN - reference, linear interpolation on the common time range)", head,
-             "-" * len(head)]
+    head = (f"{'channel':<{w}}  {'units':<6}{'rms dev':>12}{'max |dev|':>12}{'at t [s]':>10}{'ref range':>12}"
+            f"{'allowed':>12}{'result':>8}{'samples':>9}")
+    lines = ["Time histories (LANDYN - reference, linear interpolation on the common time range; "
+             "allowed = rms tolerance)", head, "-" * len(head)]
     for s in stats:
-        rng = float(np.ptp(s.y_ref))
+        allowed = f"{s.allowed:12.4g}" if s.allowed is not None else f"{'-':>12}"
         lines.append(f"{s.series.label:<{w}}  {s.series.units:<6}{s.rms:12.4g}{s.max_abs:12.4g}{s.t_max:10.4f}"
-                     f"{rng:12.4g}{len(s.t):9d}")
+                     f"{s.ref_range:12.4g}{allowed}{_verdict(s.passed):>8}{len(s.t):9d}")
     return "\n".join(lines)
 
 
-def write_table_csv(path: str, rows: list[CrushRow]) -> None:
-    with open(path, "w", newline="") as fh:
+def write_table_csv(path: str, rows: list[CrushRow]) -> str:
+    with cli.atomic_output(path, "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["measure", "gear", "strut", "landyn_mm", "reference_mm", "deviation_mm", "deviation_pct"])
+        w.writerow(["measure", "gear", "strut", "landyn_mm", "reference_mm", "deviation_mm", "deviation_pct",
+                    "allowed_mm", "result"])
         for r in rows:
             w.writerow([r.measure, r.gear, STRUTS[r.strut], f"{r.value * MM:.6f}", f"{r.ref * MM:.6f}",
-                        f"{r.dev * MM:.6f}", f"{r.pct:.6f}" if math.isfinite(r.pct) else ""])
+                        f"{r.dev * MM:.6f}", f"{r.pct:.6f}" if math.isfinite(r.pct) else "",
+                        f"{r.allowed_mm:.6f}" if r.allowed_mm is not None else "", _verdict(r.passed)])
+    return path
 
 
-def write_plots(outdir: str, rows: list[CrushRow], stats: list[SeriesStats], ref_label: str, res: Result) -> list[str]:
-    """Overlay plots: crush lengths (bars, with the deviation) and time histories (6 per page)."""
+def write_series_csv(path: str, stats: list[SeriesStats]) -> str:
+    with cli.atomic_output(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["channel", "units", "rms_deviation", "max_abs_deviation", "time_of_max_s", "reference_range",
+                    "allowed_rms", "result", "samples"])
+        for s in stats:
+            w.writerow([s.series.label, s.series.units, f"{s.rms:.9g}", f"{s.max_abs:.9g}", f"{s.t_max:.9g}",
+                        f"{s.ref_range:.9g}", f"{s.allowed:.9g}" if s.allowed is not None else "",
+                        _verdict(s.passed), len(s.t)])
+    return path
+
+
+def _safe(name: str) -> str:
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_")[:80]
+
+
+def write_plots(outdir: str, rows: list[CrushRow], stats: list[SeriesStats], res_label: str, ref_label: str,
+                res: Result) -> list[str]:
+    """Crush-length bars with the deviation and the allowed band, and one figure per time history:
+    overlay in engineering units with the tolerance band around the reference, and the deviation."""
     cli.use_agg()
     import matplotlib.pyplot as plt
     written = []
     if rows:
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
         x = np.array([r.measure for r in rows])
-        ax.bar(x - 0.2, [r.value * MM for r in rows], 0.4, label="LANDYN", color="#4c72b0")
-        ax.bar(x + 0.2, [r.ref * MM for r in rows], 0.4, label="reference", color="#c44e52")
+        ax.bar(x - 0.2, [r.value * MM for r in rows], 0.4, label=res_label, color="#4c72b0")
+        ax.bar(x + 0.2, [r.ref * MM for r in rows], 0.4, label=ref_label, color="#c44e52")
         ax.axhline(0, color="k", lw=0.6)
         ax.set_ylabel("crush length [mm]")
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=7)
         ax.grid(True, axis="y", alpha=0.3)
-        ax2.bar(x, [r.dev * MM for r in rows], 0.5, color="0.4")
+        colors = ["0.4" if r.passed is None else ("tab:green" if r.passed else "tab:red") for r in rows]
+        ax2.bar(x, [r.dev * MM for r in rows], 0.5, color=colors)
+        lim = [r.allowed_mm for r in rows]
+        if any(v is not None for v in lim):
+            for xi, v in zip(x, lim):
+                if v is not None:
+                    ax2.fill_between([xi - 0.4, xi + 0.4], -v, v, color="0.85", zorder=0)
+            ax2.plot([], [], color="0.85", lw=6, label="allowed deviation")
+            ax2.legend(fontsize=7, loc="best")
         ax2.axhline(0, color="k", lw=0.6)
-        ax2.set_ylabel("deviation [mm]")
+        ax2.set_ylabel("deviation [mm]\n(LANDYN - reference)")
         ax2.set_xticks(x)
         ax2.set_xticklabels([f"{r.measure}\nG{r.gear}{'PLR'[r.strut]}" for r in rows], fontsize=7)
-        ax2.set_xlabel("measure (Table 3)")
+        ax2.set_xlabel("measure (Table 3): G = gear, P primary, L secondary left, R secondary right")
         ax2.grid(True, axis="y", alpha=0.3)
-        fig.suptitle("\n".join(textwrap.wrap(f"Crush lengths: {res.title}", 100) + [f"vs {ref_label}"]), fontsize=9)
+        fig.suptitle("\n".join(textwrap.wrap(f"Crush lengths: {res_label}", 100) + [f"vs {ref_label}"]), fontsize=9)
         fig.tight_layout()
-        fn = os.path.join(outdir, "compare_crush_lengths.png")
-        fig.savefig(fn, dpi=110)
+        written.append(cli.savefig(fig, os.path.join(outdir, "compare_crush_lengths.png"), dpi=110))
         plt.close(fig)
-        written.append(fn)
-    per_page = 6
-    for p in range(0, len(stats), per_page):
-        chunk = stats[p:p + per_page]
-        fig, axs = plt.subplots(3, 2, figsize=(11, 8.5), squeeze=False)
-        for ax, st in zip(axs.flat, chunk):
-            s = st.series
-            ax.plot(s.t, s.y, label="LANDYN", lw=1.2)
-            ax.plot(s.t_ref, s.y_ref, label="reference", lw=1.0, ls="--")
-            ax.set_title(f"{s.label}\nrms dev {st.rms:.3g}, max {st.max_abs:.3g} {s.units}", fontsize=7)
-            ax.set_ylabel(s.units, fontsize=8)
-            ax.tick_params(labelsize=7)
-            ax.grid(True, alpha=0.3)
-            ax.legend(fontsize=6)
-        for ax in list(axs.flat)[len(chunk):]:
-            ax.set_visible(False)
-        for ax in axs[-1]:
-            ax.set_xlabel("time [s]", fontsize=8)
+    for i, st in enumerate(stats, 1):
+        s = st.series
+        eu, f = engineering(s.units)
+        fig, (ax, ax2) = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+        if st.allowed is not None:
+            ax.fill_between(st.t, (st.y_ref - st.allowed) * f, (st.y_ref + st.allowed) * f, color="0.85",
+                            label=f"reference ± allowed rms {st.allowed * f:.3g} {eu}")
+        ax.plot(s.t_ref, s.y_ref * f, color="#c44e52", lw=1.0, ls="--", label=ref_label)
+        ax.plot(s.t, s.y * f, color="#4c72b0", lw=1.2, label=res_label)
+        ax.set_xlim(st.t[0], st.t[-1])
+        ax.set_ylabel(f"[{eu}]")
+        ax.legend(fontsize=7, loc="best")
+        ax.grid(True, alpha=0.3)
+        d = (st.y - st.y_ref) * f
+        ax2.plot(st.t, d, color="k", lw=1.0, label="deviation")
+        if st.allowed is not None:
+            ax2.axhspan(-st.allowed * f, st.allowed * f, color="0.85", label="± allowed rms")
+        ax2.axhline(0, color="0.5", lw=0.6)
+        ax2.set_ylabel(f"LANDYN - ref [{eu}]")
+        ax2.set_xlabel("time [s]")
+        ax2.grid(True, alpha=0.3)
+        ax2.legend(fontsize=7, loc="best")
+        verdict = {None: "not checked", True: "PASS", False: "FAIL"}[st.passed]
+        allowed = f", allowed {st.allowed * f:.3g}" if st.allowed is not None else ""
+        ax.set_title(f"{s.label}\nrms dev {st.rms * f:.3g} {eu}{allowed}, max |dev| {st.max_abs * f:.3g} {eu} "
+                     f"at {st.t_max:.3f} s: {verdict}", fontsize=8)
         fig.tight_layout()
-        fn = os.path.join(outdir, f"compare_timeseries_{p // per_page + 1:02d}.png")
-        fig.savefig(fn, dpi=100)
+        written.append(cli.savefig(fig, os.path.join(outdir, f"compare_{i:02d}_{_safe(s.label.split(' -> ')[-1])}.png"),
+                                   dpi=100))
         plt.close(fig)
-        written.append(fn)
     return written
 
 
 # ----------------------------------------------------------------------------------------- main
 
+def _run_label(path: str, title: str = "") -> str:
+    base = os.path.basename(path)
+    return f"{base}: {textwrap.shorten(title, 50)}" if title else base
+
+
+def _load_case_warnings(res: Result, selected: str | None, ref_title: str | None = None,
+                        ref: Result | None = None) -> list[str]:
+    out = []
+    lc = load_case_of(res)
+    lc_title = load_case_in_title(res.title)
+    if selected:
+        sel = selected.upper()
+        if lc is not None and lc != sel:
+            out.append(f"the result was run for {lc} (its touchdown conditions), but the reference rows are "
+                       f"{selected}")
+        elif lc is None:
+            out.append(f"the result's touchdown conditions match none of the paper's load cases, but the reference "
+                       f"rows are {selected}")
+        if lc_title is not None and lc_title != sel:
+            out.append(f"the result's title names {lc_title} ({res.title!r}), but the reference rows are {selected}")
+    if ref is not None:
+        lc_ref = load_case_of(ref)
+        if lc != lc_ref and (lc or lc_ref):
+            out.append(f"the result was run for {lc or 'no paper load case'}, the reference for "
+                       f"{lc_ref or 'no paper load case'}")
+        if res.title != ref.title:
+            out.append(f"the titles differ: result {res.title!r}, reference {ref.title!r}")
+    elif ref_title is not None:
+        lc_ref = load_case_in_title(ref_title)
+        if lc_ref and lc and lc_ref != lc:
+            out.append(f"the result was run for {lc}, the reference names {lc_ref}")
+    return out
+
+
+def _not_checked_struts(res: Result, rows: list[CrushRow], series: list[Series], crush_ref: bool) -> list[str]:
+    """Struts of the result without a compared crush length (crush references) or without any
+    compared stroke/force/length history (time-history references)."""
+    out = []
+    if crush_ref:
+        have = {r.measure for r in rows}
+        for g in range(1, res.n_gears + 1):
+            for k in range(3):
+                if measure_number(g, k) not in have:
+                    out.append(f"No. {measure_number(g, k)} gear {g} {STRUT_LABELS[STRUTS[k]]}")
+    else:
+        have = {(s.gear, s.strut) for s in series if s.strut is not None}
+        for g in range(1, res.n_gears + 1):
+            for k in range(3):
+                if (g, k) not in have:
+                    out.append(f"gear {g} {STRUT_LABELS[STRUTS[k]]}")
+    return out
+
+
 def _main(argv=None) -> int:
     p = cli.make_parser(
         "landyn-compare",
         "Compare a LANDYN result with a reference: another LANDYN result (.h5), a per-strut crush-length\n"
-        "CSV (Table 3 layout, mm) or a time-history CSV (--timeseries). Deviation = RESULT - REFERENCE.",
-        epilog="tolerances (exit status 1 when exceeded, 2 on errors):\n"
+        "CSV (Table 3 layout, mm) or a time-history CSV (--timeseries). Deviation = RESULT - REFERENCE.\n"
+        "Every reference channel is compared or listed as not compared; every strut not checked is named.",
+        epilog="tolerances:\n"
                "  a crush length fails when |dev| > tol_mm + tol_pct/100 * |reference| (numpy.isclose style;\n"
                "  with only one of --tol-mm / --tol-pct given, that one alone); a time history fails when its\n"
-               "  rms deviation exceeds --tol-rms (channel units: SI) or the map line's tol=.\n\n"
+               "  rms deviation exceeds tol + rtol/100 * (reference max - min), tol and rtol from its map line or\n"
+               "  else from --tol-rms (one value per unit, e.g. 2mm 5kN 0.1g 0.5deg) and --rtol-rms.\n\n"
+               "exit status (as landyn's): 0 at least one check ran and all passed; 1 usage error; 2 invalid\n"
+               "  input; 3 a check failed (or, with --strict, a reference channel was not compared or a strut\n"
+               "  not checked); 4 an output file could not be written; 5 nothing was checked (no tolerance).\n\n"
                "examples:\n"
-               "  landyn-compare lc1.h5 table3_crush_lengths.csv --load-case LC-1 --column theory --tol-pct 3\n"
-               "  landyn-compare new.h5 baseline.h5 --tol-mm 0.1 --tol-rms 1e-3\n"
-               "  landyn-compare lc1.h5 droptest.csv --timeseries --map droptest.map --plots cmp\n\n" + MAP_HELP)
+               "  landyn-compare lc1.h5 post/landyn_post/data/table3_crush_lengths.csv --load-case LC-1 --column theory --tol-pct 3\n"
+               "  landyn-compare new.h5 baseline.h5 --tol-mm 0.1 --tol-rms 1mm 2kN 0.05g 0.1deg 0.01m/s\n"
+               "  landyn-compare lc1.h5 droptest.csv --timeseries --map droptest.map --strict --plots cmp\n\n" + MAP_HELP)
     p.add_argument("result", metavar="RESULT", help="LANDYN result file (.h5)")
     p.add_argument("reference", metavar="REFERENCE", help="LANDYN result (.h5) or CSV")
     p.add_argument("--load-case", metavar="NAME", help="rows of this load_case (per-strut CSV), e.g. LC-1")
@@ -486,66 +738,130 @@ def _main(argv=None) -> int:
                    help="channels compared between two .h5 files, e.g. 'stroke[gear=1,strut=primary]'")
     p.add_argument("--tol-mm", type=float, metavar="X", help="crush-length tolerance [mm]")
     p.add_argument("--tol-pct", type=float, metavar="Y", help="crush-length tolerance [%% of |reference|]")
-    p.add_argument("--tol-rms", type=float, metavar="X", help="rms tolerance of every time history [SI units]")
+    p.add_argument("--tol-rms", nargs="+", metavar="X[UNIT]",
+                   help="absolute rms tolerance of the time histories, one per unit: 2mm 5kN 0.1g 0.5deg "
+                        "(a bare number only when every channel has the same unit)")
+    p.add_argument("--rtol-rms", type=float, metavar="PCT",
+                   help="relative rms tolerance of the time histories [%% of the reference's range]")
+    p.add_argument("--strict", action="store_true",
+                   help="fail (exit 3) when a reference channel is not compared or a strut of the result not checked")
     p.add_argument("--plots", metavar="DIR", help="write overlay plots to DIR")
-    p.add_argument("--table-csv", metavar="FILE", help="write the crush-length deviation table as CSV")
+    p.add_argument("--table-csv", metavar="FILE",
+                   help="write the deviation table as CSV (crush lengths; time histories to FILE or <stem>_timeseries.csv)")
     a = p.parse_args(argv)
-    for name in ("tol_mm", "tol_pct", "tol_rms"):
+    for name in ("tol_mm", "tol_pct", "rtol_rms"):
         v = getattr(a, name)
         if v is not None and not v >= 0:
             p.error(f"--{name.replace('_', '-')} must be >= 0")
+    try:
+        rms_tol = RmsTolerances.parse(a.tol_rms, a.rtol_rms)
+    except LandynPostError as exc:
+        p.error(str(exc))
 
     res = load(a.result)
     rows: list[CrushRow] = []
-    series: list[Series] = []
+    sset = SeriesSet([], [])
     ref_path = a.reference
     if not os.path.exists(ref_path):
         raise LandynPostError(f"{ref_path}: no such file")
+    warnings: list[str] = []
+    res_label = _run_label(a.result, res.title)
+    crush_ref = False
     if is_hdf5(ref_path):
         if a.timeseries or a.map or a.column or a.load_case:
             p.error("--timeseries, --map, --column and --load-case apply to CSV references only")
         ref = load(ref_path)
-        ref_label = os.path.basename(ref_path)
+        ref_label = _run_label(ref_path, ref.title)
+        if ref_label == res_label:
+            res_label, ref_label = "result " + res_label, "reference " + ref_label
+        crush_ref = True
         rows = crush_rows(res, StrutReference(
             {measure_number(g + 1, k): float(ref.crush_length[g, k]) for g in range(ref.n_gears) for k in range(3)},
-            ref_label)) if ref.n_gears == res.n_gears else []
-        series = h5_series(res, ref, a.channels)
+            ref_label))
+        sset = h5_series(res, ref, a.channels)
+        warnings += _load_case_warnings(res, None, ref=ref)
     elif a.channels:
         p.error("--channels applies to .h5 references (a CSV's channels come from its columns or --map)")
     elif a.timeseries:
-        series = read_timeseries_csv(ref_path, res, a.map, a.time_column, a.time_factor)
+        if a.column or a.load_case:
+            p.error("--column and --load-case apply to per-strut crush-length CSVs, not to --timeseries")
+        sset = read_timeseries_csv(ref_path, res, a.map, a.time_column, a.time_factor)
         ref_label = os.path.basename(ref_path)
+        warnings += _load_case_warnings(res, None, ref_title=ref_label)
     else:
         if a.map:
             p.error("--map needs --timeseries")
         sref = read_strut_csv(ref_path, res.n_gears, a.load_case, a.column)
         rows = crush_rows(res, sref)
         ref_label = sref.label
+        crush_ref = True
+        sel = a.load_case
+        if sel is None:
+            m = re.search(r"load case ([^)]+)\)", sref.label)
+            sel = m.group(1) if m else None
+        warnings += _load_case_warnings(res, sel)
 
-    checks = Checks(a.tol_mm, a.tol_pct, a.tol_rms)
+    checks = Checks(a.tol_mm, a.tol_pct, rms_tol)
     print(f"LANDYN result: {res.path} ({res.title})")
-    print(f"reference:     {ref_label}\n")
+    print(f"reference:     {ref_label}")
+    for w in warnings:
+        print(f"landyn-compare: warning: {w}", file=sys.stderr)
+        print(f"WARNING: {w}")
+    print()
     if rows:
-        print(crush_table(rows, "Crush lengths (Table 3 layout; primary shortening, secondary lengthening +)"))
         checks.check_crush(rows)
-        if a.table_csv:
-            write_table_csv(a.table_csv, rows)
-    stats = [resample(s) for s in series]
+        print(crush_table(rows, "Crush lengths (Table 3 layout; primary shortening, secondary lengthening +)"))
+    stats = [resample(s) for s in sset.series]
     if stats:
+        checks.check_series(stats)
         print()
         print(series_table(stats))
-        checks.check_series(stats)
+    if a.table_csv:
+        if rows:
+            print(write_table_csv(a.table_csv, rows))
+        if stats:
+            stem, ext = os.path.splitext(a.table_csv)
+            print(write_series_csv(stem + "_timeseries" + (ext or ".csv") if rows else a.table_csv, stats))
     if a.plots:
-        for fn in write_plots(cli.output_dir(a.plots), rows, stats, ref_label, res):
+        for fn in write_plots(cli.output_dir(a.plots), rows, stats, res_label, ref_label, res):
             print(fn)
     print()
+    # ---- what was not compared
+    strict_fail = []
+    if sset.unmatched:
+        print(f"Reference channels NOT compared ({len(sset.unmatched)}): {', '.join(sset.unmatched)}")
+        if not a.map:
+            print("  (not named like a LANDYN channel; give a --map file that maps them)")
+        else:
+            print("  (not listed in the map)")
+        strict_fail += [f"reference channel {c!r} not compared" for c in sset.unmatched]
+    not_checked = _not_checked_struts(res, rows, sset.series, crush_ref)
+    if not_checked and (rows or sset.series):
+        n_all = 3 * res.n_gears
+        what = "crush length" if crush_ref else "stroke, force or length history"
+        print(f"Struts NOT checked ({len(not_checked)} of {n_all}, no reference {what}): {', '.join(not_checked)}")
+        if crush_ref:
+            strict_fail += [f"strut {s} not checked" for s in not_checked]
+    if checks.unchecked:
+        print(f"Compared without a tolerance ({len(checks.unchecked)}): "
+              + ", ".join(checks.unchecked[:12]) + (" ..." if len(checks.unchecked) > 12 else ""))
+    if a.strict:
+        checks.failures += [f"--strict: {s}" for s in strict_fail]
+    elif strict_fail:
+        print("  (--strict makes these a failure)")
     if checks.failures:
         for f in checks.failures:
             print("FAILED: " + f)
-        print(f"landyn-compare: {len(checks.failures)} check(s) failed")
+        print(f"landyn-compare: {len(checks.failures)} check(s) failed, {checks.n_checked} tolerance check(s) ran")
         return cli.EXIT_CHECK_FAILED
-    if any(v is not None for v in (a.tol_mm, a.tol_pct, a.tol_rms)):
-        print("landyn-compare: all checks passed")
+    if checks.n_checked == 0:
+        why = ("no tolerance was given (--tol-mm, --tol-pct, --tol-rms, --rtol-rms or tol= in the map)"
+               if not (a.tol_mm is not None or a.tol_pct is not None or rms_tol.given)
+               else "no compared channel had a tolerance")
+        print(f"landyn-compare: NOTHING CHECKED: {why}; the deviations above are not a verdict")
+        return cli.EXIT_NOTHING_CHECKED
+    print(f"landyn-compare: all {checks.n_checked} checks passed"
+          + (f" ({len(checks.unchecked)} compared without a tolerance)" if checks.unchecked else ""))
     return cli.EXIT_OK
 
 

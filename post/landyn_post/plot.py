@@ -1,9 +1,14 @@
 """landyn-plot: standard figures of one LANDYN result file (and the --report PDF).
 
-Figures (file names ``<stem>_<name>.<fmt>`` in OUTDIR):
+Figures (file names ``<stem>_<name>.<fmt>`` in OUTDIR). Curves that coincide (the symmetric gear
+pairs of a symmetric landing) are drawn so that every one stays visible (dashed with markers on
+top of the first) and a note names them.
 
   strokes         stroke time history of every strut (paper Fig. 9)
-  crush_lengths   final crush length per gear and strut, stroke capacities marked (paper Fig. 8)
+  strut_forces    axial force of every strut over time
+  force_stroke    force-stroke hysteresis of every strut
+  crush_lengths   final crush length per gear and strut, stroke capacities marked (paper Fig. 8),
+                  with the paper's Table 3 values for its load cases or a reference CSV
   footpad_forces  footpad normal and friction forces and penetration (paper Fig. 11)
   body            body velocity, attitude and tilt, overload
   footpad_paths   footpad paths on the ground, plan view and displacement from touchdown
@@ -13,11 +18,12 @@ from __future__ import annotations
 
 import os
 import sys
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from . import cli
-from .schema import STRUT_LABELS, STRUTS, Result, load, measure_number
+from .schema import STRUT_LABELS, STRUTS, LandynPostError, Result, load, measure_number
 
 GEAR_COLORS = ("C0", "C1", "C2", "C3", "C4", "C5", "C6", "C7")
 STRUT_STYLES = ("-", "--", ":")
@@ -48,6 +54,85 @@ def _min_span(ax, span: float) -> None:
         ax.set_ylim(mid - span / 2, mid + span / 2)
 
 
+@dataclass
+class PlotOptions:
+    """Options of the figures: CFC class of the acceleration channels, reference crush lengths
+    (m by measure, with a label) and the success criteria of the report's verdict."""
+    cfc: int | None = None
+    crush_ref: dict = field(default_factory=dict)
+    crush_ref_label: str = ""
+    crush_ref2: dict = field(default_factory=dict)
+    crush_ref2_label: str = ""
+    min_stroke_margin: float = 0.0        # m
+    max_overload: float | None = None     # g
+
+
+#: marker and dash patterns given, in turn, to the later members of a group of coincident curves
+_COINCIDENT_STYLES = (("--", "o"), (":", "s"), ("-.", "^"), ((0, (1, 3)), "v"))
+
+
+def coincident_groups(curves: list[np.ndarray], rel: float = 2e-3) -> list[list[int]]:
+    """Groups of curves that lie on top of each other: max |y_i - y_j| <= rel x the span of all
+    curves (0.2 %: closer than a line width). Each group lists indices, first one first."""
+    if not curves:
+        return []
+    allv = np.concatenate([np.ravel(c) for c in curves])
+    span = float(np.nanmax(allv) - np.nanmin(allv)) if allv.size else 0.0
+    tol = rel * span if span > 0 else 1e-12
+    groups: list[list[int]] = []
+    for i, c in enumerate(curves):
+        for g in groups:
+            if np.shape(curves[g[0]]) == np.shape(c) and float(np.nanmax(np.abs(c - curves[g[0]]))) <= tol:
+                g.append(i)
+                break
+        else:
+            groups.append([i])
+    return groups
+
+
+def draw_curves(ax, t, curves: list[tuple[str, np.ndarray, dict]], rel: float = 2e-3) -> str:
+    """Plots (label, y, style) curves so that coincident ones stay visible: the first curve of a
+    coincident group is drawn wider, the later ones on top with markers (offset from each other)
+    and, where their own line style is the first one's, a dashed or dotted style. Returns a note
+    naming the coincident curves ('' when none), for the figure's footnote (see _footnote)."""
+    groups = coincident_groups([c[1] for c in curves], rel)
+    style_of: dict[int, dict] = {}
+    notes = []
+    n = len(t)
+    every = max(1, n // 12)
+    for g in groups:
+        if len(g) < 2:
+            continue
+        notes.append(" = ".join(curves[i][0] for i in g))
+        style_of[g[0]] = dict(lw=2.6, alpha=0.8)
+        lead_ls = curves[g[0]][2].get("ls", "-")
+        for rank, i in enumerate(g[1:]):
+            ls, mk = _COINCIDENT_STYLES[rank % len(_COINCIDENT_STYLES)]
+            st = dict(marker=mk, ms=4, mfc="none", markevery=(every * (rank + 1) // len(g), every), lw=1.2)
+            if curves[i][2].get("ls", "-") == lead_ls:
+                st["ls"] = ls
+            style_of[i] = st
+    for i, (label, y, style) in enumerate(curves):
+        st = dict(style)
+        st.update(style_of.get(i, {}))
+        ax.plot(t, y, label=label, **st)
+    return "; ".join(notes)
+
+
+def _footnote(fig, notes: list[tuple[str, str]]) -> float:
+    """Writes the coincident-curve notes under the figure; returns the bottom margin to keep free."""
+    import textwrap
+    lines = []
+    for where, note in notes:
+        if note:
+            lines += textwrap.wrap(f"{where}: coincident within 0.2 % of the axis span (markers mark the later "
+                                   f"curves): {note}", 130)
+    if not lines:
+        return 0.0
+    fig.text(0.01, 0.005, "\n".join(lines), fontsize=6.5, color="0.2", va="bottom", ha="left")
+    return 0.012 + 0.016 * len(lines)
+
+
 def _tilt(res: Result) -> np.ndarray:
     """Angle between the lander z axis and the vertical, deg (R33 = cos(pitch) cos(roll))."""
     e = np.radians(res.euler_angles)
@@ -56,17 +141,18 @@ def _tilt(res: Result) -> np.ndarray:
 
 # ----------------------------------------------------------------------------------------- figures
 
-def fig_strokes(res: Result):
+def fig_strokes(res: Result, opts: PlotOptions | None = None):
     """Stroke of every strut over time (paper Fig. 9): primaries and secondaries, capacities marked."""
     plt = _plt()
     fig, axs = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     t = res.time
     cap = res.strut_capacity()
-    for i in range(res.n_gears):
-        axs[0].plot(t, res.stroke[:, i, 0] * MM, color=_gear_color(i), label=f"gear {i + 1}")
-        for k in (1, 2):
-            axs[1].plot(t, res.stroke[:, i, k] * MM, color=_gear_color(i), ls=STRUT_STYLES[k],
-                        label=f"gear {i + 1} {STRUT_LABELS[STRUTS[k]].split()[1]}")
+    notes = [("(a) primaries", draw_curves(axs[0], t, [(f"gear {i + 1}", res.stroke[:, i, 0] * MM,
+                                                         dict(color=_gear_color(i))) for i in range(res.n_gears)])),
+             ("(b) secondaries", draw_curves(axs[1], t, [(f"gear {i + 1} {STRUT_LABELS[STRUTS[k]].split()[1]}",
+                                                         res.stroke[:, i, k] * MM,
+                                                         dict(color=_gear_color(i), ls=STRUT_STYLES[k]))
+                                                        for i in range(res.n_gears) for k in (1, 2)]))]
     for s_end in res.primary_stage_ends()[:-1]:
         axs[0].axhline(s_end * MM, color="0.5", lw=0.8, ls=":")
         axs[0].annotate("stage end", (t[0], s_end * MM), fontsize=7, color="0.4", va="bottom")
@@ -82,7 +168,85 @@ def fig_strokes(res: Result):
     for ax in axs:
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Strut strokes")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
+    return fig
+
+
+def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
+    """Axial force of every strut over time (compression +), primaries and secondaries, with the
+    honeycomb crush levels."""
+    plt = _plt()
+    fig, axs = plt.subplots(2, 1, figsize=(9.5, 7), sharex=True)
+    t = res.time
+    notes = [("(a) primaries", draw_curves(axs[0], t, [(f"gear {i + 1}", res.strut_force[:, i, 0] * KN,
+                                                         dict(color=_gear_color(i))) for i in range(res.n_gears)])),
+             ("(b) secondaries", draw_curves(axs[1], t, [(f"gear {i + 1} {STRUT_LABELS[STRUTS[k]].split()[1]}",
+                                                         res.strut_force[:, i, k] * KN,
+                                                         dict(color=_gear_color(i), ls=STRUT_STYLES[k]))
+                                                        for i in range(res.n_gears) for k in (1, 2)]))]
+    levels = _crush_levels(res)
+    for ax, lv in ((axs[0], levels["primary"]), (axs[1], levels["secondary"])):
+        for v, what in lv:
+            ax.axhline(v * KN, color="0.5", lw=0.8, ls=":")
+            ax.annotate(what, (0.5 * (t[0] + t[-1]), v * KN), fontsize=7, color="0.4", ha="center",
+                        va="bottom" if v > 0 else "top")
+    pk = res.peak_strut_force
+    axs[0].set_title(f"(a) primary struts; peak {np.max(pk[:, 0]) * KN:.1f} kN (every step)", fontsize=9, loc="left")
+    axs[1].set_title(f"(b) secondary struts, left dashed, right dotted; peak {np.max(pk[:, 1:]) * KN:.1f} kN",
+                     fontsize=9, loc="left")
+    axs[0].set_ylabel("primary axial force [kN]\n(compression +)")
+    axs[1].set_ylabel("secondary axial force [kN]\n(compression +)")
+    axs[1].set_xlabel("time [s]")
+    axs[0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    axs[1].legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    for ax in axs:
+        ax.grid(True, alpha=0.3)
+    _title(fig, res, "Strut axial forces")
+    fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
+    return fig
+
+
+def _crush_levels(res: Result) -> dict[str, list[tuple[float, str]]]:
+    """Honeycomb levels (N, signed as the axial force: compression +) from the resolved input."""
+    out = {"primary": [], "secondary": []}
+    try:
+        d = res.deck
+        n = int(d.get("primary_strut", "n_stages"))
+        for k, f in enumerate(d.array("primary_strut", "stage_force", (n,))):
+            out["primary"].append((float(f), f"stage {k + 1} {f * KN:.0f} kN"))
+        fl = float(d.get("secondary_strut", "force_lengthening"))
+        fsh = float(d.get("secondary_strut", "force_shortening"))
+        out["secondary"] = [(-fl, f"lengthening {fl * KN:.0f} kN"), (fsh, f"shortening {fsh * KN:.0f} kN")]
+    except Exception:  # noqa: BLE001 - the levels are decoration; a deck without them draws none
+        pass
+    return out
+
+
+def fig_force_stroke(res: Result, opts: PlotOptions | None = None):
+    """Force-stroke hysteresis of every strut: axial force (compression +) over stroke (Table 3
+    sense), one panel per strut, the start and end marked; the area is the work of the strut."""
+    plt = _plt()
+    g = res.n_gears
+    fig, axs = plt.subplots(g, 3, figsize=(10, 2.3 * g + 1.2), squeeze=False)
+    for i in range(g):
+        for k in range(3):
+            ax = axs[i, k]
+            x = res.stroke[:, i, k] * MM
+            y = res.strut_force[:, i, k] * KN
+            ax.plot(x, y, color=STRUT_COLORS[k], lw=1.0)
+            ax.plot(x[0], y[0], "o", color="k", ms=3, mfc="none")
+            ax.plot(x[-1], y[-1], "o", color="k", ms=3)
+            ax.set_title(f"No. {measure_number(i + 1, k)}: gear {i + 1} {STRUT_LABELS[STRUTS[k]]}, "
+                         f"work {res.crush_work[i, k] / 1e3:.1f} kJ", fontsize=7)
+            ax.tick_params(labelsize=6)
+            ax.grid(True, alpha=0.3)
+            if i == g - 1:
+                ax.set_xlabel("stroke [mm]" + ("\n(shortening +)" if k == 0 else "\n(lengthening +)"), fontsize=7)
+            if k == 0:
+                ax.set_ylabel("axial force [kN]\n(compression +)", fontsize=7)
+    fig.text(0.5, 0.005, "open circle: start, filled: end", ha="center", fontsize=7)
+    _title(fig, res, "Force-stroke hysteresis of every strut")
+    fig.tight_layout(rect=(0, 0.015, 1, 1))
     return fig
 
 
@@ -95,8 +259,9 @@ def _capacity_lines(ax, cap_pos, cap_neg, t0) -> None:
         ax.annotate("capacity", (t0, c), fontsize=7, va=va)
 
 
-def fig_crush_lengths(res: Result):
-    """Final crush length of every strut as bars (paper Fig. 8), capacities and crushed lengths marked."""
+def fig_crush_lengths(res: Result, opts: PlotOptions | None = None):
+    """Final crush length of every strut as bars (paper Fig. 8), capacities and crushed lengths
+    marked, and reference values (the paper's Table 3 for its load cases, or a reference CSV)."""
     plt = _plt()
     g = res.n_gears
     fig, ax = plt.subplots(figsize=(max(8, 0.6 * 3 * g + 2), 5.5))
@@ -124,6 +289,12 @@ def fig_crush_lengths(res: Result):
     bo = res.bottomed_out.reshape(-1) > 0
     if np.any(bo):
         ax.scatter(x[bo], net[bo], marker="X", color="red", s=60, zorder=5, label="bottomed out")
+    opts = opts or PlotOptions()
+    for ref, lab, mk in ((opts.crush_ref, opts.crush_ref_label, "D"), (opts.crush_ref2, opts.crush_ref2_label, "P")):
+        if ref:
+            xm = np.array(sorted(ref))
+            ax.scatter(xm, [ref[m] * MM for m in xm], marker=mk, s=28, color="white", edgecolor="k", zorder=6,
+                       label=lab)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xticks(x)
     ax.set_xticklabels([f"{measure_number(i + 1, k)}\nG{i + 1}{'PLR'[k]}" for i in range(g) for k in range(3)],
@@ -140,16 +311,17 @@ def fig_crush_lengths(res: Result):
     return fig
 
 
-def fig_footpad_forces(res: Result):
+def fig_footpad_forces(res: Result, opts: PlotOptions | None = None):
     """Footpad normal and friction forces and penetration over time (paper Fig. 11)."""
     plt = _plt()
     fig, axs = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
     t = res.time
-    for i in range(res.n_gears):
-        c = _gear_color(i)
-        axs[0].plot(t, res.normal_force[:, i] * KN, color=c, label=f"footpad {i + 1}")
-        axs[1].plot(t, res.friction_force[:, i] * KN, color=c)
-        axs[2].plot(t, res.penetration[:, i] * MM, color=c)
+    notes = []
+    for ax, data, scale, what in ((axs[0], res.normal_force, KN, "normal force"),
+                                  (axs[1], res.friction_force, KN, "friction"), (axs[2], res.penetration, MM,
+                                                                                 "penetration")):
+        notes.append((what, draw_curves(ax, t, [(f"footpad {i + 1}", data[:, i] * scale, dict(color=_gear_color(i)))
+                                                for i in range(res.n_gears)])))
     axs[0].set_ylabel("normal force [kN]")
     axs[1].set_ylabel("friction force [kN]\n(magnitude)")
     axs[2].set_ylabel("penetration [mm]\n(> 0 in the ground)")
@@ -160,39 +332,53 @@ def fig_footpad_forces(res: Result):
     for ax in axs:
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Footpad-ground contact forces")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
     return fig
 
 
-def fig_body(res: Result):
-    """Body velocity, attitude (and tilt) and overload over time."""
+def fig_body(res: Result, opts: PlotOptions | None = None):
+    """Body velocity, attitude (and tilt) and overload over time; the overload optionally filtered
+    with a CFC class (SAE J211 / ISO 6487), the class named in the panel."""
     plt = _plt()
-    fig, axs = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    opts = opts or PlotOptions()
+    fig, axs = plt.subplots(3, 1, figsize=(8, 8.5), sharex=True)
     t = res.time
-    for k, lab in enumerate(("x", "y", "z (down)")):
-        axs[0].plot(t, res.velocity[:, k], label=f"v{lab}")
-    for k, lab in enumerate(("yaw", "pitch", "roll")):
-        axs[1].plot(t, res.euler_angles[:, k], label=lab)
-    axs[1].plot(t, _tilt(res), color="k", ls="--", label="tilt")
-    for k, lab in enumerate(("x", "y", "z")):
-        axs[2].plot(t, res.overload[:, k], label=f"n{lab}")
-    axs[2].plot(t, np.linalg.norm(res.overload, axis=1), color="k", ls="--", label="|n|")
-    axs[2].set_title(f"peak |n| {res.peak_overload:.2f} g at {res.time_of_peak_overload:.4f} s "
-                     "(every time step; the curves show the output samples)", fontsize=8, loc="left")
+    notes = [("velocity", draw_curves(axs[0], t, [(f"v{lab}", res.velocity[:, k], dict(color=f"C{k}"))
+                                                  for k, lab in enumerate(("x", "y", "z (down)"))])),
+             ("attitude", draw_curves(axs[1], t, [(lab, res.euler_angles[:, k], dict(color=f"C{k}"))
+                                                  for k, lab in enumerate(("yaw", "pitch", "roll"))]
+                                      + [("tilt", _tilt(res), dict(color="k", ls="--"))]))]
+    n = res.overload
+    note = "unfiltered output samples"
+    if opts.cfc:
+        from .filters import cfc_filter, cfc_label, cfc_warning
+        for k in range(3):
+            axs[2].plot(t, n[:, k], color=f"C{k}", lw=0.6, alpha=0.35)
+        n = cfc_filter(t, n, opts.cfc)
+        note = f"filtered {cfc_label(opts.cfc)}; raw samples faint"
+        warn = cfc_warning(t, opts.cfc)
+        if warn:
+            note += f"\n{warn}"
+    notes.append(("overload", draw_curves(axs[2], t, [(f"n{lab}", n[:, k], dict(color=f"C{k}"))
+                                                      for k, lab in enumerate(("x", "y", "z"))]
+                                          + [("|n|", np.linalg.norm(n, axis=1), dict(color="k", ls="--"))])))
+    peak_f = float(np.max(np.linalg.norm(n, axis=1)))
+    axs[2].set_title(f"overload: {note}\npeak |n| of the curves {peak_f:.2f} g; unfiltered peak over every time step "
+                     f"{res.peak_overload:.2f} g at {res.time_of_peak_overload:.4f} s", fontsize=7.5, loc="left")
     _min_span(axs[1], 2.0)
     axs[0].set_ylabel("mass-centre velocity [m/s]\n(global, z down)")
     axs[1].set_ylabel("attitude [deg]\n(Z-Y-X Euler)")
-    axs[2].set_ylabel("overload [g]\n(lander axes)")
+    axs[2].set_ylabel("overload [g]\n(lander axes)" + (f"\nCFC {opts.cfc}" if opts.cfc else ""))
     axs[2].set_xlabel("time [s]")
     for ax in axs:
-        ax.legend(fontsize=7, ncol=4, loc="best")
+        ax.legend(fontsize=7, ncol=4, loc="upper right")
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Body motion")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
     return fig
 
 
-def fig_footpad_paths(res: Result):
+def fig_footpad_paths(res: Result, opts: PlotOptions | None = None):
     """Footpad paths on the ground: plan view (x up, y right, seen from above; z down) and each
     footpad's horizontal displacement from its touchdown point in mm."""
     plt = _plt()
@@ -265,7 +451,7 @@ ENERGY_STACK = (("kinetic_body", "body kinetic"), ("kinetic_legs", "legs (relati
                 ("strut_impacts", "strut impacts"))
 
 
-def fig_energy(res: Result):
+def fig_energy(res: Result, opts: PlotOptions | None = None):
     """Energy audit: where the input energy went, stacked over time, and the residual."""
     plt = _plt()
     fig, axs = plt.subplots(2, 1, figsize=(8, 7), sharex=True, gridspec_kw={"height_ratios": [3, 1]})
@@ -291,36 +477,64 @@ def fig_energy(res: Result):
 #: (name, function, caption) of every standard figure, in report order
 FIGURES = (
     ("strokes", fig_strokes, "stroke time history of every strut (paper Fig. 9)"),
-    ("crush_lengths", fig_crush_lengths, "final crush length per gear and strut with capacities (paper Fig. 8)"),
+    ("strut_forces", fig_strut_forces, "axial force of every strut over time, crush levels marked"),
+    ("force_stroke", fig_force_stroke, "force-stroke hysteresis of every strut"),
+    ("crush_lengths", fig_crush_lengths, "final crush length per gear and strut with capacities (paper Fig. 8), "
+                                         "Table 3 / reference values"),
     ("footpad_forces", fig_footpad_forces, "footpad normal and friction forces, penetration (paper Fig. 11)"),
-    ("body", fig_body, "body velocity, attitude and overload"),
+    ("body", fig_body, "body velocity, attitude and overload (optionally CFC-filtered)"),
     ("footpad_paths", fig_footpad_paths, "footpad paths on the ground"),
     ("energy", fig_energy, "energy audit stacked over time"),
 )
 
 
-def write_figures(res: Result, outdir: str, formats=("png",), dpi: int = 120, only=None) -> list[str]:
-    """Writes the standard figures; returns the file names."""
+def write_figures(res: Result, outdir: str, formats=("png",), dpi: int = 120, only=None,
+                  opts: PlotOptions | None = None) -> list[str]:
+    """Writes the standard figures (each through a temporary file); returns the file names."""
     plt = _plt()
     written = []
     base = os.path.splitext(os.path.basename(res.path))[0]
     for name, func, _ in FIGURES:
         if only and name not in only:
             continue
-        fig = func(res)
+        fig = func(res, opts)
         for fmt in formats:
-            fn = os.path.join(outdir, f"{base}_{name}.{fmt}")
-            fig.savefig(fn, dpi=dpi)
-            written.append(fn)
+            written.append(cli.savefig(fig, os.path.join(outdir, f"{base}_{name}.{fmt}"), dpi=dpi))
         plt.close(fig)
     return written
 
 
+def plot_options(a, res: Result) -> PlotOptions:
+    """PlotOptions from the command line: the reference crush lengths are the paper's Table 3
+    (theory and Adams) when the result is one of its load cases, or --reference CSV."""
+    from .paper import load_case_of, table3
+    o = PlotOptions(cfc=a.cfc, min_stroke_margin=a.min_stroke_margin / 1e3, max_overload=a.max_overload)
+    if a.cfc:
+        from .filters import cfc_filter
+        cfc_filter(res.time, res.overload[:, 2], a.cfc)   # fails early, with its message, on a too-slow rate
+    if a.reference:
+        from .compare import read_strut_csv
+        ref = read_strut_csv(a.reference, res.n_gears, a.load_case, a.ref_column)
+        o.crush_ref, o.crush_ref_label = ref.values, ref.label
+    else:
+        lc = a.load_case or load_case_of(res)
+        if lc:
+            try:
+                o.crush_ref, o.crush_ref_label = table3(lc, "theory"), f"paper Table 3, {lc}, theory"
+                o.crush_ref2, o.crush_ref2_label = table3(lc, "adams"), f"paper Table 3, {lc}, MSC Adams"
+            except KeyError:
+                raise LandynPostError(f"--load-case {lc}: not one of the paper's load cases (LC-1 .. LC-4)") from None
+    return o
+
+
 def _main(argv=None) -> int:
     p = cli.make_parser(
-        "landyn-plot", "Standard figures of a LANDYN result file (PNG and/or PDF), optionally a report PDF.",
+        "landyn-plot", "Standard figures of a LANDYN result file (PNG and/or PDF), optionally a report PDF;\n"
+        "for a landyn_study file the crush length per measure option and variant (<stem>_study.png).",
         epilog="figures:\n" + "\n".join(f"  {n:15s} {c}" for n, _, c in FIGURES)
-        + "\n\nexample:\n  landyn-plot landyn.h5 -o plots --format png pdf --report")
+        + "\n\nThe crush-length figure shows the paper's Table 3 (theory, MSC Adams) when the result's touchdown\n"
+          "conditions are one of its load cases (or --load-case), or the values of --reference CSV.\n"
+          "\nexample:\n  landyn-plot landyn.h5 -o plots --format png pdf --report --cfc 60")
     p.add_argument("file", metavar="FILE", help="LANDYN result file (.h5)")
     p.add_argument("-o", "--outdir", metavar="OUTDIR", help="output directory (default: <FILE stem>_plots)")
     p.add_argument("--format", nargs="+", choices=("png", "pdf"), default=["png"], metavar="{png,pdf}",
@@ -329,15 +543,37 @@ def _main(argv=None) -> int:
     p.add_argument("--only", nargs="+", choices=[n for n, _, _ in FIGURES], metavar="NAME",
                    help="write only these figures")
     p.add_argument("--report", action="store_true",
-                   help="also write <stem>_report.pdf: summary table and provenance first, then every figure")
+                   help="also write <stem>_report.pdf: touchdown conditions, verdict, tables and provenance "
+                        "first, then every figure")
+    p.add_argument("--cfc", type=int, choices=(60, 180, 600), metavar="{60,180,600}",
+                   help="filter the overload (acceleration) with this SAE J211 / ISO 6487 channel frequency class")
+    p.add_argument("--reference", metavar="CSV", help="reference crush lengths (mm) for the crush-length figure, "
+                   "in landyn-compare's per-strut CSV layout")
+    p.add_argument("--ref-column", metavar="NAME", help="value column of --reference (e.g. theory)")
+    p.add_argument("--load-case", metavar="LC", help="the paper's load case whose Table 3 values are shown "
+                   "(default: recognised from the touchdown conditions); with --reference: its rows")
+    p.add_argument("--min-stroke-margin", type=float, default=0.0, metavar="MM",
+                   help="verdict criterion: every stroke margin >= MM (default 0: no strut bottoms out)")
+    p.add_argument("--max-overload", type=float, metavar="G", help="verdict criterion: peak overload <= G")
     a = p.parse_args(argv)
+    from .exchange import file_kind
+    kind = file_kind(a.file)
+    if kind == "study":
+        from .study import write_study_figures
+        for fn in write_study_figures(a.file, cli.output_dir(a.outdir or cli.stem(a.file) + "_plots"), a.format, a.dpi):
+            print(fn)
+        return cli.EXIT_OK
+    if kind == "campaign":
+        raise LandynPostError(f"{a.file}: a campaign summary: plot it with landyn-dispersion (Monte Carlo: histograms, "
+                              "failure causes, --sensitivity) or landyn-envelope (grid: stability envelope)")
     res = load(a.file)
+    opts = plot_options(a, res)
     outdir = cli.output_dir(a.outdir or cli.stem(a.file) + "_plots")
-    for fn in write_figures(res, outdir, a.format, a.dpi, a.only):
+    for fn in write_figures(res, outdir, a.format, a.dpi, a.only, opts):
         print(fn)
     if a.report:
         from .report import write_report
-        print(write_report(res, os.path.join(outdir, cli.stem(a.file) + "_report.pdf")))
+        print(write_report(res, os.path.join(outdir, cli.stem(a.file) + "_report.pdf"), opts))
     return cli.EXIT_OK
 
 

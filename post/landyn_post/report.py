@@ -1,4 +1,5 @@
-"""The landyn-plot --report PDF: summary tables and provenance, then every standard figure."""
+"""The landyn-plot --report PDF: the touchdown conditions and a verdict against the success
+criteria, summary tables and provenance on the first page, then every standard figure."""
 from __future__ import annotations
 
 import textwrap
@@ -39,6 +40,47 @@ def footpad_table_lines(res: Result) -> list[str]:
     return lines
 
 
+def touchdown_lines(res: Result) -> list[str]:
+    """Touchdown conditions from /meta/resolved_input: velocity, attitude, slope, friction, mass."""
+    from .paper import load_case_of, touchdown_conditions
+    c = touchdown_conditions(res)
+    lc = load_case_of(res)
+    return [
+        f"load case: {lc + ' of the paper (Table 2)' if lc else 'not one of the paper load cases'}",
+        f"velocity: vertical {c['v_vertical']:.3f} m/s (down), horizontal {c['v_horizontal']:.3f} m/s "
+        f"toward {c['v_direction']:.1f} deg from global +x",
+        f"attitude (Z-Y-X): yaw {c['yaw']:.3f}, pitch {c['pitch']:.3f}, roll {c['roll']:.3f} deg",
+        f"terrain: slope {c['slope']:.2f} deg, uphill toward {c['slope_direction']:.1f} deg"
+        + ("" if c["slope_uniform"] == 1.0 else " (footpad 1; the footpads' planes differ)"),
+        f"friction: mu_static {c['mu_static']:.3g}, mu_dynamic {c['mu_dynamic']:.3g}; "
+        f"mass {c['mass']:.0f} kg, gravity {c['gravity']:.3g} m/s^2",
+    ]
+
+
+def verdict(res: Result, min_stroke_margin: float = 0.0, max_overload: float | None = None) -> tuple[bool, list[str]]:
+    """(success, lines): the run against the success criteria of a campaign's &criteria: it ran to
+    its end, did not tip over, every stroke margin >= min_stroke_margin (m), and (when given) peak
+    overload <= max_overload (g)."""
+    lines, ok = [], True
+
+    def crit(good: bool, text: str):
+        nonlocal ok
+        ok &= good
+        lines.append(f"  [{'met' if good else 'FAILED'}] {text}")
+
+    crit(not res.tipped_over, f"no tip-over (largest tilt {res.max_tilt:.2f} deg)")
+    m = float(np.min(res.stroke_margin))
+    i, k = np.unravel_index(int(np.argmin(res.stroke_margin)), res.stroke_margin.shape)
+    crit(m >= min_stroke_margin, f"every stroke margin >= {min_stroke_margin * MM:.1f} mm (smallest {m * MM:.1f} mm, "
+         f"No. {measure_number(i + 1, k)} gear {i + 1} {STRUT_LABELS[STRUTS[k]]}"
+         + (f"; {int(np.sum(res.bottomed_out))} bottomed out)" if np.any(res.bottomed_out) else ")"))
+    if max_overload is not None:
+        crit(res.peak_overload <= max_overload, f"peak overload <= {max_overload:g} g "
+             f"({res.peak_overload:.2f} g)")
+    head = ("SUCCESSFUL LANDING: every criterion met" if ok else "NOT A SUCCESSFUL LANDING: criteria failed")
+    return ok, [head] + lines + [f"  run ended: {res.end_reason} at {res.final_time:.3f} s"]
+
+
 def run_summary_lines(res: Result) -> list[str]:
     fa = res.final_attitude
     return [
@@ -57,12 +99,17 @@ def run_summary_lines(res: Result) -> list[str]:
     ]
 
 
-def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]]) -> None:
+def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tuple[str, bool] | None = None) -> None:
     import matplotlib.pyplot as plt
     fig = plt.figure(figsize=(8.27, 11.69))   # A4 portrait
     title_lines = textwrap.wrap(title, 75)
     fig.text(0.06, 0.965, "\n".join(title_lines), fontsize=12, weight="bold", va="top", linespacing=1.3)
     y = 0.94 - 0.02 * len(title_lines)
+    if banner is not None:
+        text, ok = banner
+        fig.text(0.06, y, text, fontsize=13, weight="bold", va="top", color="white",
+                 bbox=dict(boxstyle="round,pad=0.4", fc="#2e7d32" if ok else "#c62828", ec="none"))
+        y -= 0.04
     for heading, lines in blocks:
         fig.text(0.06, y, heading, fontsize=10, weight="bold", va="top")
         y -= 0.022
@@ -75,31 +122,36 @@ def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]]) -> None:
     plt.close(fig)
 
 
-def write_report(res: Result, path: str) -> str:
-    """Writes the multi-page report PDF; returns its path."""
+def write_report(res: Result, path: str, opts=None) -> str:
+    """Writes the multi-page report PDF (through a temporary file); returns its path."""
     from . import cli
     cli.use_agg()
     from matplotlib.backends.backend_pdf import PdfPages
 
-    from .plot import FIGURES
+    from .plot import FIGURES, PlotOptions
     import matplotlib.pyplot as plt
 
+    opts = opts or PlotOptions()
     prov = []
     for label, value in res.provenance():
         wrapped = textwrap.wrap(str(value), 84) or [""]
         prov.append(f"{label + ':':<16}{wrapped[0]}")
         prov += [" " * 16 + w for w in wrapped[1:]]
+    ok, verdict_lines = verdict(res, opts.min_stroke_margin, opts.max_overload)
     blocks = [
+        ("Touchdown conditions", touchdown_lines(res)),
+        ("Verdict against the success criteria", verdict_lines[1:]),
         ("Crush lengths (Table 3 layout; primary shortening and secondary lengthening positive)",
          crush_table_lines(res)),
         ("Footpads", footpad_table_lines(res)),
         ("Run", run_summary_lines(res)),
         ("Provenance", prov),
     ]
-    with PdfPages(path, metadata={"Title": f"LANDYN report: {res.title}", "Creator": "landyn-plot"}) as pdf:
-        _text_page(pdf, f"LANDYN result: {res.title}", blocks)
-        for _, func, _ in FIGURES:
-            fig = func(res)
-            pdf.savefig(fig)
-            plt.close(fig)
+    with cli.atomic_output(path, mode=None) as tmp:
+        with PdfPages(tmp, metadata={"Title": f"LANDYN report: {res.title}", "Creator": "landyn-plot"}) as pdf:
+            _text_page(pdf, f"LANDYN result: {res.title}", blocks, (verdict_lines[0], ok))
+            for _, func, _ in FIGURES:
+                fig = func(res, opts)
+                pdf.savefig(fig)
+                plt.close(fig)
     return path

@@ -196,6 +196,13 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         DatasetSpec("final_time", "/summary/final_time", "s", (), "real", "time at the end of the run"),
         DatasetSpec("n_steps", "/summary/n_steps", "-", (), "int", "time steps taken"),
         DatasetSpec("wall_time", "/summary/wall_time", "s", (), "real", "wall-clock time of the simulation"),
+        DatasetSpec("health/status", "/summary/health/status", "-", (), "int",
+                    "worst run-health check: 0 passed, 1 warnings, 2 failed (run meaningless; docs/health.md)"),
+        DatasetSpec("health/checks", "/summary/health/checks", "-", (6,), "text", "names of the run-health checks"),
+        DatasetSpec("health/results", "/summary/health/results", "-", (6,), "int",
+                    "per check: 0 passed, 1 warning, 2 failed"),
+        DatasetSpec("health/messages", "/summary/health/messages", "-", (), "text",
+                    "one line per check that did not pass; 'none' when all passed"),
     ]
 )
 

@@ -21,7 +21,7 @@ POST = Path(__file__).resolve().parents[1]
 REPO = POST.parent
 sys.path.insert(0, str(POST))
 
-TOOLS = ("plot", "animate", "compare", "export")
+TOOLS = ("plot", "animate", "compare", "export", "envelope", "dispersion")
 
 
 def _find_landyn() -> tuple[str | None, str]:
@@ -92,6 +92,74 @@ def table3_csv() -> Path:
     if not p.is_file():
         pytest.skip(f"{p} not found")
     return p
+
+
+def _sibling(landyn_exe: str, name: str) -> str:
+    p = os.path.join(os.path.dirname(os.path.abspath(landyn_exe)), name)
+    if not (os.path.isfile(p) and os.access(p, os.X_OK)):
+        pytest.skip(f"{name} not found next to {landyn_exe} (it is built with the LANDYN executables; "
+                    "landyn_batch needs MPI)")
+    return p
+
+
+@pytest.fixture(scope="session")
+def study_file(landyn_exe, tmp_path_factory) -> Path:
+    """A small landyn_study file: LC-1 and LC-2 for 0.2 s, base and Hertz-contact variants."""
+    exe = _sibling(landyn_exe, "landyn_study")
+    d = tmp_path_factory.mktemp("study")
+    inp = REPO / "input"
+    (d / "small.nml").write_text(f"""&study
+  title = 'pytest study'
+  base_deck = '{inp}/lc1.nml', '{inp}/lc2.nml'
+  case_label = 'LC-1', 'LC-2'
+  common = "&simulation t_end = 0.2, dt = 1.0e-5 /"
+  output = 'small_study.h5'
+  csv = 'small_study.csv'
+/
+&variant label = 'Base result' /
+&variant label = 'Hertz', set = "&contact law = 'hertz' /" /
+""")
+    p = subprocess.run([exe, "small.nml", "--quiet"], cwd=d, capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stdout + p.stderr
+    return d / "small_study.h5"
+
+
+def _campaign(landyn_exe, tmp_path_factory, name: str, deck: str) -> Path:
+    exe = _sibling(landyn_exe, "landyn_batch")
+    d = tmp_path_factory.mktemp(name)
+    (d / "base.nml").write_text((REPO / "tests" / "campaign" / "base.nml").read_text())
+    (d / f"{name}.nml").write_text(deck)
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    p = subprocess.run([exe, f"{name}.nml", "-q"], cwd=d, capture_output=True, text=True, timeout=600, env=env)
+    assert p.returncode == 0, p.stdout + p.stderr
+    return d / f"{name}.h5"
+
+
+@pytest.fixture(scope="session")
+def mc_campaign(landyn_exe, tmp_path_factory) -> Path:
+    """A Monte Carlo campaign of 8 short cases (landyn_batch on one rank) with a tight margin
+    criterion, so that some cases fail."""
+    return _campaign(landyn_exe, tmp_path_factory, "mc", """&campaign
+  title = 'pytest Monte Carlo', base_deck = 'base.nml', mode = 'monte_carlo', n_samples = 8, seed = 7
+  summary_file = 'mc.h5'
+/
+&parameter name = 'initial_state%velocity(1)', distribution = 'uniform', lo = 0.0, hi = 2.0 /
+&parameter name = 'initial_state%velocity(3)', distribution = 'uniform', lo = 3.5, hi = 4.5 /
+&parameter name = 'friction%mu_dynamic', label = 'mu', distribution = 'uniform', lo = 0.2, hi = 0.5 /
+&criteria min_stroke_margin = 0.12, max_overload = 3.8 /
+""")
+
+
+@pytest.fixture(scope="session")
+def grid_campaign(landyn_exe, tmp_path_factory) -> Path:
+    """A 3 x 2 grid over horizontal velocity and slope."""
+    return _campaign(landyn_exe, tmp_path_factory, "grid", """&campaign
+  title = 'pytest grid', base_deck = 'base.nml', mode = 'grid', summary_file = 'grid.h5'
+/
+&parameter name = 'initial_state%velocity(1)', values = 0.0, 1.0, 2.0 /
+&parameter name = 'terrain%slope(:)', values = 0.0, 8.0 /
+&criteria min_stroke_margin = 0.12 /
+""")
 
 
 class ToolRun:

@@ -1,4 +1,4 @@
-"""Bad input gives one clear line on stderr and exit status 2, never a traceback."""
+"""Bad input gives one clear line on stderr and exit status 2 (usage errors 1), never a traceback."""
 from __future__ import annotations
 
 import shutil
@@ -94,8 +94,9 @@ def test_malformed_timeseries_and_map(lc1_short, tmp_path, run_tool):
 
 
 def test_bad_option(lc1_short, run_tool):
+    """A usage error exits 1, as landyn's does."""
     r = run_tool("plot", lc1_short, "--format", "tiff")
-    assert r.returncode == 2 and "Traceback" not in r.stderr
+    assert r.returncode == 1 and "Traceback" not in r.stderr
 
 
 @pytest.mark.parametrize("tool", ["plot", "animate", "compare", "export"])

@@ -3,7 +3,9 @@
 !!   landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]
 !!
 !! Exit status: 0 success (a tip-over is a result, not an error); 1 usage error; 2 invalid input;
-!! 3 the simulation failed (diverged); 4 the result file could not be written.
+!! 3 the simulation failed (diverged); 4 the result file cannot be written (checked before the run
+!! where possible, docs/files.md); 6 the run completed but a run-health check failed: the result is
+!! physically meaningless (file written, /summary/health says why; docs/health.md).
 program landyn
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_kinds, only: msg_len
@@ -12,6 +14,8 @@ program landyn
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_output, only: write_result_file
   use landyn_report, only: write_summary_table
+  use landyn_health, only: health_t, check_health, check_input_health, write_health, health_fail
+  use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
                         write_input_errors
@@ -20,6 +24,7 @@ program landyn
   type(landyn_input_t) :: inp
   type(input_errors_t) :: errors
   type(sim_result_t) :: res
+  type(health_t) :: health
   character(len=:), allocatable :: deck, out_file, arg, cmd, problem
   logical :: check_only, quiet
   integer :: i, n, stat, progress
@@ -50,6 +55,7 @@ program landyn
       if (i == n) call die_usage('option '//arg//' needs a file name')
       i = i + 1
       out_file = get_arg(i)
+      if (len(out_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
     case default
       problem = positional_arg_problem(arg, deck, 'deck')
       if (len(problem) > 0) call die_usage(problem)
@@ -76,6 +82,25 @@ program landyn
   end if
   if (len(out_file) == 0) out_file = trim(inp%output%file)
 
+  ! ---- the result file may be written (docs/files.md): checked before the run
+  problem = output_file_problem(out_file, 'result file', [character(len=len(deck)) :: deck], .true.)
+  if (len(problem) > 0) then
+    write (error_unit, '(a)') 'landyn: '//problem
+    write (error_unit, '(a)') 'landyn: nothing was run and no file was written'
+    call terminate(4)
+  end if
+  if (file_kind(out_file) == kind_regular .and. .not. quiet) &
+    write (error_unit, '(a)') 'landyn: '//out_file//' exists and will be replaced'
+
+  ! ---- input health (docs/health.md): a meaningless configuration is not run
+  call check_input_health(inp, health)
+  if (health%status() == health_fail) then
+    call write_health(error_unit, 'landyn: ', health)
+    write (error_unit, '(a)') 'landyn: a run-health check of the input failed: the run would be physically '// &
+      'meaningless; nothing was run and no file was written (exit status 6)'
+    call terminate(6)
+  end if
+
   ! ---- run
   progress = error_unit
   if (quiet) progress = -1
@@ -95,13 +120,21 @@ program landyn
 
   ! ---- result file
   cmd = command_line()
-  call write_result_file(out_file, inp, res, cmd, stat, msg)
+  call check_health(inp, res, health)
+  call write_result_file(out_file, inp, res, cmd, stat, msg, health)
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
     call terminate(4)
   end if
   call write_summary_table(output_unit, inp, res)
+  call write_health(output_unit, '', health)
   write (output_unit, '(a)') 'Results written to '//out_file
+  if (health%status() == health_fail) then
+    call write_health(error_unit, 'landyn: ', health)
+    write (error_unit, '(a)') 'landyn: a run-health check failed: the result is physically meaningless '// &
+      '(exit status 6; /summary/health in '//out_file//')'
+    call terminate(6)
+  end if
 
 contains
 
@@ -121,7 +154,8 @@ contains
       '  -h, --help      print this help', &
       '', &
       'Exit status: 0 success (a tip-over is a result), 1 usage error, 2 invalid input,', &
-      '3 simulation failed (diverged), 4 result file not written.'
+      '3 simulation failed (diverged), 4 result file not written (or refused: docs/files.md),', &
+      '6 run-health check failed: result physically meaningless (docs/health.md).'
   end subroutine usage
 
   subroutine die_usage(text)

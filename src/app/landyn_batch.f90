@@ -7,14 +7,18 @@
 !!   landyn_batch DECK --check | --list-cases          (no MPI)
 !!
 !! Exit status: 0 success (failed cases are results, not errors); 1 usage error; 2 invalid
-!! campaign (deck, base deck, case list) or files of another campaign; 4 a file could not be
-!! written; 5 stopped early (--stop-after) or merged summary incomplete.
+!! campaign (deck, base deck, case list) or files of another campaign; 4 a file cannot be
+!! written (or is refused before anything runs: an input, a device, a read-only or non-HDF5
+!! file; docs/files.md); 5 stopped early (--stop-after) or merged summary incomplete.
 program landyn_batch
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem
   use landyn_campaign_tasks, only: exit_ok, check_campaign, list_cases, run_case_range, merge_summaries
   use landyn_campaign_parallel, only: batch_options_t, run_campaign
   use landyn_process, only: terminate
+  use landyn_input, only: input_errors_t
+  use landyn_campaign_deck, only: campaign_t, load_campaign
+  use landyn_files, only: output_file_problem
   implicit none
 
   type(batch_options_t) :: opts
@@ -63,6 +67,7 @@ program landyn_batch
       if (i == n) call die_usage('option '//arg//' needs a file name')
       i = i + 1
       out_file = get_arg(i)
+      if (len(out_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
     case ('--case')
       if (i == n) call die_usage('option --case needs a case id K or a range K:L')
       call set_task('case')
@@ -72,6 +77,7 @@ program landyn_batch
       call set_task('merge')
       if (n - i < 2) call die_usage('--merge needs an output file and at least one input file')
       out_file = get_arg(i + 1)
+      if (len(out_file) == 0) call die_usage('--merge needs a non-empty output file name')
       allocate (inputs(n - i - 1))
       do p = 1, size(inputs)
         inputs(p) = get_arg(i + 1 + p)
@@ -86,6 +92,7 @@ program landyn_batch
   end do
 
   code = exit_ok
+  call check_output_file()
   select case (task)
   case ('merge')
     if (len(deck) > 0) call die_usage('--merge takes no deck: landyn_batch --merge OUT IN...')
@@ -140,6 +147,51 @@ contains
     task = t
   end subroutine set_task
 
+  !> The output-file policy (docs/files.md), before anything runs: the summary file (or the file of
+  !! --case / --merge) is never an input of the campaign, a device, a directory, read-only or a
+  !! file other than HDF5. A campaign that does not load is left to the task, which reports it.
+  subroutine check_output_file()
+    type(campaign_t) :: camp
+    type(input_errors_t) :: errors
+    character(len=:), allocatable :: path, why
+    character(len=4096), allocatable :: files(:)
+    integer :: st, k
+    select case (task)
+    case ('merge')
+      allocate (files(size(inputs)))
+      files = inputs
+      path = out_file
+    case ('campaign', 'case')
+      if (len(deck) == 0) return
+      call load_campaign(deck, camp, errors, st)
+      if (st /= 0) return
+      path = out_file
+      if (len(path) == 0 .and. task == 'campaign') path = camp%summary_file
+      if (len(path) == 0) return
+      allocate (files(3))
+      files(1) = deck
+      files(2) = ''
+      files(3) = ''
+      if (allocated(camp%base_path)) files(2) = camp%base_path
+      if (allocated(camp%list_path)) files(3) = camp%list_path
+    case default
+      return
+    end select
+    do k = 1, size(files)
+      if (len_trim(files(k)) > 0 .and. trim(files(k)) == path) then
+        write (error_unit, '(a)') 'landyn_batch: output file '''//path//''' is an input of this run; refusing '// &
+          'to overwrite it'
+        call terminate(4)
+      end if
+    end do
+    why = output_file_problem(path, 'output file', files, .true.)
+    if (len(why) > 0) then
+      write (error_unit, '(a)') 'landyn_batch: '//why
+      write (error_unit, '(a)') 'landyn_batch: nothing was run and no file was written'
+      call terminate(4)
+    end if
+  end subroutine check_output_file
+
   subroutine need_deck()
     if (len(deck) == 0) call die_usage('no campaign deck given')
   end subroutine need_deck
@@ -175,7 +227,8 @@ contains
       '  -h, --help          print this help', &
       '', &
       'Exit status: 0 success (failed cases are results), 1 usage error, 2 invalid campaign or files of', &
-      'another campaign, 4 a file not written, 5 stopped early (--stop-after) or merged summary incomplete.'
+      'another campaign, 4 a file not written (or refused: docs/files.md), 5 stopped early (--stop-after)', &
+      'or merged summary incomplete.'
   end subroutine usage
 
   subroutine die_usage(text)

@@ -5,13 +5,15 @@
 !!
 !! Exit status: 0 every run completed (a tip-over is a result); 1 usage error; 2 invalid study
 !! deck or run input (nothing is run); 3 some runs failed (diverged; the files are written, their
-!! status says which); 4 an output file could not be written.
+!! status says which); 4 an output file cannot be written (refused before anything runs where
+!! possible, docs/files.md); 6 no run failed but a run-health check failed for some (status 6).
 program landyn_study_main
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_study, only: study_t, read_study, prepare_study, run_study, write_study_csv, write_study_h5, &
-                          status_failed
+                          status_failed, status_unhealthy
+  use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
                         write_input_errors
@@ -23,6 +25,7 @@ program landyn_study_main
   logical :: check_only, quiet
   integer :: i, n, stat, run_stat, c, v, progress
   character(len=msg_len) :: msg
+  character(len=4096), allocatable :: inputs(:)
 
   deck = ''
   problem = ''
@@ -50,10 +53,12 @@ program landyn_study_main
       if (i == n) call die_usage('option '//arg//' needs a file name')
       i = i + 1
       h5_file = get_arg(i)
+      if (len(h5_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
     case ('--csv')
       if (i == n) call die_usage('option '//arg//' needs a file name')
       i = i + 1
       csv_file = get_arg(i)
+      if (len(csv_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
     case default
       problem = positional_arg_problem(arg, deck, 'study deck')
       if (len(problem) > 0) call die_usage(problem)
@@ -64,6 +69,7 @@ program landyn_study_main
 
   ! ---- the study deck and every run's input, all checked before anything runs
   call read_study(deck, study, errors, stat)
+  if (len(h5_file) > 0) study%output = h5_file   ! kept run files are named after the result file
   ! prepared also after errors in the study deck, to report every problem at once
   if (stat /= 2 .and. study%n_cases > 0 .and. study%n_variants > 0) call prepare_study(study, errors, i)
   if (stat /= 0 .or. errors%count() > 0) then
@@ -84,6 +90,33 @@ program landyn_study_main
     end do
     write (output_unit, '(a)') '  results would go to '//h5_file//' and '//csv_file
     call terminate(0)
+  end if
+
+  ! ---- the output files may be written (docs/files.md): checked before anything runs
+  if (h5_file == csv_file) call die_files('the result file and the table are the same file ('//h5_file//')')
+  allocate (inputs(study%n_cases + 2))
+  inputs(1) = deck
+  do c = 1, study%n_cases
+    inputs(c + 1) = study%case_deck(c)
+  end do
+  inputs(study%n_cases + 2) = csv_file
+  problem = output_file_problem(h5_file, 'result file', inputs, .true.)
+  if (len(problem) > 0) call die_files(problem)
+  inputs(study%n_cases + 2) = h5_file
+  problem = output_file_problem(csv_file, 'table', inputs, .false.)
+  if (len(problem) > 0) call die_files(problem)
+  if (study%keep_results) then
+    inputs(study%n_cases + 2) = ''
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        problem = output_file_problem(trim(study%inp(c, v)%output%file), 'run result file', inputs, .true.)
+        if (len(problem) > 0) call die_files(problem)
+      end do
+    end do
+  end if
+  if (.not. quiet) then
+    if (file_kind(h5_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//h5_file//' will be replaced'
+    if (file_kind(csv_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//csv_file//' will be replaced'
   end if
 
   ! ---- run
@@ -113,6 +146,11 @@ program landyn_study_main
   if (run_stat == status_failed) then
     write (error_unit, '(a)') 'landyn_study: some runs failed (status 3 in the result file)'
     call terminate(3)
+  end if
+  if (run_stat == status_unhealthy) then
+    write (error_unit, '(a)') 'landyn_study: a run-health check failed for some runs: their results are '// &
+      'physically meaningless (status 6 in the result file; docs/health.md)'
+    call terminate(6)
   end if
   call terminate(0)
 
@@ -164,8 +202,16 @@ contains
       '  -h, --help      print this help', &
       '', &
       'Exit status: 0 success, 1 usage error, 2 invalid input (nothing run), 3 some runs failed,', &
-      '4 a file could not be written.'
+      '4 a file cannot be written (or is refused: docs/files.md), 6 a run-health check failed for', &
+      'some runs (docs/health.md).'
   end subroutine usage
+
+  subroutine die_files(text)
+    character(len=*), intent(in) :: text   !! what is wrong
+    write (error_unit, '(a)') 'landyn_study: '//text
+    write (error_unit, '(a)') 'landyn_study: nothing was run and no file was written'
+    call terminate(4)
+  end subroutine die_files
 
   subroutine die_usage(text)
     character(len=*), intent(in) :: text   !! what is wrong

@@ -14,6 +14,7 @@ module landyn_campaign_case
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_health, only: health_t, check_health, health_fail
   use landyn_output, only: write_result_file
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
   use landyn_kinematics, only: rot_zyx
@@ -25,6 +26,7 @@ module landyn_campaign_case
   public :: row_int_count, row_real_count, pack_row, unpack_row, rows_equal
   public :: status_not_run, status_ok, status_invalid_input, status_failed
   public :: fail_tipped_over, fail_stroke_margin, fail_overload, fail_clearance, fail_not_at_rest, fail_run
+  public :: n_criteria, criterion_bit, criterion_name, failed_criteria_names, failure_counts
 
   integer, parameter :: status_not_run = -1        !! row not filled [-]
   integer, parameter :: status_ok = 0              !! the simulation ran to its end (a tip-over is a result) [-]
@@ -38,6 +40,14 @@ module landyn_campaign_case
   integer, parameter :: fail_clearance = 8         !! body clearance below min_body_clearance [-]
   integer, parameter :: fail_not_at_rest = 16      !! not at rest although required [-]
   integer, parameter :: fail_run = 32              !! no result (invalid input or failed run) [-]
+
+  integer, parameter :: n_criteria = 6             !! number of fail_* bits [-]
+  !> The fail_* bits in order, and their names (summary-file column failed_criteria_names,
+  !! /probability/failure_criterion; docs/campaign.md).
+  integer, parameter :: criterion_bit(n_criteria) = [fail_tipped_over, fail_stroke_margin, fail_overload, &
+                                                      fail_clearance, fail_not_at_rest, fail_run]  !! [-]
+  character(len=14), parameter :: criterion_name(n_criteria) = [character(len=14) :: 'tipped_over', &
+    'stroke_margin', 'overload', 'body_clearance', 'not_at_rest', 'no_result']  !! [-]
 
   integer, parameter :: row_int_count = 11         !! integer part of a packed row [-]
   integer, parameter :: max_message = 2000         !! longest error message kept [-]
@@ -130,6 +140,7 @@ contains
     type(landyn_input_t) :: inp
     type(input_errors_t) :: errors
     type(sim_result_t) :: res
+    type(health_t) :: health
     real(wp) :: values(camp%n_par)
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
@@ -175,6 +186,12 @@ contains
       return
     end if
     row%status = status_ok
+    call check_health(inp, res, health)
+    if (health%status() == health_fail) then
+      ! physically meaningless (docs/health.md): recorded as a failed run, its numbers kept
+      row%status = status_failed
+      row%message = 'run-health check failed: '//health%messages
+    end if
     row%crush = res%crush_net
     row%margin = res%stroke_margin
     row%min_margin = minval(res%stroke_margin)
@@ -193,7 +210,7 @@ contains
     if (save_history) then
       path = history_file_name(camp, id)
       inp%output%file = path
-      call write_result_file(path, inp, res, command_line, st, msg)
+      call write_result_file(path, inp, res, command_line, st, msg, health)
       if (st == 0) then
         row%history_file = path
       else
@@ -268,6 +285,30 @@ contains
     row%failed_criteria = fc
     row%success = merge(1, 0, fc == 0)
   end subroutine evaluate_criteria
+
+  !> Names of the criteria a bit set of fail_* says failed, comma-separated in criterion_bit
+  !! order ('' when none), e.g. 'tipped_over,stroke_margin'.
+  pure function failed_criteria_names(fc) result(s)
+    integer, intent(in) :: fc           !! bit set of fail_* [-]
+    character(len=:), allocatable :: s  !! names [-]
+    integer :: k
+    s = ''
+    do k = 1, n_criteria
+      if (iand(fc, criterion_bit(k)) == 0) cycle
+      if (len(s) > 0) s = s//','
+      s = s//trim(criterion_name(k))
+    end do
+  end function failed_criteria_names
+
+  !> Number of rows that failed each criterion (criterion_bit order); a row may fail several.
+  pure function failure_counts(rows) result(counts)
+    type(case_row_t), intent(in) :: rows(:)  !! rows [-]
+    integer :: counts(n_criteria)            !! rows failing each criterion [-]
+    integer :: k
+    do k = 1, n_criteria
+      counts(k) = count(iand(rows%failed_criteria, criterion_bit(k)) /= 0)
+    end do
+  end function failure_counts
 
   !> Message on one line, at most max_message characters.
   pure function sanitize(t) result(s)

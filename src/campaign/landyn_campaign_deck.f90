@@ -20,6 +20,8 @@ module landyn_campaign_deck
   use landyn_kinds, only: wp, max_gears
   use landyn_config, only: landyn_input_t, default_input, unset_real, is_set, max_stages, path_len
   use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
+  use landyn_namelist_text, only: has_nonfinite_word, numbers_within
+  use landyn_files, only: read_whole_file
   use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, real_text, &
                                  real_text_short, quote_text, close_name_hint, dir_of, join_path, base_name_no_ext
   use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
@@ -27,7 +29,7 @@ module landyn_campaign_deck
   private
 
   public :: campaign_t, param_t, criteria_t
-  public :: load_campaign, build_campaign, case_values, case_deck_text, case_input, text_fingerprint
+  public :: load_campaign, build_campaign, use_summary_file, case_values, case_deck_text, case_input, text_fingerprint
   public :: param_description, max_values, max_saved, max_body_points, max_params, label_len
   public :: run_variable_table, default_deck_variable, default_deck_variables
 
@@ -88,6 +90,7 @@ module landyn_campaign_deck
     character(len=:), allocatable :: list_text       !! case list text [-]
     character(len=:), allocatable :: summary_file    !! summary file [-]
     character(len=:), allocatable :: history_prefix  !! history files are <prefix><id>.h5 [-]
+    logical :: history_prefix_given = .false.         !! &campaign history_prefix was given [-]
     integer(int64) :: seed = 1_int64                 !! Monte Carlo seed [-]
     integer :: n_samples = 0                         !! Monte Carlo sample count [-]
     integer :: n_cases = 0                           !! number of cases [-]
@@ -269,6 +272,17 @@ contains
     stat = merge(0, 1, errors%count() == n0)
   end subroutine load_campaign
 
+  !> With a summary file given on the command line (-o), the time-history files follow it
+  !! (<summary without .h5>_case<id>.h5) unless the deck names history_prefix, so that two runs
+  !! with different -o never overwrite each other's histories. Call on every rank after the
+  !! campaign is built (camp%summary_file, the deck's, is left as it is).
+  subroutine use_summary_file(camp, path)
+    type(campaign_t), intent(inout) :: camp    !! campaign [-]
+    character(len=*), intent(in) :: path       !! summary file from -o ('' keeps the deck's) [-]
+    if (len(path) == 0) return
+    if (.not. camp%history_prefix_given) camp%history_prefix = strip_h5(path)//'_case'
+  end subroutine use_summary_file
+
   !> Build a campaign from the texts of its deck, base deck and case list ('' when absent).
   !! stat = 0 ready, 1 problems found (appended to `errors`).
   subroutine build_campaign(deck_name, deck_text, base_text, list_text, camp, errors, stat)
@@ -285,8 +299,9 @@ contains
     call parse_campaign_deck(deck_text, deck_name, camp, rc, errors)
     camp%base_text = base_text
     camp%list_text = list_text
-    if (len_trim(rc%base_deck) > 0 .and. len(base_text) > 0) call attach_base_deck(camp, errors)
-    if (camp%mode == 'list' .and. len_trim(rc%list_file) > 0 .and. len(list_text) > 0) call attach_list(camp, errors)
+    ! an empty base deck is valid (the defaults); an empty case list is reported by attach_list
+    if (len_trim(rc%base_deck) > 0) call attach_base_deck(camp, errors)
+    if (camp%mode == 'list' .and. len_trim(rc%list_file) > 0) call attach_list(camp, errors)
     if (errors%count() == n0) call finish_campaign(camp, rc, errors)
     stat = merge(0, 1, errors%count() == n0)
   end subroutine build_campaign
@@ -297,29 +312,7 @@ contains
     character(len=:), allocatable, intent(out) :: text   !! contents [-]
     integer, intent(out) :: stat                         !! 0 ok [-]
     character(len=:), allocatable, intent(out) :: msg    !! reason on failure [-]
-    integer :: u, nbytes
-    character(len=256) :: iomsg
-    iomsg = ''
-    text = ''
-    msg = ''
-    open (newunit=u, file=trim(path), access='stream', form='unformatted', action='read', status='old', &
-          iostat=stat, iomsg=iomsg)
-    if (stat /= 0) then
-      msg = trim(iomsg)
-      return
-    end if
-    inquire (unit=u, size=nbytes)
-    if (nbytes < 0) then
-      stat = 1
-      msg = 'its size is unknown'
-      close (u)
-      return
-    end if
-    deallocate (text)
-    allocate (character(len=nbytes) :: text)
-    if (nbytes > 0) read (u, iostat=stat, iomsg=iomsg) text
-    close (u)
-    if (stat /= 0) msg = trim(iomsg)
+    call read_whole_file(path, text, stat, msg)
   end subroutine read_text_file
 
   ! ================================================================ deck parsing
@@ -432,6 +425,7 @@ contains
     end if
     if (len_trim(rc%history_prefix) > 0) then
       camp%history_prefix = trim(rc%history_prefix)
+      camp%history_prefix_given = .true.
     else
       camp%history_prefix = strip_h5(camp%summary_file)//'_case'
     end if
@@ -1427,13 +1421,21 @@ contains
       end if
       do j = 1, ncol
         iomsg = ''
-        read (cells(j), *, iostat=ios, iomsg=iomsg) rows(j, nrow)
+        ios = 0
+        ! one number per cell: no second value, separator or comment, nothing beyond |x| < 1e31
+        if (scan(trim(adjustl(cells(j))), ' '//achar(9)//';#/*!') > 0 .or. &
+            has_nonfinite_word(cells(j)) .or. .not. numbers_within(cells(j), 30) .or. &
+            verify(trim(adjustl(cells(j))), '0123456789+-.eEdD') > 0) then
+          ios = 1
+        else
+          read (cells(j), *, iostat=ios, iomsg=iomsg) rows(j, nrow)
+        end if
         if (ios == 0) then
           if (.not. ieee_is_finite(rows(j, nrow))) ios = -1
         end if
         if (ios /= 0 .or. len_trim(cells(j)) == 0) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &
-                          quote_text(trim(cells(j)))//' is not a finite number')
+                          quote_text(trim(cells(j)))//' is not a finite number (valid: one number per cell, |x| < 1e31)')
           rows(j, nrow) = 0.0_wp
         else if (camp%par(j)%is_int .and. abs(rows(j, nrow) - anint(rows(j, nrow))) > 0.0_wp) then
           call errors%add(pre//'case '//int_text(nrow)//', column '//quote_text(trim(hdr(j)))//': '// &

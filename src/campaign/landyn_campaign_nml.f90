@@ -19,8 +19,9 @@ module landyn_campaign_nml
   use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
   use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
                                   find_item_names, line_of, first_nonblank, one_line_text, &
-                                  separators_to_blanks, remove_blanks
+                                  separators_to_blanks, remove_blanks, has_nonfinite_word, numbers_within
   implicit none
+  integer, parameter :: max_value_exponent = 30   !! campaign values beyond 1e31 are rejected before reading
   private
 
   public :: nml_item_t, nml_group_t, split_namelist
@@ -137,6 +138,13 @@ contains
       if (starts(k) == eqs(k)) then
         call errors%add(deck_name//':'//int_text(line_of(work, eqs(k)))//': &'//group%name// &
                         ": '=' without a variable name: "//snippet(work(eqs(k):item_end)))
+        cycle
+      end if
+      if (has_nonfinite_word(work(eqs(k) + 1:item_end)) .or. &
+          .not. numbers_within(work(eqs(k) + 1:item_end), max_value_exponent)) then
+        call errors%add(deck_name//':'//int_text(line_of(work, starts(k)))//': &'//group%name//': '// &
+                        remove_blanks(work(starts(k):eqs(k) - 1))//' = '//snippet(trim_value(work(eqs(k) + 1:item_end)))// &
+                        ' is invalid; valid: finite numbers with |value| < 1e31')
         cycle
       end if
       nvalid = nvalid + 1

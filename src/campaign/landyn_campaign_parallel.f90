@@ -42,7 +42,7 @@ module landyn_campaign_parallel
   use landyn_input, only: input_errors_t
   use landyn_h5, only: delete_file
   use landyn_campaign_nml, only: int_text, real_text_short
-  use landyn_campaign_deck, only: campaign_t, build_campaign
+  use landyn_campaign_deck, only: campaign_t, build_campaign, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, pack_row, unpack_row, row_int_count, row_real_count, &
                                   status_ok
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, journal_open, &
@@ -177,6 +177,7 @@ contains
         call MPI_Abort(MPI_COMM_WORLD, exit_invalid)
       end if
     end if
+    call use_summary_file(camp, opts%summary_file)   ! history files follow -o (issue 10)
 
     prof = 0.0_wp
     t0 = MPI_Wtime()

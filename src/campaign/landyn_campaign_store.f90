@@ -22,7 +22,8 @@ module landyn_campaign_store
                        h5_write_attr, h5_read, h5_read_attr, h5_exists
   use landyn_campaign_nml, only: int_text, real_text_short
   use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
-  use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row, status_ok
+  use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row, status_ok, &
+                                  n_criteria, criterion_name, failed_criteria_names, failure_counts
   implicit none
   private
 
@@ -369,6 +370,9 @@ contains
     call h5_write(f, '/cases/failed_criteria', [(int(rows(i)%failed_criteria, ip), i=1, n)], '-', stat, errmsg, &
       description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result')
     if (stat /= 0) return
+    call h5_write(f, '/cases/failed_criteria_names', text_column(4), '-', stat, errmsg, &
+      description='the criteria the case failed, comma-separated (names of /probability/failure_criterion)')
+    if (stat /= 0) return
 
     ! ---- /probability
     call h5_write(f, '/probability/n_evaluated', int(n_eval, ip), '-', stat, errmsg, &
@@ -382,11 +386,17 @@ contains
     call h5_write(f, '/probability/ci95_high', hi, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/probability/confidence', 0.95_wp, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/probability/method', 'Wilson score interval, z = 1.959963984540054', '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/probability/failure_criterion', criterion_name, '-', stat, errmsg, &
+                  description='criteria in the order of failure_count (bits 1, 2, 4, 8, 16, 32 of failed_criteria)')
+    if (stat /= 0) return
+    call h5_write(f, '/probability/failure_count', int(failure_counts(rows), ip), '-', stat, errmsg, &
+                  description='cases failing each criterion (a case may fail several)')
 
   contains
 
     function text_column(which) result(col)
-      integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file [-]
+      integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file, 4 failed criteria [-]
       character(len=:), allocatable :: col(:)      !! column [-]
       integer :: k, l
       l = 1
@@ -396,8 +406,10 @@ contains
           l = max(l, len(rows(k)%message))
         case (2)
           l = max(l, len(rows(k)%end_reason))
-        case default
+        case (3)
           l = max(l, len(rows(k)%history_file))
+        case default
+          l = max(l, len(failed_criteria_names(rows(k)%failed_criteria)))
         end select
       end do
       allocate (character(len=l) :: col(n))
@@ -407,8 +419,10 @@ contains
           col(k) = rows(k)%message
         case (2)
           col(k) = rows(k)%end_reason
-        case default
+        case (3)
           col(k) = rows(k)%history_file
+        case default
+          col(k) = failed_criteria_names(rows(k)%failed_criteria)
         end select
       end do
     end function text_column

@@ -9,8 +9,9 @@ module landyn_campaign_tasks
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_campaign_nml, only: int_text, real_text_short, lower_case
-  use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description
-  use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok
+  use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
+  use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, n_criteria, criterion_name, &
+                                  failed_criteria_names, failure_counts
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
                                    results_init, results_add, results_rows, results_missing, success_probability
   implicit none
@@ -144,6 +145,7 @@ contains
     end if
     path = out_file
     if (len_trim(path) == 0) path = part_file_name(camp, k1, k2)
+    call use_summary_file(camp, out_file)   ! history files follow -o (issue 10)
     allocate (rows(k2 - k1 + 1))
     do id = k1, k2
       if (.not. quiet) write (err_u, '(a)') 'landyn_batch: running case '//int_text(id)//' of '//int_text(camp%n_cases)
@@ -172,6 +174,7 @@ contains
       s = s//trim(row%end_reason)//', min margin '//real_text_short(1000.0_wp*row%min_margin)//' mm, peak '// &
           real_text_short(row%peak_overload)//' g, tilt '//real_text_short(row%final_tilt)//' deg, '// &
           merge('success', 'FAILURE', row%success == 1)
+      if (row%success /= 1) s = s//' ('//failed_criteria_names(row%failed_criteria)//')'
     else
       s = s//'status '//int_text(row%status)//' ('//trim(row%end_reason)//'): '//row%message
     end if
@@ -183,9 +186,10 @@ contains
     type(case_row_t), intent(in) :: rows(:)      !! rows [-]
     character(len=*), intent(in) :: failed_runs  !! criteria%failed_runs [-]
     integer, intent(in) :: u                     !! unit [-]
-    integer :: n_eval, n_succ, n_excl, n_inv, n_fail
+    integer :: n_eval, n_succ, n_excl, n_inv, n_fail, k, counts(n_criteria)
     real(wp) :: p, lo, hi
     character(len=96) :: buf
+    character(len=:), allocatable :: s
     call success_probability(rows, failed_runs, n_eval, n_succ, n_excl, p, lo, hi)
     n_inv = count(rows%status == 2)
     n_fail = count(rows%status == 3)
@@ -199,6 +203,13 @@ contains
     write (buf, '(f6.4,a,f6.4,a,f6.4,a)') p, ', 95 % CI [', lo, ', ', hi, '] (Wilson score)'
     write (u, '(a)') '  successful landings: '//int_text(n_succ)//' of '//int_text(n_eval)//': P = '// &
       trim(adjustl(buf))
+    counts = failure_counts(rows)
+    s = '  failures per criterion:'
+    do k = 1, n_criteria
+      s = s//' '//trim(criterion_name(k))//' '//int_text(counts(k))
+      if (k < n_criteria) s = s//','
+    end do
+    write (u, '(a)') s
   end subroutine report_probability
 
   !> `--merge OUT IN...`: combine summary files of one campaign into OUT (rows by case id).

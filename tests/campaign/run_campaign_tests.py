@@ -101,7 +101,10 @@ def test_grid(env):
     """2 x 2 grid on 1 and 2 ranks: identical; saved history = what landyn computes."""
     env.mpi(1, "grid.nml", "-o", "grid_np1.h5")
     env.mpi(2, "grid.nml", "-o", "grid_np2.h5")
-    env.same("grid_np1.h5", "grid_np2.h5", history=True)
+    # history files follow -o (issue 10): grid_np1_case*.h5 and grid_np2_case*.h5, never shared
+    env.same("grid_np1.h5", "grid_np2.h5")
+    check(os.path.exists(env.path("grid_np1_case000002.h5")) and os.path.exists(env.path("grid_np2_case000002.h5")),
+          "each run's history files are named after its summary file (-o)")
     f = h5py.File(env.path("grid_np2.h5"), "r")
     check(list(f["cases/case_id"][()]) == [1, 2, 3, 4], "rows ordered by case id")
     check(f.attrs["complete"] == 1 and f.attrs["n_rows"] == 4, "summary complete")
@@ -113,7 +116,7 @@ def test_grid(env):
     check(f["cases/crush_length"].shape == (4, 4, 3), "crush_length shape (cases, gears, struts)")
     check(all(f["cases/status"][()] == 0), "all cases ran")
     hist = f["cases/history_file"][()][1].decode()
-    check(hist == "grid_case000002.h5" and os.path.exists(env.path(hist)), "history of case 2 written")
+    check(hist == "grid_np2_case000002.h5" and os.path.exists(env.path(hist)), "history of case 2 written")
     h = h5py.File(env.path(hist), "r")
     check(np.array_equal(h["summary/crush_length"][()], f["cases/crush_length"][1]),
           "history file and summary row agree")
@@ -156,6 +159,35 @@ def test_monte_carlo(env):
           & (f["cases/peak_overload"][()] <= f["criteria/max_overload"][()])
           & (f["cases/min_body_clearance"][()] >= f["criteria/min_body_clearance"][()]))
     check(np.array_equal(ok.astype(int), f["cases/success"][()]), "success = criteria of &criteria")
+    # which criteria failed, per case and counted per criterion (stdout's last result line)
+    names = [x.decode() for x in f["probability/failure_criterion"][()]]
+    check(names == ["tipped_over", "stroke_margin", "overload", "body_clearance", "not_at_rest", "no_result"],
+          "failure criteria named in bit order")
+    fc = f["cases/failed_criteria"][()]
+    expect_fc = (np.where(f["cases/tipped_over"][()] == 1, 1, 0)
+                 + np.where(f["cases/min_stroke_margin"][()] < crit_margin, 2, 0)
+                 + np.where(f["cases/peak_overload"][()] > f["criteria/max_overload"][()], 4, 0)
+                 + np.where(f["cases/min_body_clearance"][()] < f["criteria/min_body_clearance"][()], 8, 0))
+    check(np.array_equal(fc, expect_fc), f"failed_criteria bits {list(fc)} from the metrics")
+    per_case = [x.decode().strip() for x in f["cases/failed_criteria_names"][()]]
+    check(per_case == [",".join(nm for b, nm in zip((1, 2, 4, 8, 16, 32), names) if v & b) for v in fc],
+          f"failed_criteria_names {per_case} spell the bits")
+    counts = f["probability/failure_count"][()]
+    check(list(counts) == [int(np.sum((fc & b) != 0)) for b in (1, 2, 4, 8, 16, 32)],
+          f"failure_count {list(counts)} per criterion")
+    check(int(np.sum(f["cases/success"][()] == 0)) > 0, "the sample has failed cases to count")
+    p = env.serial("mc.nml", "--case", "1:6", "-o", "all6.h5")
+    case_lines = p.stdout.splitlines()
+    p = env.serial("--merge", "merged6.h5", "all6.h5")
+    lines = [ln for ln in p.stdout.splitlines() if ln.strip()]
+    want = "  failures per criterion: " + ", ".join(f"{nm} {c}" for nm, c in zip(names, counts))
+    check(lines[-1] == want, f"last line counts failures per criterion: {lines[-1]!r}")
+    p = env.mpi(2, "mc.nml", "-o", "mc_again.h5", "-q")
+    check(want in p.stdout.splitlines(), "the MPI run prints the same count")
+    lines = case_lines
+    fail_lines = [ln for ln in lines if "FAILURE" in ln]
+    check(len(fail_lines) == int(np.sum(fc != 0)) and all("FAILURE (" in ln for ln in fail_lines),
+          "every FAILURE line names its criteria")
 
 
 def test_resume(env):
@@ -196,6 +228,9 @@ def test_failing(env):
     check(int(f["probability/n_excluded"][()]) == 2 and int(f["probability/n_evaluated"][()]) == 2,
           "failed_runs = 'exclude' leaves them out of P")
     check(list(f["cases/failed_criteria"][()][1:3]) == [32, 32], "failed_criteria bit 32 = no result")
+    check([x.decode().strip() for x in f["cases/failed_criteria_names"][()]][1:3] == ["no_result"] * 2,
+          "failed_criteria_names: no_result")
+    check(int(f["probability/failure_count"][()][5]) == 2, "failure_count counts the two cases without a result")
 
 
 def test_case_merge(env):

@@ -7,11 +7,15 @@ free_fall          before touchdown the mass centre follows the analytic traject
 symmetric_landing  LC-1 (symmetric lander, vertical landing) stays symmetric to round-off
 slow_landing       a landing too slow to reach any crush level crushes nothing and comes to rest
 dt_convergence     halving dt changes no crush length by more than 0.2 mm (LC-1 ... LC-4)
+energy_audit       the energy audit closes to 0.1 % also at the coarse campaign step 4e-5 s (LC-3 and
+                   the two decks of the integration issue): it audits the leapfrog's synchronised
+                   kinetic energy with trapezoidal works, not the stored half-step velocities
 peaks              LC-3: the stored interval-peak histories hold the summary's peaks exactly (overload,
                    footpad normal force, strut force), and the 1 ms samples alone miss them
 """
 import argparse
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -89,7 +93,7 @@ def t_thrust(exe, src, d):
     drop = 4.0 * 0.05   # metres descended under thrust
     check(abs(w[-1] + 25920.0 * drop) < 1e-3 * 25920.0 * drop,
           "thrust work = -T x distance descended under thrust (%.1f J vs %.1f J)" % (w[-1], -25920.0 * drop))
-    check(abs(f["summary/energy_residual"][()]) < 0.005, "energy audit closes with thrust (%.4f %%)"
+    check(abs(f["summary/energy_residual"][()]) < 0.001, "energy audit closes with thrust (%.4f %%)"
           % (100 * f["summary/energy_residual"][()]))
 
 
@@ -147,6 +151,21 @@ def t_dt_convergence(exe, src, d):
         else:
             print("      %s: not asserted (known miss, docs/validation.md): %s 0.2 mm"
                   % (case.upper(), "within" if diff <= 0.2 else "EXCEEDS"))
+
+
+def t_energy_audit(exe, src, d):
+    # The scheme is the leapfrog: read with velocities at t_n - dt/2 and left-point works the
+    # audit was off by ~0.27 % at 4e-5 s; read consistently it closes at every step size.
+    decks = {
+        "lc3": re.sub(r"\bdt\s*=\s*[0-9.eE+-]+", "dt = 4.0e-5", open(os.path.join(src, "input", "lc3.nml")).read()),
+        "deck_a": ("&simulation dt = 4.0e-5, t_end = 1.0 /\n&terrain slope = 4*0.44, slope_direction = 4*0.0 /\n"
+                   "&initial_state clearance = 0.0, velocity = 0.6, 0.0, 2.36, attitude = 2.83, -2.65, -4.72 /\n"),
+        "deck_b": "&simulation dt = 4.0e-5, t_end = 1.0 /\n&initial_state velocity = 0, 0, 2.4, attitude = 0, -3, -5 /\n",
+    }
+    for name, text in decks.items():
+        f = run(exe, d, name, text)
+        r = float(f["summary/energy_residual"][()])
+        check(abs(r) <= 1e-3, "%s at dt = 4e-5 s: energy residual %.4f %% <= 0.1 %%" % (name, 100 * r))
 
 
 def t_peaks(exe, src, d):
