@@ -279,8 +279,31 @@ def test_bad_deck(env):
     check("cannot read the campaign deck" in p.stderr, "unreadable deck")
 
 
+def test_time_account(env):
+    """The time accounts printed after the result (issue 12) add up and count every case and step."""
+    import re
+    for ranks, extra in ((1, []), (2, []), (3, ["--dedicated-master"])):
+        out = f"acct_np{ranks}.h5"
+        p = env.mpi(ranks, "mc.nml", "-o", out, "-q", *extra)
+        m = re.search(r"time account \[s\] \(rank 0 \| all ranks\): (.*) \| (.*)", p.stdout)
+        check(m is not None, f"{ranks} rank(s): time account printed")
+        r0, tot = ({k: float(v) for k, v in re.findall(r"(\w+)=([-+0-9.Ee]+)", g)} for g in m.groups())
+        f = h5py.File(env.path(out), "r")
+        n = len(f["cases/case_id"])
+        check(tot["cases"] == n and r0["rows"] == n, f"{ranks} rank(s): every case run once and recorded once")
+        check(tot["steps"] == int(f["cases/n_steps"][()].sum()), f"{ranks} rank(s): steps = sum of /cases/n_steps")
+        for name, acc in (("rank 0", r0), ("all ranks", tot)):
+            parts = sum(acc[k] for k in ("input", "sim", "after", "wait", "comm", "record", "ckpt"))
+            check((name == "rank 0" or acc["sim"] > 0.0) and parts <= acc["loop"] * 1.001 + 1e-3,
+                  f"{ranks} rank(s), {name}: the parts ({parts:.4f} s) fit into the loop ({acc['loop']:.4f} s)")
+        if "--dedicated-master" in extra:
+            check(r0["cases"] == 0 and r0["sim"] == 0.0, "a dedicated rank 0 runs no case")
+        check(re.search(r"rank time: simulating [0-9.]+ %", p.stdout) is not None, f"{ranks} rank(s): rank time line")
+    env.same("acct_np1.h5", "acct_np3.h5")
+
+
 TESTS = {"grid": test_grid, "monte_carlo": test_monte_carlo, "resume": test_resume, "failing": test_failing,
-         "case_merge": test_case_merge, "bad_deck": test_bad_deck}
+         "case_merge": test_case_merge, "bad_deck": test_bad_deck, "time_account": test_time_account}
 
 
 def main():
