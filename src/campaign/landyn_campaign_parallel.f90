@@ -228,13 +228,14 @@ contains
         return
       end if
       call delete_file(journal, st2, msg)
-      write (out_u, '(a)') 'LANDYN campaign '//deck//' ('//trim(camp%mode)//'): '//int_text(size(rows))//' of '// &
-        int_text(camp%n_cases)//' cases in '//summary
-      call report_probability(rows, camp%crit%failed_runs, out_u)
-      if (n_session > 0 .and. t1 > t0) write (out_u, '(a)') '  this run: '//int_text(n_session)//' cases in '// &
+      ! performance first, the result last: its final line counts the failures per criterion
+      if (n_session > 0 .and. t1 > t0) write (out_u, '(a)') 'this run: '//int_text(n_session)//' cases in '// &
         real_text_short(t1 - t0)//' s on '//int_text(nranks)//' rank(s) = '// &
         int_text(nint(real(n_session, wp)*3600.0_wp/((t1 - t0)*real(nranks, wp))))//' cases per core-hour'
       if (n_session > 0) call report_profile(prof_all, out_u)
+      write (out_u, '(a)') 'LANDYN campaign '//deck//' ('//trim(camp%mode)//'): '//int_text(size(rows))//' of '// &
+        int_text(camp%n_cases)//' cases in '//summary
+      call report_probability(rows, camp%crit%failed_runs, out_u)
     end subroutine finish
 
   end subroutine run_campaign
@@ -657,7 +658,7 @@ contains
     r = c_nanosleep(req, rem)
   end subroutine nap
 
-  !> The time accounts of all ranks, after the result lines: where the ranks' time went, and
+  !> The time accounts of all ranks, before the result lines: where the ranks' time went, and
   !! the per-case overhead outside run_simulation (docs/campaign.md, "Scaling").
   subroutine report_profile(pa, u)
     real(wp), intent(in) :: pa(:, :)   !! (n_prof, ranks) time accounts [s, -]
