@@ -225,7 +225,7 @@ def main():
     ap.add_argument("--study", required=True)
     ap.add_argument("--batch", default="")
     ap.add_argument("--seed", type=int, default=10)
-    ap.add_argument("--n", type=int, default=200, help="mutated decks per program")
+    ap.add_argument("--n", type=int, default=300, help="mutated decks per program")
     a = ap.parse_args()
     for k in ("landyn", "study", "batch"):
         if getattr(a, k):
