@@ -278,6 +278,16 @@ def test_bad_deck(env):
         check(text in p.stderr, f"reports: {text}")
     p = env.serial("missing.nml", expect=2)
     check("cannot read the campaign deck" in p.stderr, "unreadable deck")
+    # an empty base deck is the defaults (issue 10, item 1: it crashed landyn_batch), on 2 ranks too
+    open(env.path("empty.nml"), "w").close()
+    with open(env.path("e2.nml"), "w") as f:
+        f.write("&campaign base_deck = 'empty.nml', mode = 'grid' /\n"
+                "&parameter name = 'simulation%t_end', values = 0.005, 0.006, 0.007 /\n")
+    env.mpi(2, "e2.nml", "-o", "e2.h5", "-q")
+    left = sorted(n for n in os.listdir(env.dir) if n.startswith("e2.h5"))
+    check(left == ["e2.h5"], f"2 ranks on an empty base deck: summary written, no journal left ({left})")
+    with h5py.File(env.path("e2.h5"), "r") as f:
+        check(len(f["cases/case_id"][()]) == 3, "all three cases recorded")
 
 
 def test_time_account(env):
