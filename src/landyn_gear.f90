@@ -45,7 +45,6 @@ module landyn_gear
   private
 
   public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t
-  public :: gear_save_state, gear_restore_state
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
   public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle
@@ -85,9 +84,9 @@ module landyn_gear
   end type strut_kin_t
 
   !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
-  !! accumulators) and the caches that depend on it: a snapshot that gear_restore_state puts back
-  !! exactly, so that a step can be rejected or repeated (the geometry, masses and buffer laws are
-  !! parameters and stay in gear_t).
+  !! accumulators) and the caches that depend on it: gear_t's component `st`. Copying it out and
+  !! back restores the gear exactly, so that a step can be rejected or repeated (the geometry,
+  !! masses and buffer laws are parameters and stay in gear_t).
   type :: gear_state_t
     real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
     real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
@@ -105,8 +104,12 @@ module landyn_gear
     real(wp) :: max_drift = 0.0_wp                !! largest violation before correction [m]
     integer :: n_correction_iter = 0              !! largest number of correction iterations [-]
     real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
-    logical :: rigid = .false.                    !! rigid state [-]
-    logical :: rigid_cache = .false.              !! rigid caches valid [-]
+    ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
+    ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
+    ! computed once and reused until a strut breaks loose.
+    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
+                                                  !! changing locked or qd from outside requires rigid = .false.)
+    logical :: rigid_cache = .false.              !! the caches below are valid
     type(strut_kin_t) :: sk_c(3)                  !! cached strut kinematics
     real(wp) :: mdiag_c(n_q) = 0.0_wp             !! cached mass matrix diagonal [kg, kg m^2]
     real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! cached constraint rows [-, m]
@@ -131,41 +134,11 @@ module landyn_gear
     real(wp) :: l_in(3) = 0.0_wp                  !! l_i [m]
     real(wp) :: m_end(3) = 0.0_wp                 !! end mass [kg]
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
-    real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! Phi_q at the current q when phq_ok
-    logical :: phq_ok = .false.                   !! phq was evaluated at phq_q
-    real(wp) :: phq_q(n_q) = 0.0_wp               !! the q at which phq was evaluated [m, rad]
-    ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
-    ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
-    ! computed once and reused until a strut breaks loose.
-    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
-                                                  !! changing locked or qd from outside requires rigid = .false.)
-    logical :: rigid_cache = .false.              !! the caches below are valid
-    type(strut_kin_t) :: sk_c(3)                  !! strut kinematics at the rigid q
-    real(wp) :: mdiag_c(n_q) = 0.0_wp             !! mass matrix diagonal at the rigid q
-    real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! constraint rows (Phi_q and three lock rows)
-    real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! Cholesky factor of A M^-1 A^T
     type(buffer_slot_t) :: buffer(3)              !! primary, left, right buffer laws
     type(tube_friction_t) :: tube                 !! friction between the primary's tubes (eqs. 23-26)
-    real(wp) :: tube_bound = 0.0_wp               !! its extra bound on the primary this step [N]
     real(wp) :: sigma(3) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
     real(wp) :: len0(3) = 0.0_wp                  !! nominal strut lengths [m]
-    ! state
-    real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
-    real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
-    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
-    logical :: locked(3) = .true.                 !! strut locked (not sliding)
-    integer :: dir(3) = 0                         !! sliding direction of an unlocked strut (+1: toward +s)
-    real(wp) :: s_lock(3) = 0.0_wp                !! stroke held by a locked strut [m]
-    real(wp) :: s_hismin(3) = 0.0_wp              !! most negative stroke reached [m]
-    real(wp) :: s_hismax(3) = 0.0_wp              !! most positive stroke reached [m]
-    real(wp) :: axial(3) = 0.0_wp                 !! axial buffer force, compression positive [N]
-    real(wp) :: f_body(3) = 0.0_wp                !! force the gear applies to the body, gear frame [N]
-    real(wp) :: m_body(3) = 0.0_wp                !! its moment about the lander origin O_L, gear axes [N m]
-    ! accumulators
-    real(wp) :: work_crush(3) = 0.0_wp            !! energy absorbed by each buffer [J]
-    real(wp) :: max_violation = 0.0_wp            !! largest constraint violation after correction [m]
-    real(wp) :: max_drift = 0.0_wp                !! largest constraint violation before correction [m]
-    integer :: n_correction_iter = 0              !! largest number of position-correction iterations in a step
+    type(gear_state_t) :: st                      !! everything that evolves (a snapshot is a copy of it)
   end type gear_t
 
 contains
@@ -183,7 +156,7 @@ contains
     stat = 0
     gear%tube = tube_friction_t()
     if (present(tube)) gear%tube = tube
-    gear%tube_bound = 0.0_wp
+    gear%st%tube_bound = 0.0_wp
     gear%geom = geom
     gear%rot = rot
     gear%mass = mass
@@ -200,25 +173,25 @@ contains
     ! vectors; lock rows are 1. Twice the longest such distance bounds every entry.
     gear%row_bound = 2.0_wp*max(1.0_wp, norm2(geom%e_loc), norm2(geom%f_loc), geom%L0, geom%Lb0, geom%Lc0)
     gear%len0 = [geom%L0, geom%Lb0, geom%Lc0]
-    gear%q = 0.0_wp
-    gear%q(idx_len) = gear%len0
-    gear%qd = 0.0_wp
-    gear%qdd = 0.0_wp
-    gear%locked = .true.
-    gear%phq_ok = .false.
-    gear%rigid = .false.          ! entered by gear_integrate once all struts are locked
-    gear%rigid_cache = .false.
-    gear%dir = 0
-    gear%s_lock = 0.0_wp
-    gear%s_hismin = 0.0_wp
-    gear%s_hismax = 0.0_wp
-    gear%axial = 0.0_wp
-    gear%f_body = 0.0_wp
-    gear%m_body = 0.0_wp
-    gear%work_crush = 0.0_wp
-    gear%max_violation = 0.0_wp
-    gear%max_drift = 0.0_wp
-    gear%n_correction_iter = 0
+    gear%st%q = 0.0_wp
+    gear%st%q(idx_len) = gear%len0
+    gear%st%qd = 0.0_wp
+    gear%st%qdd = 0.0_wp
+    gear%st%locked = .true.
+    gear%st%phq_ok = .false.
+    gear%st%rigid = .false.          ! entered by gear_integrate once all struts are locked
+    gear%st%rigid_cache = .false.
+    gear%st%dir = 0
+    gear%st%s_lock = 0.0_wp
+    gear%st%s_hismin = 0.0_wp
+    gear%st%s_hismax = 0.0_wp
+    gear%st%axial = 0.0_wp
+    gear%st%f_body = 0.0_wp
+    gear%st%m_body = 0.0_wp
+    gear%st%work_crush = 0.0_wp
+    gear%st%max_violation = 0.0_wp
+    gear%st%max_drift = 0.0_wp
+    gear%st%n_correction_iter = 0
     do k = 1, 3
       if (.not. allocated(gear%buffer(k)%law)) then
         stat = 1
@@ -233,77 +206,15 @@ contains
     end do
   end subroutine gear_init
 
-  !> Snapshot of the gear's evolving state (gear_state_t).
-  pure subroutine gear_save_state(gear, gs)
-    type(gear_t), intent(in) :: gear          !! gear
-    type(gear_state_t), intent(out) :: gs     !! its evolving state
-    gs%q = gear%q
-    gs%qd = gear%qd
-    gs%qdd = gear%qdd
-    gs%locked = gear%locked
-    gs%dir = gear%dir
-    gs%s_lock = gear%s_lock
-    gs%s_hismin = gear%s_hismin
-    gs%s_hismax = gear%s_hismax
-    gs%axial = gear%axial
-    gs%f_body = gear%f_body
-    gs%m_body = gear%m_body
-    gs%work_crush = gear%work_crush
-    gs%max_violation = gear%max_violation
-    gs%max_drift = gear%max_drift
-    gs%n_correction_iter = gear%n_correction_iter
-    gs%tube_bound = gear%tube_bound
-    gs%rigid = gear%rigid
-    gs%rigid_cache = gear%rigid_cache
-    gs%sk_c = gear%sk_c
-    gs%mdiag_c = gear%mdiag_c
-    gs%a_c = gear%a_c
-    gs%chol_c = gear%chol_c
-    gs%phq_ok = gear%phq_ok
-    gs%phq = gear%phq
-    gs%phq_q = gear%phq_q
-  end subroutine gear_save_state
-
-  !> Puts a snapshot back: the gear continues exactly as from the moment it was taken.
-  pure subroutine gear_restore_state(gear, gs)
-    type(gear_t), intent(inout) :: gear       !! gear
-    type(gear_state_t), intent(in) :: gs      !! snapshot from gear_save_state
-    gear%q = gs%q
-    gear%qd = gs%qd
-    gear%qdd = gs%qdd
-    gear%locked = gs%locked
-    gear%dir = gs%dir
-    gear%s_lock = gs%s_lock
-    gear%s_hismin = gs%s_hismin
-    gear%s_hismax = gs%s_hismax
-    gear%axial = gs%axial
-    gear%f_body = gs%f_body
-    gear%m_body = gs%m_body
-    gear%work_crush = gs%work_crush
-    gear%max_violation = gs%max_violation
-    gear%max_drift = gs%max_drift
-    gear%n_correction_iter = gs%n_correction_iter
-    gear%tube_bound = gs%tube_bound
-    gear%rigid = gs%rigid
-    gear%rigid_cache = gs%rigid_cache
-    gear%sk_c = gs%sk_c
-    gear%mdiag_c = gs%mdiag_c
-    gear%a_c = gs%a_c
-    gear%chol_c = gs%chol_c
-    gear%phq_ok = gs%phq_ok
-    gear%phq = gs%phq
-    gear%phq_q = gs%phq_q
-  end subroutine gear_restore_state
-
   !> Footpad position and velocity in the gear frame.
   pure subroutine gear_footpad(gear, pos, vel)
     type(gear_t), intent(in) :: gear     !! gear
     real(wp), intent(out) :: pos(3)      !! footpad joint position, gear frame [m]
     real(wp), intent(out) :: vel(3)      !! its velocity relative to the body, gear frame [m/s]
     real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3)
-    call strut_axis_derivs(gear%geom%R0p, gear%q(2), gear%q(3), u, du1, du2, d11, d12, d22)
-    pos = gear%geom%a + gear%q(1)*u
-    vel = gear%qd(1)*u + gear%q(1)*(du1*gear%qd(2) + du2*gear%qd(3))
+    call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
+    pos = gear%geom%a + gear%st%q(1)*u
+    vel = gear%st%qd(1)*u + gear%st%q(1)*(du1*gear%st%qd(2) + du2*gear%st%qd(3))
   end subroutine gear_footpad
 
   !> Upper joint, axis and axis partials of each strut at q (computed once per use).
@@ -412,7 +323,7 @@ contains
   pure function gear_relative_kinetic_energy(gear) result(t)
     type(gear_t), intent(in) :: gear   !! gear
     real(wp) :: t                      !! kinetic energy relative to the body [J]
-    t = 0.5_wp*sum(gear_mass_matrix(gear, gear%q)*gear%qd**2)
+    t = 0.5_wp*sum(gear_mass_matrix(gear, gear%st%q)*gear%st%qd**2)
   end function gear_relative_kinetic_energy
 
   !> Stroke and stroke rate of each strut (Table 3 sense).
@@ -467,41 +378,41 @@ contains
     if (gear%tube%on) call update_tube_bound(gear)
     q_alp = 0.0_wp
     stop_hit = .false.
-    if (gear%rigid .and. all(gear%locked)) then
+    if (gear%st%rigid .and. all(gear%st%locked)) then
       call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg, alpha)
       if (stat /= 0 .or. done) return
     end if
-    call strut_kinematics(gear, gear%q, sk)
-    mdiag = gear_mass_matrix(gear, gear%q)
-    call generalized_forces(gear, gear%q, gear%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
-    if (present(alpha)) q_alp = alpha_forces(gear, gear%q, sk, alpha)
-    if (gear%phq_ok .and. maxval(abs(gear%q - gear%phq_q)) <= 0.0_wp) then
-      phq = gear%phq
+    call strut_kinematics(gear, gear%st%q, sk)
+    mdiag = gear_mass_matrix(gear, gear%st%q)
+    call generalized_forces(gear, gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
+    if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
+      phq = gear%st%phq
     else
-      phq = gear_constraint_jacobian(gear%geom, gear%q)
+      phq = gear_constraint_jacobian(gear%geom, gear%st%q)
     end if
-    gam = gear_constraint_gamma(gear%geom, gear%q, gear%qd)
-    call strokes(gear, gear%q, gear%qd, s, sd)
+    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd)
+    call strokes(gear, gear%st%q, gear%st%qd, s, sd)
     do k = 1, 3
-      call gear%buffer(k)%law%resistance(s(k), sd(k), gear%s_hismin(k), gear%s_hismax(k), fpos(k), fneg(k))
+      call gear%buffer(k)%law%resistance(s(k), sd(k), gear%st%s_hismin(k), gear%st%s_hismax(k), fpos(k), fneg(k))
     end do
-    if (gear%tube%on) call add_tube_bound(gear%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
+    if (gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
     ! Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
     ! into a rigid stop is locked (plastic impact on the stop).
     do k = 1, 3
-      if (.not. gear%locked(k)) then
-        if (sd(k) > 0.0_wp) gear%dir(k) = 1
-        if (sd(k) < 0.0_wp) gear%dir(k) = -1
-        if (gear%dir(k) > 0) then
-          gear%axial(k) = -gear%sigma(k)*fpos(k)
-          if (fpos(k) >= rigid_force) gear%locked(k) = .true.
+      if (.not. gear%st%locked(k)) then
+        if (sd(k) > 0.0_wp) gear%st%dir(k) = 1
+        if (sd(k) < 0.0_wp) gear%st%dir(k) = -1
+        if (gear%st%dir(k) > 0) then
+          gear%st%axial(k) = -gear%sigma(k)*fpos(k)
+          if (fpos(k) >= rigid_force) gear%st%locked(k) = .true.
           if (fpos(k) >= rigid_force) stop_hit(k) = .true.
         else
-          gear%axial(k) = gear%sigma(k)*fneg(k)
-          if (fneg(k) >= rigid_force) gear%locked(k) = .true.
+          gear%st%axial(k) = gear%sigma(k)*fneg(k)
+          if (fneg(k) >= rigid_force) gear%st%locked(k) = .true.
           if (fneg(k) >= rigid_force) stop_hit(k) = .true.
         end if
-        if (gear%locked(k)) gear%s_lock(k) = s(k)
+        if (gear%st%locked(k)) gear%st%s_lock(k) = s(k)
       end if
     end do
 
@@ -515,7 +426,7 @@ contains
       b(1:n_phi) = gam
       row_of = 0
       do k = 1, 3
-        if (gear%locked(k)) then
+        if (gear%st%locked(k)) then
           nrow = nrow + 1
           a(nrow, :) = 0.0_wp
           a(nrow, idx_len(k)) = 1.0_wp
@@ -523,14 +434,14 @@ contains
           ! Velocity-level lock: stop at the end of the step. A strut that has just run into a
           ! rigid stop keeps its speed through the step instead (b = 0): stopping it is a plastic
           ! impact, done by the system velocity projection after the step, which books its loss.
-          if (present(dt) .and. .not. stop_hit(k)) b(nrow) = -gear%qd(idx_len(k))/dt
+          if (present(dt) .and. .not. stop_hit(k)) b(nrow) = -gear%st%qd(idx_len(k))/dt
           row_of(k) = nrow
         else
-          q_buf(idx_len(k)) = gear%axial(k)
+          q_buf(idx_len(k)) = gear%st%axial(k)
         end if
       end do
       q_tot = q_ine + q_grv + q_ext + q_buf + q_alp
-      call solve_reduced(nrow, a, b, mdiag, q_tot, gear%qdd, lam, stat, errmsg)
+      call solve_reduced(nrow, a, b, mdiag, q_tot, gear%st%qdd, lam, stat, errmsg)
       if (stat /= 0) return
       ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
       changed = .false.
@@ -538,11 +449,11 @@ contains
         ! A crushing strut (nonzero bound in its direction of motion) that would reverse within
         ! the step is locked for the step, to be checked against its bounds below.
         do k = 1, 3
-          if (gear%locked(k) .or. released(k)) cycle
-          if (gear%dir(k) > 0 .and. fpos(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%qdd(idx_len(k))*dt <= 0.0_wp &
-              .or. gear%dir(k) < 0 .and. fneg(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%qdd(idx_len(k))*dt >= 0.0_wp) then
-            gear%locked(k) = .true.
-            gear%s_lock(k) = s(k)
+          if (gear%st%locked(k) .or. released(k)) cycle
+          if (gear%st%dir(k) > 0 .and. fpos(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%st%qdd(idx_len(k))*dt <= 0.0_wp &
+              .or. gear%st%dir(k) < 0 .and. fneg(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%st%qdd(idx_len(k))*dt >= 0.0_wp) then
+            gear%st%locked(k) = .true.
+            gear%st%s_lock(k) = s(k)
             tried(k) = .true.
             changed = .true.
           end if
@@ -550,23 +461,23 @@ contains
         if (changed) cycle
       end if
       do k = 1, 3
-        if (.not. gear%locked(k)) cycle
-        gear%axial(k) = -lam(row_of(k))
+        if (.not. gear%st%locked(k)) cycle
+        gear%st%axial(k) = -lam(row_of(k))
         ! Generalized force of the lock on the stroke s is sigma*axial: negative when it holds the
         ! strut against motion toward +s (bounded by f_pos), positive against -s (bounded by f_neg).
-        demand = gear%sigma(k)*gear%axial(k)
+        demand = gear%sigma(k)*gear%st%axial(k)
         if (-demand > fpos(k)) then
-          gear%locked(k) = .false.
-          gear%dir(k) = 1
-          gear%axial(k) = -gear%sigma(k)*fpos(k)
+          gear%st%locked(k) = .false.
+          gear%st%dir(k) = 1
+          gear%st%axial(k) = -gear%sigma(k)*fpos(k)
           changed = .true.
         else if (demand > fneg(k)) then
-          gear%locked(k) = .false.
-          gear%dir(k) = -1
-          gear%axial(k) = gear%sigma(k)*fneg(k)
+          gear%st%locked(k) = .false.
+          gear%st%dir(k) = -1
+          gear%st%axial(k) = gear%sigma(k)*fneg(k)
           changed = .true.
         end if
-        if (.not. gear%locked(k) .and. tried(k)) released(k) = .true.
+        if (.not. gear%st%locked(k) .and. tried(k)) released(k) = .true.
       end do
       if (.not. changed) exit
     end do
@@ -575,8 +486,8 @@ contains
     ! included) receives the ground force minus the rate of the legs' relative momentum; in the
     ! massless-leg limit this is eq. 11's J^-T N applied at the footpad.
     call relative_inertia(gear, sk, f_rel, m_rel)
-    gear%f_body = f_foot - f_rel
-    gear%m_body = cross3(gear%geom%a + gear%q(1)*sk(1)%u, f_foot) - m_rel
+    gear%st%f_body = f_foot - f_rel
+    gear%st%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
   end subroutine gear_dynamics
 
   !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
@@ -584,8 +495,8 @@ contains
   pure subroutine update_tube_bound(gear)
     type(gear_t), intent(inout) :: gear    !! gear; tube_bound is updated
     type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%q, sk)
-    gear%tube_bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%axial(2), gear%axial(3))
+    call strut_kinematics(gear, gear%st%q, sk)
+    gear%st%tube_bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
   end subroutine update_tube_bound
 
   !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
@@ -605,48 +516,48 @@ contains
     stat = 0
     done = .false.
     nrow = n_phi + 3
-    if (.not. gear%rigid_cache) then
-      call strut_kinematics(gear, gear%q, gear%sk_c)
-      gear%mdiag_c = gear_mass_matrix(gear, gear%q)
-      gear%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, gear%q)
+    if (.not. gear%st%rigid_cache) then
+      call strut_kinematics(gear, gear%st%q, gear%st%sk_c)
+      gear%st%mdiag_c = gear_mass_matrix(gear, gear%st%q)
+      gear%st%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, gear%st%q)
       do k = 1, 3
-        gear%a_c(n_phi + k, :) = 0.0_wp
-        gear%a_c(n_phi + k, idx_len(k)) = 1.0_wp
+        gear%st%a_c(n_phi + k, :) = 0.0_wp
+        gear%st%a_c(n_phi + k, idx_len(k)) = 1.0_wp
       end do
       do j = 1, nrow
         do i = 1, j
-          gear%chol_c(i, j) = sum(gear%a_c(i, :)*gear%a_c(j, :)/gear%mdiag_c)
+          gear%st%chol_c(i, j) = sum(gear%st%a_c(i, :)*gear%st%a_c(j, :)/gear%st%mdiag_c)
         end do
       end do
-      call factor_spd(nrow, gear%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
+      call factor_spd(nrow, gear%st%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
       if (stat /= 0) return
-      gear%rigid_cache = .true.
+      gear%st%rigid_cache = .true.
     end if
     zero = 0.0_wp
-    call generalized_forces(gear, gear%q, zero, gear%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
+    call generalized_forces(gear, gear%st%q, zero, gear%st%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
     qf = q_grv + q_ext
-    if (present(alpha)) qf = qf + alpha_forces(gear, gear%q, gear%sk_c, alpha)
-    qf = qf/gear%mdiag_c
+    if (present(alpha)) qf = qf + alpha_forces(gear, gear%st%q, gear%st%sk_c, alpha)
+    qf = qf/gear%st%mdiag_c
     do i = 1, nrow
-      lam(i) = dot_product(gear%a_c(i, :), qf)
+      lam(i) = dot_product(gear%st%a_c(i, :), qf)
     end do
-    call solve_factored_spd(nrow, gear%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
+    call solve_factored_spd(nrow, gear%st%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
     if (stat /= 0) return
-    call strokes(gear, gear%q, zero, s, sd)
+    call strokes(gear, gear%st%q, zero, s, sd)
     do k = 1, 3
-      gear%axial(k) = -lam(n_phi + k)
-      call gear%buffer(k)%law%resistance(s(k), 0.0_wp, gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
-      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%tube_bound, fpos, fneg)   ! tube friction (eq. 24)
-      demand = gear%sigma(k)*gear%axial(k)
+      gear%st%axial(k) = -lam(n_phi + k)
+      call gear%buffer(k)%law%resistance(s(k), 0.0_wp, gear%st%s_hismin(k), gear%st%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos, fneg)   ! tube friction (eq. 24)
+      demand = gear%sigma(k)*gear%st%axial(k)
       if (-demand > fpos .or. demand > fneg) then
-        gear%rigid = .false.
-        gear%rigid_cache = .false.
+        gear%st%rigid = .false.
+        gear%st%rigid_cache = .false.
         return
       end if
     end do
-    gear%qdd = 0.0_wp
-    gear%f_body = f_foot
-    gear%m_body = cross3(gear%geom%a + gear%q(1)*gear%sk_c(1)%u, f_foot)
+    gear%st%qdd = 0.0_wp
+    gear%st%f_body = f_foot
+    gear%st%m_body = cross3(gear%geom%a + gear%st%q(1)*gear%st%sk_c(1)%u, f_foot)
     done = .true.
   end subroutine rigid_dynamics
 
@@ -660,13 +571,13 @@ contains
     real(wp), intent(out) :: f_rel(3)   !! relative momentum rate, gear frame [N]
     real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
     type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%q, sk)
+    call strut_kinematics(gear, gear%st%q, sk)
     call relative_inertia(gear, sk, f_rel, m_rel)
   end subroutine gear_relative_inertia
 
   pure subroutine relative_inertia(gear, sk, f_rel, m_rel)
     type(gear_t), intent(in) :: gear       !! gear with qdd set
-    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%q
+    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
     real(wp), intent(out) :: f_rel(3)      !! relative momentum rate, gear frame [N]
     real(wp), intent(out) :: m_rel(3)      !! relative angular momentum rate about O_L [N m]
     integer :: k, i0
@@ -675,10 +586,10 @@ contains
     m_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%q(i0 + 1); ld = gear%qd(i0 + 1); ldd = gear%qdd(i0 + 1)
-      t1d = gear%qd(i0 + 2); t2d = gear%qd(i0 + 3)
+      len = gear%st%q(i0 + 1); ld = gear%st%qd(i0 + 1); ldd = gear%st%qdd(i0 + 1)
+      t1d = gear%st%qd(i0 + 2); t2d = gear%st%qd(i0 + 3)
       ud = sk(k)%u1*t1d + sk(k)%u2*t2d
-      udd = sk(k)%u1*gear%qdd(i0 + 2) + sk(k)%u2*gear%qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
+      udd = sk(k)%u1*gear%st%qdd(i0 + 2) + sk(k)%u2*gear%st%qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
             + 2.0_wp*sk(k)%u12*t1d*t2d + sk(k)%u22*t2d*t2d
       s1 = gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       sm = gear%s_0(k) + s1
@@ -698,13 +609,13 @@ contains
     real(wp), intent(out) :: h_rel(3)     !! relative angular momentum about O_L, gear axes [kg m^2/s]
     real(wp), intent(out) :: t_rel        !! relative kinetic energy 1/2 qd^T M qd [J]
     type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%q, sk)
-    call momenta(gear, sk, gear%qd, p_rel, h_rel, t_rel)
+    call strut_kinematics(gear, gear%st%q, sk)
+    call momenta(gear, sk, gear%st%qd, p_rel, h_rel, t_rel)
   end subroutine gear_relative_momenta
 
   pure subroutine momenta(gear, sk, qd, p_rel, h_rel, t_rel)
-    type(gear_t), intent(in) :: gear       !! gear (configuration gear%q)
-    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%q
+    type(gear_t), intent(in) :: gear       !! gear (configuration gear%st%q)
+    type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
     real(wp), intent(in) :: qd(n_q)        !! generalized velocities [m/s, rad/s]
     real(wp), intent(out) :: p_rel(3)      !! sum m v_rel, gear frame [kg m/s]
     real(wp), intent(out) :: h_rel(3)      !! relative angular momentum about O_L [kg m^2/s]
@@ -716,14 +627,14 @@ contains
     t_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%q(i0 + 1)
+      len = gear%st%q(i0 + 1)
       ud = sk(k)%u1*qd(i0 + 2) + sk(k)%u2*qd(i0 + 3)
       sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
       p = gear%m_s(k)*qd(i0 + 1)*sk(k)%u + sm*ud
       p_rel = p_rel + p
       h_rel = h_rel + cross3(sk(k)%p, p) + jr*cross3(sk(k)%u, ud)
-      c = cos(gear%q(i0 + 3))
+      c = cos(gear%st%q(i0 + 3))
       t_rel = t_rel + 0.5_wp*(gear%m_s(k)*qd(i0 + 1)**2 + jr*(c*c*qd(i0 + 2)**2 + qd(i0 + 3)**2))
     end do
   end subroutine momenta
@@ -737,15 +648,15 @@ contains
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
     real(wp) :: ud(3), len, sm
-    call strut_kinematics(gear, gear%q, sk)
+    call strut_kinematics(gear, gear%st%q, sk)
     p_rel = 0.0_wp
     first_moment = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%q(i0 + 1)
-      ud = sk(k)%u1*gear%qd(i0 + 2) + sk(k)%u2*gear%qd(i0 + 3)
+      len = gear%st%q(i0 + 1)
+      ud = sk(k)%u1*gear%st%qd(i0 + 2) + sk(k)%u2*gear%st%qd(i0 + 3)
       sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      p_rel = p_rel + gear%m_s(k)*gear%qd(i0 + 1)*sk(k)%u + sm*ud
+      p_rel = p_rel + gear%m_s(k)*gear%st%qd(i0 + 1)*sk(k)%u + sm*ud
       first_moment = first_moment + gear%m_tot(k)*sk(k)%p + sm*sk(k)%u
     end do
     leg_mass = sum(gear%m_tot)
@@ -834,38 +745,38 @@ contains
     character(len=msg_len) :: buf
 
     stat = 0
-    if (gear%rigid .and. all(gear%locked)) return   ! no degree of freedom: nothing moves
-    gear%rigid = .false.
-    call strokes(gear, gear%q, gear%qd, s0, sd0)
-    qd_new = gear%qd + gear%qdd*dt
-    call strokes(gear, gear%q, qd_new, s1, sd1)
+    if (gear%st%rigid .and. all(gear%st%locked)) return   ! no degree of freedom: nothing moves
+    gear%st%rigid = .false.
+    call strokes(gear, gear%st%q, gear%st%qd, s0, sd0)
+    qd_new = gear%st%qd + gear%st%qdd*dt
+    call strokes(gear, gear%st%q, qd_new, s1, sd1)
     ! A crushing strut whose sliding speed reaches zero locks (it cannot be driven back by its own
     ! buffer force); a free strut (bound 0 in its direction of motion) keeps moving.
     do k = 1, 3
-      if (gear%locked(k)) cycle
-      call gear%buffer(k)%law%resistance(s0(k), sd0(k), gear%s_hismin(k), gear%s_hismax(k), fpos, fneg)
-      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%tube_bound, fpos, fneg)   ! tube friction sticks too
-      if (gear%dir(k) > 0 .and. sd1(k) <= 0.0_wp .and. fpos > 0.0_wp) gear%locked(k) = .true.
-      if (gear%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%locked(k) = .true.
-      if (gear%locked(k)) gear%s_lock(k) = s0(k)
+      if (gear%st%locked(k)) cycle
+      call gear%buffer(k)%law%resistance(s0(k), sd0(k), gear%st%s_hismin(k), gear%st%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos, fneg)   ! tube friction sticks too
+      if (gear%st%dir(k) > 0 .and. sd1(k) <= 0.0_wp .and. fpos > 0.0_wp) gear%st%locked(k) = .true.
+      if (gear%st%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%st%locked(k) = .true.
+      if (gear%st%locked(k)) gear%st%s_lock(k) = s0(k)
     end do
-    gear%qd = qd_new
+    gear%st%qd = qd_new
     ! Crush work during this step: the buffer force times the stroke increment, for sliding struts.
-    gear%q = gear%q + gear%qd*dt
-    gear%phq_ok = .false.
-    call strokes(gear, gear%q, gear%qd, s1, sd1)
+    gear%st%q = gear%st%q + gear%st%qd*dt
+    gear%st%phq_ok = .false.
+    call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
     do k = 1, 3
-      if (.not. gear%locked(k)) then
-        gear%work_crush(k) = gear%work_crush(k) + gear%sigma(k)*gear%axial(k)*(s0(k) - s1(k))
+      if (.not. gear%st%locked(k)) then
+        gear%st%work_crush(k) = gear%st%work_crush(k) + gear%sigma(k)*gear%st%axial(k)*(s0(k) - s1(k))
       end if
     end do
 
     ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A
     ! are built only when a correction is needed (a locked gear at rest needs none).
-    nrow = n_phi + count(gear%locked)
-    call position_residual(gear, gear%q, nrow, r)
+    nrow = n_phi + count(gear%st%locked)
+    call position_residual(gear, gear%st%q, nrow, r)
     viol = maxval(abs(r(1:n_phi)))
-    gear%max_drift = max(gear%max_drift, viol)
+    gear%st%max_drift = max(gear%st%max_drift, viol)
     if (viol > max_drift) then
       stat = 2
       write (buf, '(a,es10.3,a,es10.3,a)') 'constraint drift ', viol, ' m in one step exceeds ', max_drift, &
@@ -875,11 +786,11 @@ contains
     end if
     do iter = 1, max_iter
       if (maxval(abs(r(1:nrow))) <= tol) exit
-      call build_rows(gear, gear%q, a, nrow)
-      call min_norm_correction(nrow, a, r, gear%q, stat, errmsg)
+      call build_rows(gear, gear%st%q, a, nrow)
+      call min_norm_correction(nrow, a, r, gear%st%q, stat, errmsg)
       if (stat /= 0) return
-      call position_residual(gear, gear%q, nrow, r)
-      gear%n_correction_iter = max(gear%n_correction_iter, iter)
+      call position_residual(gear, gear%st%q, nrow, r)
+      gear%st%n_correction_iter = max(gear%st%n_correction_iter, iter)
     end do
     viol = maxval(abs(r(1:nrow)))
     if (viol > tol) then
@@ -889,19 +800,19 @@ contains
       errmsg = buf
       return
     end if
-    gear%max_violation = max(gear%max_violation, viol)
+    gear%st%max_violation = max(gear%st%max_violation, viol)
     ! Crush history (positions only).
-    call strokes(gear, gear%q, gear%qd, s1, sd1)
-    gear%s_hismax = max(gear%s_hismax, s1)
-    gear%s_hismin = min(gear%s_hismin, s1)
+    call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
+    gear%st%s_hismax = max(gear%st%s_hismax, s1)
+    gear%st%s_hismin = min(gear%st%s_hismin, s1)
 
     if (present(velocity)) then
       if (velocity) then
         ! Gear alone, body fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd (kinetic metric).
-        call build_rows(gear, gear%q, a, nrow)
-        call row_products(nrow, a, gear%qd, r)
+        call build_rows(gear, gear%st%q, a, nrow)
+        call row_products(nrow, a, gear%st%qd, r)
         if (maxval(abs(r(1:nrow))) > 0.0_wp) then
-          mdiag = gear_mass_matrix(gear, gear%q)
+          mdiag = gear_mass_matrix(gear, gear%st%q)
           do j = 1, nrow
             do i = 1, j
               w(i, j) = sum(a(i, :)*a(j, :)/mdiag)
@@ -911,7 +822,7 @@ contains
           call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
           if (stat /= 0) return
           do i = 1, nrow
-            gear%qd = gear%qd - lam(i)*a(i, :)/mdiag
+            gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
           end do
         end if
         call gear_settle(gear)
@@ -923,11 +834,11 @@ contains
   !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.
   pure subroutine gear_settle(gear)
     type(gear_t), intent(inout) :: gear    !! gear after the velocity projection
-    if (all(gear%locked) .and. .not. gear%rigid) then
-      gear%qd = 0.0_wp
-      gear%qdd = 0.0_wp
-      gear%rigid = .true.
-      gear%rigid_cache = .false.
+    if (all(gear%st%locked) .and. .not. gear%st%rigid) then
+      gear%st%qd = 0.0_wp
+      gear%st%qdd = 0.0_wp
+      gear%st%rigid = .true.
+      gear%st%rigid_cache = .false.
     end if
   end subroutine gear_settle
 
@@ -937,7 +848,7 @@ contains
     type(gear_t), intent(in) :: gear           !! gear
     real(wp), intent(out) :: a(max_rows, n_q)  !! rows [m/rad, -]
     integer, intent(out) :: nrow               !! number of rows [-]
-    call build_rows(gear, gear%q, a, nrow)
+    call build_rows(gear, gear%st%q, a, nrow)
   end subroutine gear_velocity_rows
 
   !> Linear maps from the generalized velocities to the legs' relative linear momentum and their
@@ -950,10 +861,10 @@ contains
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
     real(wp) :: len, sm, jr
-    call strut_kinematics(gear, gear%q, sk)
+    call strut_kinematics(gear, gear%st%q, sk)
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%q(i0 + 1)
+      len = gear%st%q(i0 + 1)
       sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
       pm(:, i0 + 1) = gear%m_s(k)*sk(k)%u
@@ -975,7 +886,7 @@ contains
     a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv)
     nrow = n_phi
     do k = 1, 3
-      if (gear%locked(k)) then
+      if (gear%st%locked(k)) then
         nrow = nrow + 1
         a(nrow, :) = 0.0_wp
         a(nrow, idx_len(k)) = gear%sigma(k)
@@ -992,12 +903,12 @@ contains
     integer :: k, row
     real(wp) :: s(3), sd(3)
     r(1:n_phi) = gear_constraints(gear%geom, qv)
-    call strokes(gear, qv, gear%qd, s, sd)
+    call strokes(gear, qv, gear%st%qd, s, sd)
     row = n_phi
     do k = 1, 3
-      if (gear%locked(k)) then
+      if (gear%st%locked(k)) then
         row = row + 1
-        r(row) = s(k) - gear%s_lock(k)
+        r(row) = s(k) - gear%st%s_lock(k)
       end if
     end do
     if (row /= nrow) r(row + 1:) = 0.0_wp

@@ -88,17 +88,17 @@ contains
     nr = 0
     resid = 0.0_wp
     do i = 1, ng
-      if (gear(i)%rigid) cycle
+      if (gear(i)%st%rigid) cycle
       n_act = n_act + 1
       act(n_act) = i
       call gear_velocity_rows(gear(i), a(:, :, n_act), nrow(n_act))
       ! Phi_q at this configuration is what the next step's DAE needs too: cache it.
-      gear(i)%phq = a(1:n_phi, :, n_act)
-      gear(i)%phq_q = gear(i)%q
-      gear(i)%phq_ok = .true.
+      gear(i)%st%phq = a(1:n_phi, :, n_act)
+      gear(i)%st%phq_q = gear(i)%st%q
+      gear(i)%st%phq_ok = .true.
       off(n_act) = nr
       do k = 1, nrow(n_act)
-        g(nr + k) = dot_product(a(k, :, n_act), gear(i)%qd)
+        g(nr + k) = dot_product(a(k, :, n_act), gear(i)%st%qd)
       end do
       resid = max(resid, maxval(abs(g(nr + 1:nr + nrow(n_act)))))
       nr = nr + nrow(n_act)
@@ -118,7 +118,7 @@ contains
     rr = 0.0_wp
     do j = 1, n_act
       i = act(j)
-      minv(:, j) = 1.0_wp/gear_mass_matrix(gear(i), gear(i)%q)
+      minv(:, j) = 1.0_wp/gear_mass_matrix(gear(i), gear(i)%st%q)
       c(:, :, j) = coupling_matrix(body, gear(i))
       do jj = 1, 6
         do ii = 1, jj
@@ -180,7 +180,7 @@ contains
       i = act(j)
       dq = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), :, j)) + matmul(y, c(:, :, j))
       dq = -minv(:, j)*dq
-      gear(i)%qd = gear(i)%qd + dq
+      gear(i)%st%qd = gear(i)%st%qd + dq
       db = db + matmul(c(:, :, j), dq)
     end do
     body%v = body%v - db(1:3)/body%mass

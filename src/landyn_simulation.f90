@@ -15,7 +15,7 @@ module landyn_simulation
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3, mtv3
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
-  use landyn_gear, only: gear_t, gear_state_t, gear_save_state, gear_restore_state, strut_mass_t, gear_init, &
+  use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, &
                          gear_dynamics, gear_integrate, gear_footpad, &
                          gear_leg_momentum, gear_relative_momenta, gear_settle
   use landyn_impact, only: system_velocity_projection
@@ -418,8 +418,8 @@ contains
           done = .true.
           return
         end if
-        gf(:, i) = mv3(model%gear(i)%rot, model%gear(i)%f_body)
-        gm(:, i) = mv3(model%gear(i)%rot, model%gear(i)%m_body)
+        gf(:, i) = mv3(model%gear(i)%rot, model%gear(i)%st%f_body)
+        gm(:, i) = mv3(model%gear(i)%rot, model%gear(i)%st%m_body)
       end do
       fb_l = symmetric_sum(gf, ng)
       force = force + mv3(r, fb_l)
@@ -441,8 +441,8 @@ contains
       res%acc_overload = max(res%acc_overload, norm2(ovl))
       do i = 1, ng
         res%acc_normal_force(i) = max(res%acc_normal_force(i), fn(i))
-        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(model%gear(i)%axial))
-        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%axial))
+        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(model%gear(i)%st%axial))
+        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%st%axial))
       end do
 
       ! ---- output sample (state at t_n with the forces at t_n)
@@ -534,7 +534,7 @@ contains
         if ((n + 1) >= sim%loop%next_progress*nstep/20) then
           write (progress_unit, '(a,f8.4,a,f8.4,a,i3,a,f9.2,a)') 'landyn: t = ', t + dt, ' s of ', &
             inp%simulation%t_end, ' s (', 5*sim%loop%next_progress, ' %), max primary stroke ', &
-            1000.0_wp*maxval([(model%gear(i)%s_hismax(1), i=1, ng)]), ' mm'
+            1000.0_wp*maxval([(model%gear(i)%st%s_hismax(1), i=1, ng)]), ' mm'
           flush (progress_unit)
           sim%loop%next_progress = sim%loop%next_progress + 1
         end if
@@ -552,7 +552,7 @@ contains
     integer :: i
     snap%body = sim%model%body
     do i = 1, sim%model%n_gears
-      call gear_save_state(sim%model%gear(i), snap%gear(i))
+      snap%gear(i) = sim%model%gear(i)%st
     end do
     snap%footpad = sim%model%footpad
     snap%loop = sim%loop
@@ -565,7 +565,7 @@ contains
     integer :: i
     sim%model%body = snap%body
     do i = 1, sim%model%n_gears
-      call gear_restore_state(sim%model%gear(i), snap%gear(i))
+      sim%model%gear(i)%st = snap%gear(i)
     end do
     sim%model%footpad = snap%footpad
     sim%loop = snap%loop
@@ -602,10 +602,10 @@ contains
     integer, intent(inout) :: switches(3)     !! mode changes so far [-]
     integer :: k, m
     do k = 1, 3
-      if (gear%locked(k)) then
+      if (gear%st%locked(k)) then
         m = 0
-      else if (abs(gear%axial(k)) > tiny(1.0_wp)) then
-        m = sign(1, gear%dir(k))
+      else if (abs(gear%st%axial(k)) > tiny(1.0_wp)) then
+        m = sign(1, gear%st%dir(k))
       else
         m = 2
       end if
@@ -631,15 +631,15 @@ contains
     model%body%v = v + 0.5_wp*dt*model%body%acc
     model%body%omega = w + 0.5_wp*dt*model%body%alpha
     do i = 1, model%n_gears
-      qd(:, i) = model%gear(i)%qd
-      model%gear(i)%qd = qd(:, i) + 0.5_wp*dt*model%gear(i)%qdd
+      qd(:, i) = model%gear(i)%st%qd
+      model%gear(i)%st%qd = qd(:, i) + 0.5_wp*dt*model%gear(i)%st%qdd
     end do
     ke_body = body_kinetic_energy(model%body)
     ke_legs = leg_energy(model, gravity)
     model%body%v = v
     model%body%omega = w
     do i = 1, model%n_gears
-      model%gear(i)%qd = qd(:, i)
+      model%gear(i)%st%qd = qd(:, i)
     end do
   end subroutine synchronised_energies
 
@@ -680,11 +680,11 @@ contains
     crush = 0.0_wp
     do i = 1, res%n_gears
       associate (g => model%gear(i))
-        res%strut_length(:, i, k) = g%q([1, 4, 7])
-        s = g%sigma*(g%q([1, 4, 7]) - g%len0)
+        res%strut_length(:, i, k) = g%st%q([1, 4, 7])
+        s = g%sigma*(g%st%q([1, 4, 7]) - g%len0)
         res%stroke(:, i, k) = s
-        res%strut_force(:, i, k) = g%axial
-        crush = crush + sum(g%work_crush)
+        res%strut_force(:, i, k) = g%st%axial
+        crush = crush + sum(g%st%work_crush)
       end associate
       res%footpad_position(:, i, k) = xd(:, i)
       res%ground_force(:, i, k) = fground(:, i)
@@ -763,22 +763,22 @@ contains
     res%t_final = t
     do i = 1, res%n_gears
       associate (g => model%gear(i))
-        s = g%sigma*(g%q([1, 4, 7]) - g%len0)
+        s = g%sigma*(g%st%q([1, 4, 7]) - g%len0)
         res%stroke_final(:, i) = s
-        res%crush_pos(:, i) = g%s_hismax
-        res%crush_neg(:, i) = 0.0_wp - g%s_hismin
-        res%crush_net(:, i) = g%s_hismax + g%s_hismin
-        res%crush_work(:, i) = g%work_crush
+        res%crush_pos(:, i) = g%st%s_hismax
+        res%crush_neg(:, i) = 0.0_wp - g%st%s_hismin
+        res%crush_net(:, i) = g%st%s_hismax + g%st%s_hismin
+        res%crush_work(:, i) = g%st%work_crush
         do k = 1, 3
           call g%buffer(k)%law%capacity(cap_pos, cap_neg)
-          mpos = cap_pos - g%s_hismax(k)
+          mpos = cap_pos - g%st%s_hismax(k)
           mneg = huge(1.0_wp)
-          if (cap_neg > 0.0_wp) mneg = cap_neg + g%s_hismin(k)
+          if (cap_neg > 0.0_wp) mneg = cap_neg + g%st%s_hismin(k)
           res%stroke_margin(k, i) = min(mpos, mneg)
           res%bottomed(k, i) = merge(1, 0, res%stroke_margin(k, i) < 0.0_wp)
         end do
-        res%max_violation = max(res%max_violation, g%max_violation)
-        res%max_drift = max(res%max_drift, g%max_drift)
+        res%max_violation = max(res%max_violation, g%st%max_violation)
+        res%max_drift = max(res%max_drift, g%st%max_drift)
       end associate
     end do
     res%final_euler = model%body%euler*rad2deg
