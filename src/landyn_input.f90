@@ -28,7 +28,7 @@ module landyn_input
   use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, is_digit, edit_distance, &
                             fmt_int => int_text, quoted => quote_text
   use landyn_files, only: read_whole_file
-  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
+  use landyn_namelist_text, only: strip_comments, next_group, &
                                   find_item_names, line_of, first_nonblank, one_line => one_line_text, &
                                   strip_commas => separators_to_blanks, remove_blanks, mask_non_ascii, &
                                   bare_name_in_value, numbers_within
@@ -586,7 +586,7 @@ contains
     character(len=:), allocatable :: work, gname
     integer :: seen(n_groups)
     integer, allocatable :: bad(:)
-    integer :: n, p, q, e, ig, qpos, next_p, line, k
+    integer :: p, q, e, ig, qpos, next_p, line, k, s0, s1, g
     logical :: terminated
 
     allocate (character(len=len(text)) :: work)
@@ -602,25 +602,16 @@ contains
                       ' is not ASCII text; decks are ASCII text (UTF-8 only inside quoted strings and ! comments)')
     end do
     seen = 0
-    n = len(work)
     p = 1
-    do while (p <= n)
-      if (is_blank(work(p:p))) then
-        p = p + 1
-        cycle
-      end if
-      if (work(p:p) /= '&') then
-        ! Text outside any group: report the run up to the next '&' once.
-        e = next_ampersand(work, p)
-        call errors%add(loc(deck_name, work, p)//'text outside any namelist group: '''// &
-                        snippet(work(p:e - 1))//''' (groups start with &name and end with /)')
-        p = e
-        cycle
-      end if
+    do
+      call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
+      ! text outside any group: the run up to the next '&', reported once
+      if (s0 > 0) call errors%add(loc(deck_name, work, s0)//'text outside any namelist group: '''// &
+                                  snippet(work(s0:s1))//''' (groups start with &name and end with /)')
+      if (g == 0) exit
+      p = g
       line = line_of(work, p)
-      q = group_name_end(work, p)
       gname = lower(work(p + 1:q - 1))
-      call find_group_end(work, q, e, terminated, next_p)
       if (len(gname) == 0) then
         call errors%add(loc(deck_name, work, p)//"'&' without a group name: "//snippet(work(p:e - 1)))
         p = next_p

@@ -11,6 +11,7 @@ module landyn_namelist_text
   private
 
   public :: strip_comments, next_ampersand, group_name_end, find_group_end, find_item_names, name_start
+  public :: next_group
   public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
   public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word
 
@@ -67,6 +68,45 @@ contains
     end do
     e = len(work) + 1
   end function next_ampersand
+
+  !> The next namelist group of the comment-free text at or after p, for the deck readers (run,
+  !! study and campaign decks). Blanks are skipped; text before the next '&' that belongs to no
+  !! group is returned as work(s0:s1) (s0 = 0 when there is none) for the caller to report. Then
+  !! the group: its '&' at g (g = 0 when the text has ended), its name work(g+1:q-1), its body
+  !! work(q:e-1), terminated as find_group_end says; scanning goes on at next_p.
+  pure subroutine next_group(work, p, s0, s1, g, q, e, terminated, next_p)
+    character(len=*), intent(in) :: work  !! comment-free text [-]
+    integer, intent(in) :: p              !! start position [-]
+    integer, intent(out) :: s0, s1        !! stray text before the group, s0 = 0 if none [-]
+    integer, intent(out) :: g             !! position of the group's '&', 0 at the end [-]
+    integer, intent(out) :: q             !! first position after the group name [-]
+    integer, intent(out) :: e             !! position after the body [-]
+    logical, intent(out) :: terminated    !! the group ends with '/' or '&end' [-]
+    integer, intent(out) :: next_p        !! where scanning continues [-]
+    integer :: k
+    s0 = 0
+    s1 = 0
+    g = 0
+    q = 0
+    e = 0
+    terminated = .false.
+    next_p = len(work) + 1
+    k = p
+    do while (k <= len(work))
+      if (.not. is_blank_char(work(k:k))) exit
+      k = k + 1
+    end do
+    if (k > len(work)) return
+    if (work(k:k) /= '&') then
+      s0 = k
+      k = next_ampersand(work, k)
+      s1 = k - 1
+      if (k > len(work)) return
+    end if
+    g = k
+    q = group_name_end(work, g)
+    call find_group_end(work, q, e, terminated, next_p)
+  end subroutine next_group
 
   !> Position after the group name of the '&' at p: the name is work(p+1:q-1) (empty if none).
   pure function group_name_end(work, p) result(q)

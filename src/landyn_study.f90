@@ -36,7 +36,7 @@ module landyn_study
   use landyn_output, only: write_result_file, iso_timestamp
   use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_files, only: read_whole_file
-  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, line_of, &
+  use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr, rename_file, delete_file
   implicit none
@@ -121,7 +121,7 @@ contains
     namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
       measure_strut, keep_results
     namelist /variant/ label, set
-    integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study
+    integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study, s0, s1, g
     integer, allocatable :: bad(:)
     character(len=msg_len) :: msg
     character(len=:), allocatable :: text, dir, ovr, work, gname, rmsg, buf
@@ -159,21 +159,13 @@ contains
     n_study = 0
     allocate (vs(0), ve(0))
     p = 1
-    do while (p <= len(work))
-      if (index(' '//achar(9)//achar(10)//achar(12), work(p:p)) > 0) then
-        p = p + 1
-        cycle
-      end if
-      if (work(p:p) /= '&') then
-        e = next_ampersand(work, p)
-        call errors%add(path//':'//int_text(line_of(work, p))//': text outside any namelist group: '''// &
-                        short(work(p:e - 1))//''' (groups start with &name and end with /)')
-        p = e
-        cycle
-      end if
-      q = group_name_end(work, p)
+    do
+      call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
+      if (s0 > 0) call errors%add(path//':'//int_text(line_of(work, s0))//': text outside any namelist group: '''// &
+                                  short(work(s0:s1))//''' (groups start with &name and end with /)')
+      if (g == 0) exit
+      p = g
       gname = lower(work(p + 1:q - 1))
-      call find_group_end(work, q, e, terminated, next_p)
       if (.not. terminated .and. (gname == 'study' .or. gname == 'variant')) &
         call errors%add(path//':'//int_text(line_of(work, p))//': &'//gname//": group is not terminated by '/'")
       select case (gname)

@@ -17,7 +17,7 @@ module landyn_campaign_nml
   use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
   use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
-  use landyn_namelist_text, only: strip_comments, next_ampersand, group_name_end, find_group_end, &
+  use landyn_namelist_text, only: strip_comments, next_group, &
                                   find_item_names, line_of, first_nonblank, one_line_text, &
                                   separators_to_blanks, remove_blanks, has_nonfinite_word, numbers_within
   implicit none
@@ -60,7 +60,7 @@ contains
     type(input_errors_t), intent(inout) :: errors               !! problems are appended here [-]
     character(len=:), allocatable :: work
     type(nml_group_t), allocatable :: tmp(:)
-    integer :: n, p, q, e, next_p, ng, qpos
+    integer :: p, q, e, next_p, ng, qpos, s0, s1, g
     logical :: terminated
 
     allocate (character(len=len(text)) :: work)
@@ -72,22 +72,13 @@ contains
     end if
     allocate (groups(0))
     ng = 0
-    n = len(work)
     p = 1
-    do while (p <= n)
-      if (is_blank_char(work(p:p))) then
-        p = p + 1
-        cycle
-      end if
-      if (work(p:p) /= '&') then
-        e = next_ampersand(work, p)
-        call errors%add(deck_name//':'//int_text(line_of(work, p))//': text outside any namelist group: '''// &
-                        snippet(work(p:e - 1))//''' (groups start with &name and end with /)')
-        p = e
-        cycle
-      end if
-      q = group_name_end(work, p)
-      call find_group_end(work, q, e, terminated, next_p)
+    do
+      call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
+      if (s0 > 0) call errors%add(deck_name//':'//int_text(line_of(work, s0))//': text outside any namelist '// &
+                                  "group: '"//snippet(work(s0:s1))//"' (groups start with &name and end with /)")
+      if (g == 0) exit
+      p = g
       allocate (tmp(ng + 1))
       if (ng > 0) tmp(1:ng) = groups
       call move_alloc(tmp, groups)
