@@ -348,42 +348,22 @@ contains
   pure function bare_name_in_value(value) result(name)
     character(len=*), intent(in) :: value   !! text after the item's '=' [-]
     character(len=:), allocatable :: name   !! the bare name, '' if none [-]
-    character(len=1) :: quote
     character(len=:), allocatable :: tok
-    integer :: p, q
+    integer :: p, a, b
     name = ''
-    quote = ' '
     p = 1
-    do while (p <= len(value))
-      if (quote /= ' ') then
-        if (value(p:p) == quote) quote = ' '
-        p = p + 1
-        cycle
-      end if
-      if (value(p:p) == '"' .or. value(p:p) == "'") then
-        quote = value(p:p)
-        p = p + 1
-        cycle
-      end if
-      if (is_blank_char(value(p:p)) .or. value(p:p) == ',' .or. value(p:p) == '*') then
-        p = p + 1
-        cycle
-      end if
-      q = p
-      do while (q <= len(value))
-        if (is_blank_char(value(q:q)) .or. value(q:q) == ',' .or. value(q:q) == '*' .or. &
-            value(q:q) == '"' .or. value(q:q) == "'") exit
-        q = q + 1
-      end do
-      tok = lower_case(value(p:q - 1))
+    do
+      call next_word(value, p, .false., a, b)
+      if (a == 0) return
+      tok = lower_case(value(a:b))
       if (tok(1:1) == '+' .or. tok(1:1) == '-') tok = tok(2:)
       if (len(tok) > 0) then
         if (is_letter(tok(1:1)) .and. .not. value_word(tok)) then
-          name = value(p:q - 1)
+          name = value(a:b)
           return
         end if
       end if
-      p = q
+      p = b + 1
     end do
   contains
     pure logical function value_word(t)
@@ -476,39 +456,66 @@ contains
   pure function has_nonfinite_word(value) result(yes)
     character(len=*), intent(in) :: value   !! value text [-]
     logical :: yes                          !! a non-finite word was found [-]
-    character(len=1) :: quote
     character(len=:), allocatable :: tok
-    integer :: p, q
+    integer :: p, a, b
     yes = .false.
-    quote = ' '
     p = 1
-    do while (p <= len(value))
-      if (quote /= ' ') then
-        if (value(p:p) == quote) quote = ' '
-        p = p + 1
-        cycle
-      end if
-      if (value(p:p) == '"' .or. value(p:p) == "'") then
-        quote = value(p:p)
-        p = p + 1
-        cycle
-      end if
-      if (.not. is_letter(value(p:p))) then
-        p = p + 1
-        cycle
-      end if
-      q = p
-      do while (q <= len(value))
-        if (.not. is_ident_char(value(q:q))) exit
-        q = q + 1
-      end do
-      tok = lower_case(value(p:q - 1))
+    do
+      call next_word(value, p, .true., a, b)
+      if (a == 0) return
+      tok = lower_case(value(a:b))
       if (tok == 'nan' .or. tok == 'inf' .or. tok == 'infinity') then
         yes = .true.
         return
       end if
-      p = q
+      p = b + 1
     end do
   end function has_nonfinite_word
+
+  !> The next word of a value text at or after p, outside quoted strings: value(first:last),
+  !! first = 0 when there is none. With ident, a word is a letter followed by identifier
+  !! characters; otherwise any run of characters other than blanks, commas, '*' and quotes.
+  pure subroutine next_word(value, p, ident, first, last)
+    character(len=*), intent(in) :: value   !! value text [-]
+    integer, intent(in) :: p                !! start position [-]
+    logical, intent(in) :: ident            !! words are identifiers [-]
+    integer, intent(out) :: first, last     !! the word, first = 0 if none [-]
+    character(len=1) :: quote, c
+    integer :: k
+    quote = ' '
+    first = 0
+    last = 0
+    do k = p, len(value)
+      c = value(k:k)
+      if (quote /= ' ') then
+        if (c == quote) quote = ' '
+      else if (c == '"' .or. c == "'") then
+        quote = c
+      else if (in_word(c, .true.)) then
+        first = k
+        exit
+      end if
+    end do
+    if (first == 0) return
+    last = first
+    do while (last < len(value))
+      if (.not. in_word(value(last + 1:last + 1), .false.)) exit
+      last = last + 1
+    end do
+  contains
+    pure logical function in_word(ch, starts)
+      character(len=1), intent(in) :: ch   !! character [-]
+      logical, intent(in) :: starts        !! ch would start the word [-]
+      if (ident) then
+        if (starts) then
+          in_word = is_letter(ch)
+        else
+          in_word = is_ident_char(ch)
+        end if
+      else
+        in_word = .not. (is_blank_char(ch) .or. ch == ',' .or. ch == '*' .or. ch == '"' .or. ch == "'")
+      end if
+    end function in_word
+  end subroutine next_word
 
 end module landyn_namelist_text
