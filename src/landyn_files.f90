@@ -61,43 +61,37 @@ contains
     character(len=1) :: c
     integer :: u, nbytes, n, ios, k, kd
     integer(c_long_long) :: dev, ino
+    character(len=*), parameter :: too_large = 'it is larger than 64 MiB; not a text deck'
 
     text = ''
     msg = ''
     stat = 0
     if (len(path) == 0) then
-      stat = 1
-      msg = 'empty file name'
+      call fail('empty file name')
       return
     end if
     call info(path, kd, dev, ino, k)
     if (kd == kind_directory) then
-      stat = 1
-      msg = 'it is a directory'
+      call fail('it is a directory')
       return
     end if
     iomsg = ''
     open (newunit=u, file=path, access='stream', form='unformatted', action='read', status='old', &
           iostat=ios, iomsg=iomsg)
     if (ios /= 0) then
-      stat = 1
-      msg = trim(iomsg)
+      call fail(trim(iomsg))
       return
     end if
     inquire (unit=u, size=nbytes)
     if (nbytes > max_text_bytes) then
-      close (u)
-      stat = 1
-      msg = 'it is larger than 64 MiB; not a text deck'
+      call fail(too_large, u)
       return
     end if
     if (nbytes > 0) then
       allocate (character(len=nbytes) :: buf)
       read (u, iostat=ios, iomsg=iomsg) buf
       if (ios /= 0) then
-        close (u)
-        stat = 1
-        msg = 'read error: '//trim(iomsg)
+        call fail('read error: '//trim(iomsg), u)
         return
       end if
     else
@@ -108,16 +102,12 @@ contains
         read (u, iostat=ios, iomsg=iomsg) c
         if (ios == iostat_end) exit
         if (ios /= 0) then
-          close (u)
-          stat = 1
-          msg = 'read error: '//trim(iomsg)
+          call fail('read error: '//trim(iomsg), u)
           return
         end if
         if (n == len(buf)) then
           if (n >= max_text_bytes) then
-            close (u)
-            stat = 1
-            msg = 'it is larger than 64 MiB; not a text deck'
+            call fail(too_large, u)
             return
           end if
           buf = buf//repeat(' ', len(buf))
@@ -129,6 +119,14 @@ contains
     end if
     close (u)
     text = normalize_line_ends(buf)
+  contains
+    subroutine fail(why, unit)
+      character(len=*), intent(in) :: why        !! reason [-]
+      integer, intent(in), optional :: unit      !! open unit to close [-]
+      if (present(unit)) close (unit)
+      stat = 1
+      msg = why
+    end subroutine fail
   end subroutine read_whole_file
 
   !> Text with CR LF and lone CR made LF, and a leading UTF-8 byte-order mark removed.
