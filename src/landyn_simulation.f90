@@ -338,6 +338,7 @@ contains
     real(wp) :: vslip(2), dslip(2), field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), thrust_g(3)
     real(wp) :: xt(3), e_el, ke_legs, ke_body, tilt, speed_char, ovl(3), gf(3, max_gears), gm(3, max_gears), e_imp
     real(wp) :: fnm
+    logical :: thrusting
     type(footpad_state_t) :: trial(max_gears)
     character(len=msg_len) :: m2
 
@@ -378,8 +379,9 @@ contains
         end if
         fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), fn(i)])
       end do
+      thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
       thrust_l = 0.0_wp
-      if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) thrust_l = inp%engine%thrust*inp%engine%direction
+      if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
       thrust_g = mv3(r, thrust_l)
       ! ---- energy audit: work of the ground forces and the thrust over the last step, by the
       ! trapezoidal rule (mean of the forces at both ends times the displacement): the scheme is
@@ -425,7 +427,7 @@ contains
       force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust (computed with the footpad forces above)
-      if (inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time) then
+      if (thrusting) then
         moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
       end if
       force = force + thrust_g
