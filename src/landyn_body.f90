@@ -105,13 +105,16 @@ contains
   end subroutine body_accelerations
 
   !> One semi-implicit Euler step with the accelerations already set.
-  pure subroutine body_step(body, dt)
+  pure subroutine body_step(body, dt, kick)
     type(body_t), intent(inout) :: body   !! body
     real(wp), intent(in) :: dt            !! time step [s]
-    real(wp) :: e(3, 3)
-    body%v = body%v + body%acc*dt
+    real(wp), intent(in), optional :: kick  !! velocity update length (variable-step leapfrog); default dt [s]
+    real(wp) :: e(3, 3), hk
+    hk = dt
+    if (present(kick)) hk = kick
+    body%v = body%v + body%acc*hk
     body%x = body%x + body%v*dt
-    body%omega = body%omega + body%alpha*dt
+    body%omega = body%omega + body%alpha*hk
     e = euler_rate_matrix(body%euler(2), body%euler(3))
     body%euler = body%euler + mv3(e, body%omega)*dt
     body%r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))

@@ -20,7 +20,12 @@ module landyn_config
   !> &simulation: time stepping and termination.
   type :: simulation_cfg_t
     character(len=256) :: title = 'LANDYN demonstration lander, load case LC-1'
-    real(wp) :: dt = 5.0e-6_wp              !! fixed time step [s]
+    character(len=name_len) :: integrator = 'adaptive'  !! time integrator: 'adaptive' or 'fixed'
+    real(wp) :: dt = 5.0e-6_wp              !! fixed integrator: the time step; adaptive: the first step tried [s]
+    real(wp) :: tolerance = 1.0e-3_wp       !! adaptive: local velocity error allowed per step [m/s]
+    real(wp) :: dt_max = 1.0e-3_wp          !! adaptive: largest step [s]
+    real(wp) :: dt_min = 1.0e-9_wp          !! adaptive: smallest step [s]
+    real(wp) :: event_resolution = 1.0e-6_wp !! adaptive: events are located to within this time [s]
     real(wp) :: t_end = 1.0_wp              !! end time [s]
     real(wp) :: gravity = 1.62_wp           !! gravitational acceleration, along global +z (down) [m/s^2]
     logical  :: stop_at_rest = .true.       !! end the run early when the lander has come to rest

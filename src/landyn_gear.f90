@@ -48,7 +48,7 @@ module landyn_gear
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
   public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle
-  public :: max_rows
+  public :: max_rows, idx_len
   public :: n_q, n_phi
 
   integer, parameter :: n_q = 9      !! generalized coordinates per gear
@@ -730,7 +730,7 @@ contains
   !! system and is done by the caller for all gears and the body together (landyn_impact); for a
   !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
   !! kinetic metric (used by the unit tests of a free gear).
-  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity)
+  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity, kick)
     type(gear_t), intent(inout) :: gear          !! gear
     real(wp), intent(in) :: dt                   !! time step [s]
     real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
@@ -739,7 +739,8 @@ contains
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
     logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
-    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q)
+    real(wp), intent(in), optional :: kick       !! velocity update length (variable-step leapfrog); default dt [s]
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), hk
     real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg, mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
     integer :: k, iter, nrow, i, j
     character(len=msg_len) :: buf
@@ -748,7 +749,9 @@ contains
     if (gear%st%rigid .and. all(gear%st%locked)) return   ! no degree of freedom: nothing moves
     gear%st%rigid = .false.
     call strokes(gear, gear%st%q, gear%st%qd, s0, sd0)
-    qd_new = gear%st%qd + gear%st%qdd*dt
+    hk = dt
+    if (present(kick)) hk = kick
+    qd_new = gear%st%qd + gear%st%qdd*hk
     call strokes(gear, gear%st%q, qd_new, s1, sd1)
     ! A crushing strut whose sliding speed reaches zero locks (it cannot be driven back by its own
     ! buffer force); a free strut (bound 0 in its direction of motion) keeps moving.

@@ -98,7 +98,12 @@ module landyn_input
 
   type(var_t), parameter :: vars_simulation(*) = [ &
     var_t(g_simulation, 'title', '', 'a quoted character string', 'run title'), &
-    var_t(g_simulation, 'dt', 's', 'a real number', 'fixed time step'), &
+    var_t(g_simulation, 'integrator', '', 'a quoted character string', "time integrator: 'adaptive' or 'fixed'"), &
+    var_t(g_simulation, 'dt', 's', 'a real number', 'fixed: the time step; adaptive: the first step tried'), &
+    var_t(g_simulation, 'tolerance', 'm/s', 'a real number', 'adaptive: local velocity error allowed per step'), &
+    var_t(g_simulation, 'dt_max', 's', 'a real number', 'adaptive: largest step'), &
+    var_t(g_simulation, 'dt_min', 's', 'a real number', 'adaptive: smallest step'), &
+    var_t(g_simulation, 'event_resolution', 's', 'a real number', 'adaptive: events located to within this time'), &
     var_t(g_simulation, 't_end', 's', 'a real number', 'end time'), &
     var_t(g_simulation, 'gravity', 'm/s^2', 'a real number', 'gravitational acceleration, along global +z (down)'), &
     var_t(g_simulation, 'stop_at_rest', '', 'a logical (.true. or .false.)', 'end the run early once at rest'), &
@@ -354,6 +359,7 @@ contains
       inp%engine%direction = inp%engine%direction/nrm
     end if
     inp%contact%law = lower(adjustl(inp%contact%law))
+    inp%simulation%integrator = lower(adjustl(inp%simulation%integrator))
     inp%friction%law = lower(adjustl(inp%friction%law))
     if (.not. is_set(inp%friction%stribeck_speed)) &
       inp%friction%stribeck_speed = default_stribeck_speed(inp%friction%law)
@@ -422,7 +428,12 @@ contains
     associate (s => inp%simulation)
       call group_begin(text, g_simulation)
       call put_var(text, g_simulation, 'title', quoted(trim(s%title)))
+      call put_var(text, g_simulation, 'integrator', quoted(trim(s%integrator)))
       call put_var(text, g_simulation, 'dt', fmt_real(s%dt))
+      call put_var(text, g_simulation, 'tolerance', fmt_real(s%tolerance))
+      call put_var(text, g_simulation, 'dt_max', fmt_real(s%dt_max))
+      call put_var(text, g_simulation, 'dt_min', fmt_real(s%dt_min))
+      call put_var(text, g_simulation, 'event_resolution', fmt_real(s%event_resolution))
       call put_var(text, g_simulation, 't_end', fmt_real(s%t_end))
       call put_var(text, g_simulation, 'gravity', fmt_real(s%gravity))
       call put_var(text, g_simulation, 'stop_at_rest', fmt_logical(s%stop_at_rest))
@@ -773,7 +784,7 @@ contains
     n = huge(1)
     if (ig == g_output .and. base == 'file') n = path_len
     if (ig == g_simulation .and. base == 'title') n = len(sdef%title)
-    if (base == 'law') n = name_len
+    if (base == 'law' .or. base == 'integrator') n = name_len
   end function string_limit
 
   !> A byte as "0xHH".
@@ -832,13 +843,20 @@ contains
     integer, intent(out) :: ios                     !! iostat [-]
     character(len=*), intent(inout) :: msg          !! iomsg [-]
     character(len=len(cfg%title)) :: title
+    character(len=name_len) :: integrator
     real(wp) :: dt, t_end, gravity, rest_speed, rest_time, tipover_angle, constraint_tol, max_constraint_drift
+    real(wp) :: tolerance, dt_max, dt_min, event_resolution
     logical :: stop_at_rest
     integer :: max_correction_iter
-    namelist /simulation/ title, dt, t_end, gravity, stop_at_rest, rest_speed, rest_time, tipover_angle, &
-      constraint_tol, max_correction_iter, max_constraint_drift
+    namelist /simulation/ title, integrator, dt, tolerance, dt_max, dt_min, event_resolution, t_end, gravity, &
+      stop_at_rest, rest_speed, rest_time, tipover_angle, constraint_tol, max_correction_iter, max_constraint_drift
     title = cfg%title
+    integrator = cfg%integrator
     dt = cfg%dt
+    tolerance = cfg%tolerance
+    dt_max = cfg%dt_max
+    dt_min = cfg%dt_min
+    event_resolution = cfg%event_resolution
     t_end = cfg%t_end
     gravity = cfg%gravity
     stop_at_rest = cfg%stop_at_rest
@@ -851,12 +869,17 @@ contains
     read (buffer, nml=simulation, iostat=ios, iomsg=msg)
     if (ios /= 0) return
     if (.not. plausible([dt, t_end, gravity, rest_speed, rest_time, tipover_angle, constraint_tol, &
-                         max_constraint_drift])) then
+                         max_constraint_drift, tolerance, dt_max, dt_min, event_resolution])) then
       ios = ios_implausible
       return
     end if
     cfg%title = title
+    cfg%integrator = integrator
     cfg%dt = dt
+    cfg%tolerance = tolerance
+    cfg%dt_max = dt_max
+    cfg%dt_min = dt_min
+    cfg%event_resolution = event_resolution
     cfg%t_end = t_end
     cfg%gravity = gravity
     cfg%stop_at_rest = stop_at_rest
@@ -1320,6 +1343,14 @@ contains
                    'dt >= t_end/'//fmt_real(max_steps)//' = '//fmt_real(s%t_end/max_steps)// &
                    ' s (at most '//fmt_real(max_steps)//' time steps)')
     end if
+    call require(errors, in_name_list(s%integrator, 'adaptive, fixed'), pre, g, 'integrator', &
+                 quoted(trim(s%integrator)), "one of 'adaptive', 'fixed'")
+    call require(errors, s%tolerance > 0.0_wp, pre, g, 'tolerance', fmt_real(s%tolerance)//' m/s', 'tolerance > 0 m/s')
+    call require(errors, s%dt_min > 0.0_wp, pre, g, 'dt_min', fmt_real(s%dt_min)//' s', 'dt_min > 0 s')
+    call require(errors, s%dt_max >= s%dt_min, pre, g, 'dt_max', fmt_real(s%dt_max)//' s', &
+                 'dt_max >= dt_min = '//fmt_real(s%dt_min)//' s')
+    call require(errors, s%event_resolution > 0.0_wp, pre, g, 'event_resolution', &
+                 fmt_real(s%event_resolution)//' s', 'event_resolution > 0 s')
     call require(errors, s%gravity >= 0.0_wp, pre, g, 'gravity', fmt_real(s%gravity)//' m/s^2', 'gravity >= 0 m/s^2')
     call require(errors, s%rest_speed > 0.0_wp, pre, g, 'rest_speed', fmt_real(s%rest_speed)//' m/s', &
                  'rest_speed > 0 m/s')

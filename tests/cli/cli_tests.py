@@ -155,13 +155,18 @@ def t_unwritable_output(exe, src, d):
 
 
 def t_divergence(exe, src, d):
-    """A time step far too large for the contact stiffness stops with a diagnosis and no file."""
-    write(d, "coarse.nml", "&simulation dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
+    """A fixed time step far too large for the contact stiffness stops with a diagnosis and no
+    file; the adaptive integrator, given the same step as its first try, shortens it and succeeds."""
+    write(d, "coarse.nml", "&simulation integrator = 'fixed', dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
     rc, out, err = run(exe, ["coarse.nml", "-q"], d)
     check(rc == 3, "a diverging run exits 3 (got %d)" % rc)
     check("simulation failed" in err and ("dt" in err or "time step" in err),
           "the diagnosis points at the time step: %s" % err.strip()[-300:])
     check(files_in(d) == ["coarse.nml"], "no result file for a failed run (%s)" % files_in(d))
+    write(d, "coarse_adaptive.nml", "&simulation dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
+    rc, out, err = run(exe, ["coarse_adaptive.nml", "-q", "-o", "adaptive.h5"], d)
+    check(rc == 0 and "adaptive.h5" in files_in(d), "the adaptive integrator recovers from dt = 2e-3 s (got %d: %s)"
+          % (rc, err.strip()[-300:]))
 
 
 TESTS = {name[2:]: fn for name, fn in globals().items() if name.startswith("t_")}

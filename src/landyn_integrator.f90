@@ -1,0 +1,44 @@
+!> The time-integrator interface: an integrator advances a simulation (landyn_sim_core's sim_t)
+!! by one accepted step at a time, from the state sim_init built to the end of the run. Two
+!! implementations, chosen in &simulation: landyn_integrator_fixed (the paper's fixed-step scheme)
+!! and landyn_integrator_adaptive (error-controlled steps with event location, the default).
+module landyn_integrator
+  use landyn_config, only: landyn_input_t
+  use landyn_sim_core, only: sim_t, sim_result_t
+  implicit none
+  private
+
+  public :: integrator_t
+
+  !> An integrator: start once after sim_init, then step until done.
+  type, abstract :: integrator_t
+  contains
+    procedure(start_iface), deferred :: start   !! first evaluation and output sample at t = 0
+    procedure(step_iface), deferred :: step     !! one accepted step (or the end of the run)
+  end type integrator_t
+
+  abstract interface
+    subroutine start_iface(self, sim, inp, res, stat, errmsg)
+      import :: integrator_t, sim_t, landyn_input_t, sim_result_t
+      class(integrator_t), intent(inout) :: self   !! integrator
+      type(sim_t), intent(inout) :: sim            !! simulation at t = 0 (from sim_init)
+      type(landyn_input_t), intent(in) :: inp      !! resolved, validated input
+      type(sim_result_t), intent(inout) :: res     !! result
+      integer, intent(out) :: stat                 !! 0 on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    end subroutine start_iface
+
+    subroutine step_iface(self, sim, inp, res, done, stat, errmsg, progress_unit)
+      import :: integrator_t, sim_t, landyn_input_t, sim_result_t
+      class(integrator_t), intent(inout) :: self   !! integrator
+      type(sim_t), intent(inout) :: sim            !! simulation, advanced by one step
+      type(landyn_input_t), intent(in) :: inp      !! resolved, validated input
+      type(sim_result_t), intent(inout) :: res     !! time series and summary
+      logical, intent(out) :: done                 !! the run has ended (end time, rest, tip-over, failure)
+      integer, intent(out) :: stat                 !! 0 on success (also for a tip-over); /= 0 on failure
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none
+    end subroutine step_iface
+  end interface
+
+end module landyn_integrator

@@ -1,0 +1,265 @@
+!> Error-controlled variable-step integration with event location (&simulation integrator =
+!! 'adaptive', the default). Each step is the paper's semi-implicit Euler step with the crush
+!! logic, correction and plastic-impact projection of landyn_sim_core, over a step size chosen as
+!! follows (docs/theory.md, "Adaptive integrator"):
+!!
+!! * Local error: the semi-implicit Euler velocity update v + h a(t) differs from the trapezoidal
+!!   v + h (a(t) + a(t+h))/2 by h/2 |a(t+h) - a(t)|; that estimate, with the accelerations of the
+!!   body (angular ones times the lander's size), of every gear coordinate (angles times their
+!!   strut's length), is held below `tolerance` [m/s] per step. The accelerations at t + h are
+!!   those the next step needs anyway: one force evaluation per accepted step.
+!! * Events: a change of the discrete state over a step (a strut's mode: locked, crushing either
+!!   way or free; a footpad touching down or lifting off; a stick state; the tilt passing the
+!!   tip-over angle) is located by bisection: the step is retried at half length until the one
+!!   that contains the change is no longer than `event_resolution` [s].
+!! * A step whose correction drifts or fails, or whose state is not finite, is retried at a
+!!   quarter of its length.
+!! * Steps end exactly on the output times and on t_end.
+!! * Variable steps need the variable-step leapfrog: the stored velocities belong to the middle of
+!!   each step, so the velocity update between steps h_last and h is (h_last + h)/2 times the
+!!   accelerations (the fixed scheme's h when the steps are equal). Updating by h instead makes an
+!!   error a (h_last - h)/2 at every change of step, first order and outside the error estimate.
+module landyn_integrator_adaptive
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use landyn_kinds, only: wp, msg_len
+  use landyn_config, only: landyn_input_t
+  use landyn_gear, only: n_q, idx_len
+  use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
+                             sim_evaluate, sim_book, sim_advance, sim_accept, finish
+  use landyn_integrator, only: integrator_t
+  implicit none
+  private
+
+  public :: adaptive_integrator_t, error_norm
+
+  !> Adaptive integrator and its state between steps.
+  type, extends(integrator_t) :: adaptive_integrator_t
+    real(wp) :: tol = 1.0e-3_wp            !! local velocity error per step [m/s]
+    real(wp) :: h_min = 1.0e-9_wp          !! smallest step [s]
+    real(wp) :: h_max = 1.0e-3_wp          !! largest step [s]
+    real(wp) :: h_event = 1.0e-6_wp        !! event resolution [s]
+    real(wp) :: t_end = 0.0_wp             !! end time [s]
+    real(wp) :: slack = 0.0_wp             !! times this close count as equal [s]
+    real(wp) :: t = 0.0_wp                 !! time of the current state [s]
+    real(wp) :: h = 0.0_wp                 !! step to take next [s]
+    real(wp) :: h_last = 0.0_wp            !! last accepted step (0 at t = 0) [s]
+    type(sim_eval_t) :: ev                 !! evaluation of the current state, made for the step h
+    type(sim_snapshot_t) :: pre            !! the current state before that evaluation
+  contains
+    procedure :: start => adaptive_start
+    procedure :: step => adaptive_step
+  end type adaptive_integrator_t
+
+contains
+
+  !> Reads the settings, evaluates and records t = 0; the first step tried is &simulation dt.
+  subroutine adaptive_start(self, sim, inp, res, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation at t = 0
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res             !! result
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    self%tol = inp%simulation%tolerance
+    self%h_max = min(inp%simulation%dt_max, inp%output%interval)
+    self%h_min = min(inp%simulation%dt_min, self%h_max)
+    self%h_event = max(inp%simulation%event_resolution, self%h_min)
+    self%t_end = inp%simulation%t_end
+    self%slack = 1.0e-12_wp*max(1.0_wp, self%t_end)
+    self%t = 0.0_wp
+    self%h = clip(self, sim, 0.0_wp, max(self%h_min, min(inp%simulation%dt, self%h_max)))
+    res%integrator = 'adaptive'
+    res%dt_smallest = huge(1.0_wp)
+    res%dt_largest = 0.0_wp
+    call sim_save(sim, self%pre)
+    self%h_last = 0.0_wp
+    call sim_evaluate(sim, inp, 0.0_wp, kick(self, self%h), self%ev, stat, errmsg)
+    res%n_evaluations = res%n_evaluations + 1
+    if (stat /= 0) then
+      call finish(sim%model, res, 0.0_wp)
+      return
+    end if
+    call sim_book(sim, inp, res, self%ev, 0.0_wp, self%slack)
+    self%pre%loop = sim%loop    ! a rejected first step returns to t = 0 as booked
+  end subroutine adaptive_start
+
+  !> One accepted step: tries the step h, estimates its error from the accelerations at both ends,
+  !! looks for events, and retries shorter until the step is accepted; then books the new state,
+  !! runs the checks and chooses the next step.
+  subroutine adaptive_step(self, sim, inp, res, done, stat, errmsg, progress_unit)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation, advanced by one step
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res             !! time series and summary
+    logical, intent(out) :: done                         !! the run has ended
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
+    type(sim_eval_t) :: ev_new
+    type(sim_snapshot_t) :: pre_new
+    real(wp) :: h, h_g, t_new, err, fac
+    logical :: ok, event, rejected
+    character(len=msg_len) :: m2
+
+    done = .false.
+    rejected = .false.
+    do
+      h = self%h
+      t_new = self%t + h
+      if (t_new >= self%t_end - self%slack) t_new = self%t_end
+      err = 0.0_wp
+      event = .false.
+      call sim_advance(sim, inp, self%ev, h, stat, m2, kick=kick(self, h))
+      ok = stat == 0
+      if (ok) ok = finite_state(sim)
+      if (ok) then
+        h_g = clip(self, sim, t_new, h)
+        call sim_save(sim, pre_new)
+        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), ev_new, stat, m2)
+        res%n_evaluations = res%n_evaluations + 1
+        ok = stat == 0
+      end if
+      if (ok) then
+        err = error_norm(self%ev, ev_new, h, sim%l_char, self%tol, sim%model%n_gears)
+        event = discrete_change(self%ev, ev_new, sim%model%n_gears, inp%simulation%tipover_angle)
+      end if
+      if (h > self%h_min .and. (.not. ok .or. err > 1.0_wp .or. (event .and. h > self%h_event))) then
+        ! reject: back to the state at t, retry shorter
+        call sim_restore(sim, self%pre)
+        if (.not. ok) then
+          h = 0.25_wp*h
+        else if (err > 1.0_wp) then
+          h = h*max(0.1_wp, 0.9_wp/sqrt(err))
+          if (event) h = min(h, 0.5_wp*self%h)
+        else
+          h = 0.5_wp*h
+        end if
+        self%h = clip(self, sim, self%t, max(h, self%h_min))
+        res%n_rejected = res%n_rejected + 1
+        rejected = .true.
+        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2)
+        res%n_evaluations = res%n_evaluations + 1
+        if (stat /= 0) then
+          errmsg = m2
+          call finish(sim%model, res, self%t)
+          done = .true.
+          return
+        end if
+        cycle
+      end if
+      if (.not. ok) then
+        stat = max(stat, 4)
+        write (errmsg, '(a,es10.3,a,es12.5,a,a)') 'adaptive integrator: no step down to dt_min = ', self%h_min, &
+          ' s succeeds at t = ', self%t, ' s: ', trim(m2)
+        call finish(sim%model, res, self%t)
+        done = .true.
+        return
+      end if
+      exit
+    end do
+
+    ! accepted
+    if (err > 1.0_wp) res%n_forced = res%n_forced + 1
+    if (event) res%n_events = res%n_events + 1
+    res%dt_smallest = min(res%dt_smallest, h)
+    res%dt_largest = max(res%dt_largest, h)
+    self%t = t_new
+    self%h_last = h
+    call sim_book(sim, inp, res, ev_new, h, self%slack)
+    call sim_accept(sim, inp, res, t_new, h, done, stat, errmsg, progress_unit, &
+                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp)
+    if (done) return
+    if (t_new >= self%t_end) then
+      res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time
+      call finish(sim%model, res, self%t_end)
+      done = .true.
+      return
+    end if
+    ! next step: the usual controller for a first-order estimate (err ~ h^2), growth at most 2,
+    ! none right after a rejection
+    fac = 2.0_wp
+    if (err > 0.0_wp) fac = min(2.0_wp, 0.9_wp/sqrt(err))
+    if (rejected) fac = min(fac, 1.0_wp)
+    h = clip(self, sim, t_new, max(self%h_min, min(self%h_max, h*max(0.2_wp, fac))))
+    ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
+    if (ev_new%locks_changed) h = h_g
+    self%h = h
+    self%ev = ev_new
+    self%pre = pre_new
+    self%pre%loop = sim%loop    ! a rejected step returns to this state as booked and checked
+  end subroutine adaptive_step
+
+  !> Length of the velocity update of a step h after the last accepted step: the variable-step
+  !! leapfrog's (h_last + h)/2, whose velocities belong to the middle of each step (h/2 for the
+  !! first step, from the exact initial velocity).
+  pure real(wp) function kick(self, h)
+    class(adaptive_integrator_t), intent(in) :: self  !! integrator
+    real(wp), intent(in) :: h                         !! step to take [s]
+    kick = 0.5_wp*(self%h_last + h)
+  end function kick
+
+  !> A step proposal from t cut so that steps end exactly on the next output time and on t_end
+  !! (equal steps up to it rather than a sliver at its end).
+  function clip(self, sim, t, h) result(hc)
+    class(adaptive_integrator_t), intent(in) :: self  !! integrator
+    type(sim_t), intent(in) :: sim                    !! simulation (next output time)
+    real(wp), intent(in) :: t                         !! time of the state [s]
+    real(wp), intent(in) :: h                         !! proposed step [s]
+    real(wp) :: hc                                    !! step to take [s]
+    real(wp) :: t_stop, gap
+    integer :: n
+    t_stop = min(sim%loop%t_next_out, self%t_end)
+    gap = t_stop - t
+    hc = h
+    if (gap <= self%slack) return
+    n = max(1, ceiling(gap/h - 1.0e-9_wp))
+    if (n <= 1000000) hc = gap/real(n, wp)
+  end function clip
+
+  !> Weighted local error of one semi-implicit Euler step of length h: max over the components of
+  !! h/2 |a(t+h) - a(t)| / tol, with the body's angular accelerations times l_char and the gear
+  !! angle accelerations times their strut's length (velocity errors at the footpad scale).
+  pure function error_norm(e0, e1, h, l_char, tol, ng) result(err)
+    type(sim_eval_t), intent(in) :: e0      !! evaluation at the start of the step
+    type(sim_eval_t), intent(in) :: e1      !! evaluation at its end
+    real(wp), intent(in) :: h               !! step [s]
+    real(wp), intent(in) :: l_char          !! lever of the body's angular accelerations [m]
+    real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
+    integer, intent(in) :: ng               !! number of gears [-]
+    real(wp) :: err                         !! error / tolerance [-]
+    integer :: i, j, k
+    real(wp) :: scale(n_q)
+    err = maxval(abs(e1%acc - e0%acc))
+    err = max(err, l_char*maxval(abs(e1%alpha - e0%alpha)))
+    do i = 1, ng
+      do k = 1, 3
+        scale(idx_len(k)) = 1.0_wp
+        do j = idx_len(k) + 1, idx_len(k) + 2
+          scale(j) = e0%strut_len(k, i)
+        end do
+      end do
+      err = max(err, maxval(scale*abs(e1%qdd(:, i) - e0%qdd(:, i))))
+    end do
+    err = 0.5_wp*h*err/tol
+    if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
+  end function error_norm
+
+  !> The discrete state changed between two evaluations: a strut mode, a footpad contact, a stick
+  !! state, or the tilt crossed the tip-over angle.
+  pure logical function discrete_change(e0, e1, ng, tip) result(changed)
+    type(sim_eval_t), intent(in) :: e0      !! evaluation at the start of the step
+    type(sim_eval_t), intent(in) :: e1      !! evaluation at its end
+    integer, intent(in) :: ng               !! number of gears [-]
+    real(wp), intent(in) :: tip             !! tip-over angle [rad]
+    changed = any(e0%mode(:, 1:ng) /= e1%mode(:, 1:ng)) .or. any(e0%contact(1:ng) .neqv. e1%contact(1:ng)) &
+              .or. any(e0%stuck(1:ng) .neqv. e1%stuck(1:ng)) .or. ((e0%tilt > tip) .neqv. (e1%tilt > tip))
+  end function discrete_change
+
+  !> The body state is finite.
+  logical function finite_state(sim) result(ok)
+    type(sim_t), intent(in) :: sim          !! simulation
+    ok = all(ieee_is_finite(sim%model%body%x)) .and. all(ieee_is_finite(sim%model%body%v)) .and. &
+         all(ieee_is_finite(sim%model%body%euler)) .and. all(ieee_is_finite(sim%model%body%omega))
+  end function finite_state
+
+end module landyn_integrator_adaptive

@@ -1,0 +1,59 @@
+!> The paper's scheme (Fig. 6): semi-implicit Euler with the fixed step &simulation dt, every
+!! step evaluated, advanced and committed (landyn_sim_core's sim_step). Kept for comparison with
+!! the paper and with heritage fixed-step codes.
+module landyn_integrator_fixed
+  use landyn_kinds, only: wp
+  use landyn_config, only: landyn_input_t
+  use landyn_sim_core, only: sim_t, sim_result_t, sim_step
+  use landyn_integrator, only: integrator_t
+  implicit none
+  private
+
+  public :: fixed_integrator_t
+
+  !> Fixed-step integrator (the step count lives in the simulation).
+  type, extends(integrator_t) :: fixed_integrator_t
+    real(wp) :: dt = 0.0_wp    !! the step [s]
+  contains
+    procedure :: start => fixed_start
+    procedure :: step => fixed_step
+  end type fixed_integrator_t
+
+contains
+
+  !> Nothing to prepare: the first sim_step evaluates and records t = 0.
+  subroutine fixed_start(self, sim, inp, res, stat, errmsg)
+    class(fixed_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                 !! simulation at t = 0
+    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res          !! result
+    integer, intent(out) :: stat                      !! 0 on success
+    character(len=*), intent(inout) :: errmsg         !! message on failure
+    stat = 0
+    self%dt = inp%simulation%dt
+    if (.not. (self%dt > 0.0_wp .and. abs(sim%dt - self%dt) <= 0.0_wp)) then
+      stat = 2
+      errmsg = 'fixed integrator: the simulation was not set up with &simulation dt'
+      return
+    end if
+    res%integrator = 'fixed'
+    res%dt_smallest = self%dt
+    res%dt_largest = self%dt
+  end subroutine fixed_start
+
+  !> One step of the paper's scheme.
+  subroutine fixed_step(self, sim, inp, res, done, stat, errmsg, progress_unit)
+    class(fixed_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                 !! simulation, advanced by one step
+    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res          !! time series and summary
+    logical, intent(out) :: done                      !! the run has ended
+    integer, intent(out) :: stat                      !! 0 on success
+    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
+    integer, intent(in) :: progress_unit              !! unit for progress lines, < 0 for none
+    sim%dt = self%dt
+    call sim_step(sim, inp, res, done, stat, errmsg, progress_unit)
+    res%n_evaluations = res%n_evaluations + 1
+  end subroutine fixed_step
+
+end module landyn_integrator_fixed
