@@ -3,11 +3,13 @@
 !! logic, correction and plastic-impact projection of landyn_sim_core, over a step size chosen as
 !! follows (docs/theory.md, "Adaptive integrator"):
 !!
-!! * Local error: the semi-implicit Euler velocity update v + h a(t) differs from the trapezoidal
-!!   v + h (a(t) + a(t+h))/2 by h/2 |a(t+h) - a(t)|; that estimate, with the accelerations of the
-!!   body (angular ones times the lander's size), of every gear coordinate (angles times their
-!!   strut's length), is held below `tolerance` [m/s] per step. The accelerations at t + h are
-!!   those the next step needs anyway: one force evaluation per accepted step.
+!! * Local error: the step is the leapfrog, whose velocity update (the kick) is the midpoint rule
+!!   with local error h^3/24 |a''|. a'' is estimated from the second divided difference of the
+!!   accelerations at t - h_last, t and t + h: of the body (angular ones times the lander's size)
+!!   and of every gear coordinate (angles times their strut's length). That estimate is held below
+!!   `tolerance` [m/s] per step. Right after an event (where a'' is undefined) and at the first
+!!   step the first-order estimate h/2 |a(t+h) - a(t)| is used instead. The accelerations at t + h
+!!   are those the next step needs anyway: one force evaluation per accepted step.
 !! * Events: a change of the discrete state over a step (a strut's mode: locked, crushing either
 !!   way or free; a footpad touching down or lifting off; a stick state; the tilt passing the
 !!   tip-over angle) is located by bisection: the step is retried at half length until the one
@@ -44,6 +46,8 @@ module landyn_integrator_adaptive
     real(wp) :: h = 0.0_wp                 !! step to take next [s]
     real(wp) :: h_last = 0.0_wp            !! last accepted step (0 at t = 0) [s]
     type(sim_eval_t) :: ev                 !! evaluation of the current state, made for the step h
+    type(sim_eval_t) :: ev_prev            !! evaluation of the previous accepted state
+    logical :: smooth = .false.            !! no event between ev_prev and ev: second differences apply
     type(sim_snapshot_t) :: pre            !! the current state before that evaluation
   contains
     procedure :: start => adaptive_start
@@ -120,7 +124,11 @@ contains
         ok = stat == 0
       end if
       if (ok) then
-        err = error_norm(self%ev, ev_new, h, sim%l_char, self%tol, sim%model%n_gears)
+        if (self%smooth) then
+          err = error_norm2(self%ev_prev, self%ev, ev_new, self%h_last, h, sim%l_char, self%tol, sim%model%n_gears)
+        else
+          err = error_norm(self%ev, ev_new, h, sim%l_char, self%tol, sim%model%n_gears)
+        end if
         event = discrete_change(self%ev, ev_new, sim%model%n_gears, inp%simulation%tipover_angle)
       end if
       if (h > self%h_min .and. (.not. ok .or. err > 1.0_wp .or. (event .and. h > self%h_event))) then
@@ -129,7 +137,11 @@ contains
         if (.not. ok) then
           h = 0.25_wp*h
         else if (err > 1.0_wp) then
-          h = h*max(0.1_wp, 0.9_wp/sqrt(err))
+          if (self%smooth) then
+            h = h*max(0.1_wp, 0.9_wp/err**(1.0_wp/3.0_wp))
+          else
+            h = h*max(0.1_wp, 0.9_wp/sqrt(err))
+          end if
           if (event) h = min(h, 0.5_wp*self%h)
         else
           h = 0.5_wp*h
@@ -175,15 +187,21 @@ contains
       done = .true.
       return
     end if
-    ! next step: the usual controller for a first-order estimate (err ~ h^2), growth at most 2,
-    ! none right after a rejection
+    ! next step: the usual controller (err ~ h^3 for the second-difference estimate, ~ h^2 for the
+    ! first-order one), growth at most 2, none right after a rejection
     fac = 2.0_wp
-    if (err > 0.0_wp) fac = min(2.0_wp, 0.9_wp/sqrt(err))
+    if (err > 0.0_wp .and. self%smooth) then
+      fac = min(2.0_wp, 0.9_wp/err**(1.0_wp/3.0_wp))
+    else if (err > 0.0_wp) then
+      fac = min(2.0_wp, 0.9_wp/sqrt(err))
+    end if
     if (rejected) fac = min(fac, 1.0_wp)
     h = clip(self, sim, t_new, max(self%h_min, min(self%h_max, h*max(0.2_wp, fac))))
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
     if (ev_new%locks_changed) h = h_g
     self%h = h
+    self%ev_prev = self%ev
+    self%smooth = .not. event
     self%ev = ev_new
     self%pre = pre_new
     self%pre%loop = sim%loop    ! a rejected step returns to this state as booked and checked
@@ -243,6 +261,37 @@ contains
     err = 0.5_wp*h*err/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm
+
+  !> Weighted local error of one leapfrog step of length h after a step h_prev: the kick is the
+  !! midpoint rule for the velocity, whose local error is h^3/24 |a''|, with a'' from the second
+  !! divided difference of the accelerations at t - h_prev, t and t + h; scaled as error_norm.
+  pure function error_norm2(ep, e0, e1, h_prev, h, l_char, tol, ng) result(err)
+    type(sim_eval_t), intent(in) :: ep      !! evaluation at t - h_prev
+    type(sim_eval_t), intent(in) :: e0      !! evaluation at t
+    type(sim_eval_t), intent(in) :: e1      !! evaluation at t + h
+    real(wp), intent(in) :: h_prev          !! previous step [s]
+    real(wp), intent(in) :: h               !! step [s]
+    real(wp), intent(in) :: l_char          !! lever of the body's angular accelerations [m]
+    real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
+    integer, intent(in) :: ng               !! number of gears [-]
+    real(wp) :: err                         !! error / tolerance [-]
+    integer :: i, j, k
+    real(wp) :: scale(n_q), c
+    c = h**3/24.0_wp*2.0_wp/(h + h_prev)
+    err = maxval(abs((e1%acc - e0%acc)/h - (e0%acc - ep%acc)/h_prev))
+    err = max(err, l_char*maxval(abs((e1%alpha - e0%alpha)/h - (e0%alpha - ep%alpha)/h_prev)))
+    do i = 1, ng
+      do k = 1, 3
+        scale(idx_len(k)) = 1.0_wp
+        do j = idx_len(k) + 1, idx_len(k) + 2
+          scale(j) = e0%strut_len(k, i)
+        end do
+      end do
+      err = max(err, maxval(scale*abs((e1%qdd(:, i) - e0%qdd(:, i))/h - (e0%qdd(:, i) - ep%qdd(:, i))/h_prev)))
+    end do
+    err = c*err/tol
+    if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
+  end function error_norm2
 
   !> The discrete state changed between two evaluations: a strut mode, a footpad contact, a stick
   !! state, or the tilt crossed the tip-over angle.

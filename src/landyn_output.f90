@@ -177,7 +177,22 @@ contains
     call h5_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg, &
       description='largest constraint violation before correction (one step of drift)'); if (stat /= 0) return
     call h5_write(f, '/summary/final_time', res%t_final, 's', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg, &
+      description='accepted time steps'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/name', trim(res%integrator), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_evaluations', res%n_evaluations, '-', stat, errmsg, &
+      description='force evaluations, rejected steps included'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_rejected', res%n_rejected, '-', stat, errmsg, &
+      description='rejected steps (local error above tolerance, an event to locate, a failed correction)')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_events', res%n_events, '-', stat, errmsg, &
+      description='accepted steps ending at a located event'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_forced', res%n_forced, '-', stat, errmsg, &
+      description='steps accepted at dt_min with the local error above the tolerance'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/dt_smallest', res%dt_smallest, 's', stat, errmsg, &
+      description='smallest accepted step'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &
+      description='largest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
   end subroutine write_all
 
