@@ -131,7 +131,8 @@ contains
         end if
         event = discrete_change(self%ev, ev_new, sim%model%n_gears, inp%simulation%tipover_angle)
       end if
-      if (h > self%h_min .and. (.not. ok .or. err > 1.0_wp .or. (event .and. h > self%h_event))) then
+      if ((.not. ok .and. h > self%h_min) .or. &
+          (ok .and. h > self%h_event*(1.0_wp + 1.0e-9_wp) .and. (err > 1.0_wp .or. event))) then
         ! reject: back to the state at t, retry shorter
         call sim_restore(sim, self%pre)
         if (.not. ok) then
@@ -146,7 +147,11 @@ contains
         else
           h = 0.5_wp*h
         end if
-        self%h = clip(self, sim, self%t, max(h, self%h_min))
+        if (ok) then
+          self%h = clip(self, sim, self%t, max(h, self%h_event))
+        else
+          self%h = clip(self, sim, self%t, max(h, self%h_min))
+        end if
         res%n_rejected = res%n_rejected + 1
         rejected = .true.
         call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2)
@@ -196,7 +201,7 @@ contains
       fac = min(2.0_wp, 0.9_wp/sqrt(err))
     end if
     if (rejected) fac = min(fac, 1.0_wp)
-    h = clip(self, sim, t_new, max(self%h_min, min(self%h_max, h*max(0.2_wp, fac))))
+    h = clip(self, sim, t_new, max(self%h_event, min(self%h_max, h*max(0.2_wp, fac))))
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
     if (ev_new%locks_changed) h = h_g
     self%h = h
@@ -230,8 +235,9 @@ contains
     gap = t_stop - t
     hc = h
     if (gap <= self%slack) return
-    n = max(1, ceiling(gap/h - 1.0e-9_wp))
-    if (n <= 1000000) hc = gap/real(n, wp)
+    if (gap/h > 1.0e6_wp) return
+    n = max(1, ceiling(gap/h))
+    hc = min(h, gap/real(n, wp))        ! never longer than proposed
   end function clip
 
   !> Weighted local error of one semi-implicit Euler step of length h: max over the components of

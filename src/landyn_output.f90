@@ -188,7 +188,8 @@ contains
     call h5_write(f, '/summary/integrator/n_events', res%n_events, '-', stat, errmsg, &
       description='accepted steps ending at a located event'); if (stat /= 0) return
     call h5_write(f, '/summary/integrator/n_forced', res%n_forced, '-', stat, errmsg, &
-      description='steps accepted at dt_min with the local error above the tolerance'); if (stat /= 0) return
+      description='steps of event_resolution accepted with the local error above the tolerance (discontinuities)')
+    if (stat /= 0) return
     call h5_write(f, '/summary/integrator/dt_smallest', res%dt_smallest, 's', stat, errmsg, &
       description='smallest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &

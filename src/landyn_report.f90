@@ -24,8 +24,8 @@ contains
     if (res%integrator == 'adaptive') write (u, '(a,i0,a,i0,a,i0,a,es9.2,a,es9.2,a)') '  adaptive steps: ', &
       res%n_rejected, ' rejected, ', res%n_events, ' at located events, ', res%n_evaluations, ' force evaluations; dt ', &
       res%dt_smallest, ' .. ', res%dt_largest, ' s'
-    if (res%n_forced > 0) write (u, '(a,i0,a)') '  warning: ', res%n_forced, &
-      ' steps were accepted at dt_min above the error tolerance (docs/theory.md, adaptive integrator)'
+    if (res%n_forced > 0) write (u, '(a,i0,a)') '  adaptive steps: ', res%n_forced, &
+      ' discontinuities crossed in steps of event_resolution (local error estimate above the tolerance)'
     write (u, '(a)') ''
     write (u, '(a)') '  meas gear strut            crush [mm]  (+) [mm]  (-) [mm]  margin [mm]  peak force [kN]  switches'
     do i = 1, res%n_gears

@@ -175,7 +175,7 @@ module landyn_sim_core
     integer :: n_evaluations = 0                           !! force evaluations, rejected steps included [-]
     integer :: n_rejected = 0                              !! rejected steps (error or event) [-]
     integer :: n_events = 0                                !! accepted steps that ended at a located event [-]
-    integer :: n_forced = 0                                !! steps accepted at dt_min above the tolerance [-]
+    integer :: n_forced = 0                                !! steps of event_resolution accepted above the tolerance [-]
     real(wp) :: dt_smallest = 0.0_wp                       !! smallest accepted step [s]
     real(wp) :: dt_largest = 0.0_wp                        !! largest accepted step [s]
     real(wp) :: wall_time = 0.0_wp                         !! [s]
