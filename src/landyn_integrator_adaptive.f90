@@ -32,7 +32,7 @@ module landyn_integrator_adaptive
   implicit none
   private
 
-  public :: adaptive_integrator_t, error_norm
+  public :: adaptive_integrator_t, error_norm, error_norm2
 
   !> Adaptive integrator and its state between steps.
   type, extends(integrator_t) :: adaptive_integrator_t

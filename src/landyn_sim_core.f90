@@ -482,7 +482,7 @@ contains
     real(wp), intent(in) :: h_sync              !! the stored velocities lag the positions by h_sync/2 [s]
     real(wp), intent(in) :: slack               !! a sample is due this close before its time [s]
     integer :: ng, i
-    real(wp) :: fnm, xt(3), ke_body, ke_legs, e_el
+    real(wp) :: fnm, xt(3), ke_body, ke_legs, e_el, v_keep(3), w_keep(3)
 
     ng = sim%model%n_gears
     associate (model => sim%model)
@@ -530,9 +530,16 @@ contains
         do i = 1, ng
           if (ev%delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
         end do
+        ! the sample's body velocities are synchronised to t as well
+        v_keep = model%body%v
+        w_keep = model%body%omega
+        model%body%v = v_keep + 0.5_wp*h_sync*model%body%acc
+        model%body%omega = w_keep + 0.5_wp*h_sync*model%body%alpha
         call record(res, model, ev%t, ev%ovl, ev%xd, ev%fground, ev%fn, ev%delta, ev%vd, sim%loop%w_normal, &
                     sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
                     inp%simulation%gravity, ke_body)
+        model%body%v = v_keep
+        model%body%omega = w_keep
         sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
       end if
     end associate

@@ -119,6 +119,10 @@ BAD_DECKS = {
     "inertia_not_pd": ("&lander ixx = 1.0e4, iyy = 1.0e4, izz = 5.0e4 /\n", [r"&lander.*(inertia|ixx|izz)"], 1),
     # dt > t_end also puts the default output interval (1 ms) below dt: two messages
     "dt_gt_tend": ("&simulation dt = 2.0, t_end = 1.0 /\n", [r"&simulation.*dt = 2\.0", r"&output.*interval"], 2),
+    "unknown_integrator": ("&simulation integrator = 'rk45' /\n", [r"&simulation.*integrator.*rk45.*adaptive"], 1),
+    "adaptive_settings": ("&simulation tolerance = 0, dt_min = 1e-3, dt_max = 1e-4, event_resolution = -1 /\n",
+                          [r"&simulation.*tolerance = 0", r"&simulation.*dt_max.*dt_min",
+                           r"&simulation.*event_resolution = -1"], 3),
     "stroke_zero": ("&secondary_strut stroke_lengthening = 0 /\n", [r"&secondary_strut.*stroke_lengthening"], 1),
     "unknown_group": ("&simulaton dt = 1e-5 /\n", [r"simulaton"], 1),
     "three_mistakes": ("&lander mas = 1.6e4 /\n&simulation dt = -1, t_end = 'x' /\n",
@@ -163,7 +167,7 @@ def t_divergence(exe, src, d):
     check("simulation failed" in err and ("dt" in err or "time step" in err),
           "the diagnosis points at the time step: %s" % err.strip()[-300:])
     check(files_in(d) == ["coarse.nml"], "no result file for a failed run (%s)" % files_in(d))
-    write(d, "coarse_adaptive.nml", "&simulation dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
+    write(d, "coarse_adaptive.nml", "&simulation integrator = 'adaptive', dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
     rc, out, err = run(exe, ["coarse_adaptive.nml", "-q", "-o", "adaptive.h5"], d)
     check(rc == 0 and "adaptive.h5" in files_in(d), "the adaptive integrator recovers from dt = 2e-3 s (got %d: %s)"
           % (rc, err.strip()[-300:]))
