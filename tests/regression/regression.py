@@ -3,6 +3,7 @@
 
   regression.py --exe LANDYN --src SOURCE_DIR --case lc1            # run and check
   regression.py --exe LANDYN --src SOURCE_DIR --case lc1 --update   # rewrite the baseline
+  regression.py ... --case lc1 --integrator adaptive                 # the adaptive integrator
 
 Checks (issue "Touchdown dynamics", item 8):
   * paper Table 3 "theory" column: LC-1 every strut within 3 %; LC-2 rms error <= 6 mm;
@@ -26,8 +27,9 @@ import h5py
 
 # Compared datasets with their floor tolerance (absolute, in the dataset's units). The tolerance
 # actually used is max(floor, 3 x spread), where the spread is measured when the baseline is made
-# (--update): the case is rerun with dt perturbed by +-1e-10 (relative), a physically meaningless
-# change that exposes how far round-off alone moves each quantity. Late in some landings (the
+# (--update): the case is rerun with dt (the adaptive integrator: its tolerance) perturbed by
+# +-1e-10 (relative), a physically meaningless change that exposes how far round-off alone moves
+# each quantity. Late in some landings (the
 # lander hops after the first crush and lands again on slack legs) crush events are sensitive to
 # round-off; the measured spreads are stored with the baseline (attribute "tolerance") and printed.
 # Time series are compared over the first touchdown and crush (t <= TS_WINDOW), sampled every
@@ -158,11 +160,19 @@ def baseline_checks(f, path):
                   % (name, err, tol, float(b[name].attrs["roundoff_spread"]), b[name].attrs["units"].decode()))
 
 
+ADAPTIVE_TOLERANCE = 1.0e-6   # m/s, the default of &simulation tolerance
+
+
 def roundoff_spreads(exe, deck_text, d, reference):
-    """Rerun with dt perturbed by +-1e-10 and return each compared quantity's largest deviation."""
+    """Rerun with dt (fixed integrator) or the tolerance (adaptive) perturbed by +-1e-10 and return
+    each compared quantity's largest deviation."""
     spreads = {name: 0.0 for name in FLOORS}
     for k, factor in enumerate(PERTURBATIONS):
-        text = deck_text.replace("dt = 5.0e-6", "dt = %.12e" % (5.0e-6 * factor))
+        if "integrator = 'adaptive'" in deck_text:
+            text = deck_text.replace("integrator = 'adaptive'", "integrator = 'adaptive', tolerance = %.12e"
+                                     % (ADAPTIVE_TOLERANCE * factor), 1)
+        else:
+            text = deck_text.replace("dt = 5.0e-6", "dt = %.12e" % (5.0e-6 * factor))
         if text == deck_text:
             raise SystemExit("the deck does not state dt = 5.0e-6")
         deck = os.path.join(d, "perturbed%d.nml" % k)
@@ -182,11 +192,22 @@ def main():
     ap.add_argument("--exe", required=True)
     ap.add_argument("--src", required=True)
     ap.add_argument("--case", required=True, choices=["lc1", "lc2", "lc3", "lc4"])
+    ap.add_argument("--integrator", default="fixed", choices=["fixed", "adaptive"],
+                    help="time integrator (default: the deck's, i.e. fixed); adaptive runs the deck with "
+                         "integrator = 'adaptive' at its default tolerance and has its own baseline <case>_adaptive.h5")
     ap.add_argument("--update", action="store_true", help="rewrite the baseline from this run")
     a = ap.parse_args()
     deck = os.path.join(a.src, "input", a.case + ".nml")
-    base = os.path.join(a.src, "tests", "regression", "baselines", a.case + ".h5")
+    suffix = "" if a.integrator == "fixed" else "_" + a.integrator
+    base = os.path.join(a.src, "tests", "regression", "baselines", a.case + suffix + ".h5")
     with tempfile.TemporaryDirectory(prefix="landyn_reg_") as d:
+        if a.integrator != "fixed":
+            text = open(deck).read()
+            new = text.replace("dt = 5.0e-6", "integrator = '%s', dt = 5.0e-6" % a.integrator, 1)
+            if new == text:
+                raise SystemExit("the deck does not state dt = 5.0e-6")
+            deck = os.path.join(d, a.case + suffix + ".nml")
+            open(deck, "w").write(new)
         out = os.path.join(d, a.case + ".h5")
         p = subprocess.run([a.exe, deck, "-q", "-o", out], capture_output=True, text=True)
         if p.returncode != 0:
