@@ -48,7 +48,9 @@ module landyn_integrator_adaptive
     type(sim_eval_t) :: ev                 !! evaluation of the current state, made for the step h
     type(sim_eval_t) :: ev_prev            !! evaluation of the previous accepted state
     logical :: smooth = .false.            !! no event between ev_prev and ev: second differences apply
-    type(sim_snapshot_t) :: pre            !! the current state before that evaluation
+    type(sim_snapshot_t) :: snap(2)        !! snap(ip): the current state before that evaluation;
+                                           !! the other slot takes the next state (no copy on acceptance)
+    integer :: ip = 1                      !! slot of the current state's snapshot [-]
   contains
     procedure :: start => adaptive_start
     procedure :: step => adaptive_step
@@ -75,7 +77,8 @@ contains
     res%integrator = 'adaptive'
     res%dt_smallest = huge(1.0_wp)
     res%dt_largest = 0.0_wp
-    call sim_save(sim, self%pre)
+    self%ip = 1
+    call sim_save(sim, self%snap(1))
     self%h_last = 0.0_wp
     call sim_evaluate(sim, inp, 0.0_wp, kick(self, self%h), self%ev, stat, errmsg)
     res%n_evaluations = res%n_evaluations + 1
@@ -84,7 +87,7 @@ contains
       return
     end if
     call sim_book(sim, inp, res, self%ev, 0.0_wp, self%slack)
-    self%pre%loop = sim%loop    ! a rejected first step returns to t = 0 as booked
+    self%snap(1)%loop = sim%loop    ! a rejected first step returns to t = 0 as booked
   end subroutine adaptive_start
 
   !> One accepted step: tries the step h, estimates its error from the accelerations at both ends,
@@ -100,7 +103,6 @@ contains
     character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
     integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
     type(sim_eval_t) :: ev_new
-    type(sim_snapshot_t) :: pre_new
     real(wp) :: h, h_g, t_new, err, fac
     logical :: ok, event, rejected
     character(len=msg_len) :: m2
@@ -118,7 +120,7 @@ contains
       if (ok) ok = finite_state(sim)
       if (ok) then
         h_g = clip(self, sim, t_new, h)
-        call sim_save(sim, pre_new)
+        call sim_save(sim, self%snap(3 - self%ip))
         call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), ev_new, stat, m2)
         res%n_evaluations = res%n_evaluations + 1
         ok = stat == 0
@@ -134,7 +136,7 @@ contains
       if ((.not. ok .and. h > self%h_min) .or. &
           (ok .and. h > self%h_event*(1.0_wp + 1.0e-9_wp) .and. (err > 1.0_wp .or. event))) then
         ! reject: back to the state at t, retry shorter
-        call sim_restore(sim, self%pre)
+        call sim_restore(sim, self%snap(self%ip))
         if (.not. ok) then
           h = 0.25_wp*h
         else if (err > 1.0_wp) then
@@ -208,8 +210,8 @@ contains
     self%ev_prev = self%ev
     self%smooth = .not. event
     self%ev = ev_new
-    self%pre = pre_new
-    self%pre%loop = sim%loop    ! a rejected step returns to this state as booked and checked
+    self%ip = 3 - self%ip
+    self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
   end subroutine adaptive_step
 
   !> Length of the velocity update of a step h after the last accepted step: the variable-step
