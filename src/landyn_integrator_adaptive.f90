@@ -103,7 +103,7 @@ contains
     character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
     integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
     type(sim_eval_t) :: ev_new
-    real(wp) :: h, h_g, t_new, err, fac
+    real(wp) :: h, h_g, t_new, err, fac, acc_t(3), alpha_t(3)
     logical :: ok, event, rejected
     character(len=msg_len) :: m2
 
@@ -156,7 +156,11 @@ contains
         end if
         res%n_rejected = res%n_rejected + 1
         rejected = .true.
-        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2)
+        ! the body's accelerations at t are known from the first evaluation of t (copied: ev is
+        ! intent(out) of sim_evaluate)
+        acc_t = self%ev%acc
+        alpha_t = self%ev%alpha
+        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2, acc_field=acc_t, alpha_field=alpha_t)
         res%n_evaluations = res%n_evaluations + 1
         if (stat /= 0) then
           errmsg = m2

@@ -378,7 +378,7 @@ contains
   !! states, each gear's crush logic and DAE (dt enters only the velocity-level lock decisions),
   !! the loads on the body and its accelerations. The model's accelerations, strut forces and
   !! modes are set; nothing is committed and no accumulator or result changes.
-  subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg)
+  subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field)
     type(sim_t), intent(inout) :: sim           !! simulation (accelerations and strut modes updated)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     real(wp), intent(in) :: t                   !! time of the state [s]
@@ -386,6 +386,10 @@ contains
     type(sim_eval_t), intent(out) :: ev         !! the evaluation
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    real(wp), intent(in), optional :: acc_field(3)    !! body acceleration for the legs' frame field, global;
+                                                      !! default: the last evaluation's [m/s^2]
+    real(wp), intent(in), optional :: alpha_field(3)  !! body angular acceleration for it, lander axes;
+                                                      !! default: the last evaluation's [rad/s^2]
     integer :: ng, i
     real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
@@ -430,7 +434,11 @@ contains
       if (ev%thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
       ev%thrust_g = mv3(r, thrust_l)
 
-      ! ---- Steps 3-4: gear dynamics and crush logic
+      ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
+      ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
+      ! evaluation's, an integrator may pass a better estimate.
+      if (present(acc_field)) model%body%acc = acc_field
+      if (present(alpha_field)) model%body%alpha = alpha_field
       force = model%body%mass*model%g_vec
       moment = 0.0_wp
       ev%locks_changed = .false.
