@@ -15,7 +15,7 @@ module landyn_output
 
   public :: write_result_file, schema_version, iso_timestamp
 
-  character(len=*), parameter :: schema_version = '1.0'  !! version of docs/output.md
+  character(len=*), parameter :: schema_version = '1.1'  !! version of docs/output.md
 
 contains
 

@@ -33,7 +33,7 @@ __all__ = [
     "ROOT_ATTRIBUTES", "META",
 ]
 
-SCHEMA_VERSION = "1.0"     #: the schema version this package was written for
+SCHEMA_VERSION = "1.1"     #: the schema version this package was written for
 SUPPORTED_MAJOR = "1"      #: files with schema_version 1.x are read (minor versions only add)
 
 #: strut order of the last axis of gear arrays (Table 3 measure order within a gear)
@@ -98,7 +98,7 @@ META = (
     ("units", "unit system statement"),
 )
 
-#: Every dataset of schema 1.0 (root attributes title, producer, schema_version are separate).
+#: Every dataset of schema 1.1 (root attributes title, producer, schema_version are separate).
 DATASETS: tuple[DatasetSpec, ...] = tuple(
     [DatasetSpec(k, "/meta/" + k, "-", (), "text", m) for k, m in META]
     + [
@@ -194,7 +194,17 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         DatasetSpec("max_constraint_drift", "/summary/max_constraint_drift", "m", (), "real",
                     "largest constraint violation before correction (one step of drift)"),
         DatasetSpec("final_time", "/summary/final_time", "s", (), "real", "time at the end of the run"),
-        DatasetSpec("n_steps", "/summary/n_steps", "-", (), "int", "time steps taken"),
+        DatasetSpec("n_steps", "/summary/n_steps", "-", (), "int", "accepted time steps"),
+        DatasetSpec("integrator/name", "/summary/integrator/name", "-", (), "text", "time integrator: fixed or adaptive"),
+        DatasetSpec("integrator/n_evaluations", "/summary/integrator/n_evaluations", "-", (), "int",
+                    "force evaluations, rejected steps included"),
+        DatasetSpec("integrator/n_rejected", "/summary/integrator/n_rejected", "-", (), "int", "rejected steps"),
+        DatasetSpec("integrator/n_events", "/summary/integrator/n_events", "-", (), "int",
+                    "accepted steps that ended at a located event"),
+        DatasetSpec("integrator/n_forced", "/summary/integrator/n_forced", "-", (), "int",
+                    "steps of event_resolution accepted above the tolerance (discontinuities)"),
+        DatasetSpec("integrator/dt_smallest", "/summary/integrator/dt_smallest", "s", (), "real", "smallest accepted step"),
+        DatasetSpec("integrator/dt_largest", "/summary/integrator/dt_largest", "s", (), "real", "largest accepted step"),
         DatasetSpec("wall_time", "/summary/wall_time", "s", (), "real", "wall-clock time of the simulation"),
         DatasetSpec("health/status", "/summary/health/status", "-", (), "int",
                     "worst run-health check: 0 passed, 1 warnings, 2 failed (run meaningless; docs/health.md)"),
