@@ -22,7 +22,7 @@ module landyn_config
     character(len=256) :: title = 'LANDYN demonstration lander, load case LC-1'
     character(len=name_len) :: integrator = 'fixed'  !! time integrator: 'fixed' or 'adaptive'
     real(wp) :: dt = 5.0e-6_wp              !! fixed integrator: the time step; adaptive: the first step tried [s]
-    real(wp) :: tolerance = 1.0e-6_wp       !! adaptive: local velocity error allowed per step [m/s]
+    real(wp) :: tolerance = 1.0e-7_wp       !! adaptive: local velocity error allowed per step [m/s]
     real(wp) :: dt_max = 1.0e-3_wp          !! adaptive: largest step [s]
     real(wp) :: dt_min = 1.0e-9_wp          !! adaptive: smallest step [s]
     real(wp) :: event_resolution = 1.0e-6_wp !! adaptive: events are located to within this time [s]

@@ -121,7 +121,7 @@ contains
       if (ok) then
         h_g = clip(self, sim, t_new, h)
         call sim_save(sim, self%snap(3 - self%ip))
-        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), ev_new, stat, m2)
+        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), ev_new, stat, m2, v_lead=0.5_wp*h)
         res%n_evaluations = res%n_evaluations + 1
         ok = stat == 0
       end if
@@ -160,7 +160,8 @@ contains
         ! intent(out) of sim_evaluate)
         acc_t = self%ev%acc
         alpha_t = self%ev%alpha
-        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2, acc_field=acc_t, alpha_field=alpha_t)
+        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2, acc_field=acc_t, alpha_field=alpha_t, &
+                          v_lead=0.5_wp*self%h_last)
         res%n_evaluations = res%n_evaluations + 1
         if (stat /= 0) then
           errmsg = m2

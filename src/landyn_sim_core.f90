@@ -378,7 +378,7 @@ contains
   !! states, each gear's crush logic and DAE (dt enters only the velocity-level lock decisions),
   !! the loads on the body and its accelerations. The model's accelerations, strut forces and
   !! modes are set; nothing is committed and no accumulator or result changes.
-  subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field)
+  subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field, v_lead)
     type(sim_t), intent(inout) :: sim           !! simulation (accelerations and strut modes updated)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     real(wp), intent(in) :: t                   !! time of the state [s]
@@ -390,7 +390,12 @@ contains
                                                       !! default: the last evaluation's [m/s^2]
     real(wp), intent(in), optional :: alpha_field(3)  !! body angular acceleration for it, lander axes;
                                                       !! default: the last evaluation's [rad/s^2]
+    real(wp), intent(in), optional :: v_lead          !! the footpad velocities (contact damping, friction) are
+                                                      !! taken with the stored velocities advanced by v_lead
+                                                      !! times the last accelerations (the leapfrog's velocities
+                                                      !! lag the positions by half a step); default 0 [s]
     integer :: ng, i
+    real(wp) :: v_keep(3), w_keep(3), qd_keep(n_q)
     real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     logical :: was_locked(3)
@@ -403,8 +408,19 @@ contains
     associate (model => sim%model)
       r = model%body%r
       ! ---- Step 2: footpads and ground forces
+      if (present(v_lead)) then
+        v_keep = model%body%v
+        w_keep = model%body%omega
+        model%body%v = v_keep + v_lead*model%body%acc
+        model%body%omega = w_keep + v_lead*model%body%alpha
+      end if
       do i = 1, ng
+        if (present(v_lead)) then
+          qd_keep = model%gear(i)%st%qd
+          model%gear(i)%st%qd = qd_keep + v_lead*model%gear(i)%st%qdd
+        end if
         call gear_footpad(model%gear(i), pos_g, vel_g)
+        if (present(v_lead)) model%gear(i)%st%qd = qd_keep
         d_l = mv3(model%gear(i)%rot, pos_g)
         ev%xd(:, i) = body_point_position(model%body, d_l)
         ev%vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
@@ -429,6 +445,10 @@ contains
         end if
         ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])
       end do
+      if (present(v_lead)) then
+        model%body%v = v_keep
+        model%body%omega = w_keep
+      end if
       ev%thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
       thrust_l = 0.0_wp
       if (ev%thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
