@@ -247,9 +247,8 @@ contains
     hc = min(h, gap/real(n, wp))        ! never longer than proposed
   end function clip
 
-  !> Weighted local error of one semi-implicit Euler step of length h: max over the components of
-  !! h/2 |a(t+h) - a(t)| / tol, with the body's angular accelerations times l_char and the gear
-  !! angle accelerations times their strut's length (velocity errors at the footpad scale).
+  !> Weighted local error of one semi-implicit Euler step of length h: h/2 |a(t+h) - a(t)| / tol
+  !! (first-order estimate, see weighted_max for the weights).
   pure function error_norm(e0, e1, h, l_char, tol, ng) result(err)
     type(sim_eval_t), intent(in) :: e0      !! evaluation at the start of the step
     type(sim_eval_t), intent(in) :: e1      !! evaluation at its end
@@ -258,26 +257,13 @@ contains
     real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
     integer, intent(in) :: ng               !! number of gears [-]
     real(wp) :: err                         !! error / tolerance [-]
-    integer :: i, j, k
-    real(wp) :: scale(n_q)
-    err = maxval(abs(e1%acc - e0%acc))
-    err = max(err, l_char*maxval(abs(e1%alpha - e0%alpha)))
-    do i = 1, ng
-      do k = 1, 3
-        scale(idx_len(k)) = 1.0_wp
-        do j = idx_len(k) + 1, idx_len(k) + 2
-          scale(j) = e0%strut_len(k, i)
-        end do
-      end do
-      err = max(err, maxval(scale*abs(e1%qdd(:, i) - e0%qdd(:, i))))
-    end do
-    err = 0.5_wp*h*err/tol
+    err = 0.5_wp*h*weighted_max(e1%acc - e0%acc, e1%alpha - e0%alpha, e1%qdd - e0%qdd, e0%strut_len, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm
 
   !> Weighted local error of one leapfrog step of length h after a step h_prev: the kick is the
   !! midpoint rule for the velocity, whose local error is h^3/24 |a''|, with a'' from the second
-  !! divided difference of the accelerations at t - h_prev, t and t + h; scaled as error_norm.
+  !! divided difference of the accelerations at t - h_prev, t and t + h; weights as error_norm.
   pure function error_norm2(ep, e0, e1, h_prev, h, l_char, tol, ng) result(err)
     type(sim_eval_t), intent(in) :: ep      !! evaluation at t - h_prev
     type(sim_eval_t), intent(in) :: e0      !! evaluation at t
@@ -288,23 +274,32 @@ contains
     real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
     integer, intent(in) :: ng               !! number of gears [-]
     real(wp) :: err                         !! error / tolerance [-]
-    integer :: i, j, k
-    real(wp) :: scale(n_q), c
-    c = h**3/24.0_wp*2.0_wp/(h + h_prev)
-    err = maxval(abs((e1%acc - e0%acc)/h - (e0%acc - ep%acc)/h_prev))
-    err = max(err, l_char*maxval(abs((e1%alpha - e0%alpha)/h - (e0%alpha - ep%alpha)/h_prev)))
-    do i = 1, ng
-      do k = 1, 3
-        scale(idx_len(k)) = 1.0_wp
-        do j = idx_len(k) + 1, idx_len(k) + 2
-          scale(j) = e0%strut_len(k, i)
-        end do
-      end do
-      err = max(err, maxval(scale*abs((e1%qdd(:, i) - e0%qdd(:, i))/h - (e0%qdd(:, i) - ep%qdd(:, i))/h_prev)))
-    end do
-    err = c*err/tol
+    err = h**3/24.0_wp*2.0_wp/(h + h_prev)*weighted_max((e1%acc - e0%acc)/h - (e0%acc - ep%acc)/h_prev, &
+      (e1%alpha - e0%alpha)/h - (e0%alpha - ep%alpha)/h_prev, (e1%qdd - e0%qdd)/h - (e0%qdd - ep%qdd)/h_prev, &
+      e0%strut_len, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm2
+
+  !> Largest weighted component of a set of body and gear accelerations (or their differences): the
+  !! body's linear ones as they are, its angular ones times l_char, each gear's strut lengths as they
+  !! are and its leg angles times their strut's length (all then in velocity units at the footpad
+  !! scale once multiplied by a time).
+  pure function weighted_max(d_acc, d_alpha, d_qdd, strut_len, l_char, ng) result(w)
+    real(wp), intent(in) :: d_acc(3)           !! body linear [m/s^2]
+    real(wp), intent(in) :: d_alpha(3)         !! body angular [rad/s^2]
+    real(wp), intent(in) :: d_qdd(:, :)        !! (n_q, >= ng) gear coordinates [m/s^2, rad/s^2]
+    real(wp), intent(in) :: strut_len(:, :)    !! (3, >= ng) strut lengths [m]
+    real(wp), intent(in) :: l_char             !! lever of the angular ones [m]
+    integer, intent(in) :: ng                  !! number of gears [-]
+    real(wp) :: w                              !! [m/s^2]
+    integer :: i, k
+    w = max(maxval(abs(d_acc)), l_char*maxval(abs(d_alpha)))
+    do i = 1, ng
+      do k = 1, 3
+        w = max(w, abs(d_qdd(idx_len(k), i)), strut_len(k, i)*maxval(abs(d_qdd(idx_len(k) + 1:idx_len(k) + 2, i))))
+      end do
+    end do
+  end function weighted_max
 
   !> The discrete state changed between two evaluations: a strut mode, a footpad contact, a stick
   !! state, or the tilt crossed the tip-over angle.

@@ -657,10 +657,7 @@ contains
       res%max_tilt = max(res%max_tilt, tilt*rad2deg)
       if (tilt > inp%simulation%tipover_angle) then
         res%tipped_over = .true.
-        res%end_reason = 'tipped over'
-        call record_final(res, model, t, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
-                          sim%loop%w_impact)
-        call finish(model, res, t)
+        call end_early(sim, inp, res, t, 'tipped over')
         done = .true.
         return
       end if
@@ -672,10 +669,7 @@ contains
       end if
       if (inp%simulation%stop_at_rest .and. sim%loop%rest_clock >= inp%simulation%rest_time) then
         res%at_rest = .true.
-        res%end_reason = 'at rest'
-        call record_final(res, model, t, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, sim%loop%w_thrust, &
-                          sim%loop%w_impact)
-        call finish(model, res, t)
+        call end_early(sim, inp, res, t, 'at rest')
         done = .true.
         return
       end if
@@ -688,6 +682,19 @@ contains
       end if
     end associate
   end subroutine sim_accept
+
+  !> Ends the run before t_end: the reason, a final sample of the state at t, the summary.
+  subroutine end_early(sim, inp, res, t, reason)
+    type(sim_t), intent(in) :: sim              !! simulation at t
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res    !! time series and summary
+    real(wp), intent(in) :: t                   !! time [s]
+    character(len=*), intent(in) :: reason      !! end reason [-]
+    res%end_reason = reason
+    call record_final(res, sim%model, t, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, &
+                      sim%loop%w_thrust, sim%loop%w_impact)
+    call finish(sim%model, res, t)
+  end subroutine end_early
 
   !> Snapshot of everything that evolves in a simulation: body, gears (coordinates, rates, crush
   !! modes and history, caches), footpad histories and stick states, and the integrator's
