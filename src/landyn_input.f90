@@ -1351,6 +1351,16 @@ contains
                  'dt_max >= dt_min = '//fmt_real(s%dt_min)//' s')
     call require(errors, s%event_resolution > 0.0_wp, pre, g, 'event_resolution', &
                  fmt_real(s%event_resolution)//' s', 'event_resolution > 0 s')
+    if (s%event_resolution > 0.0_wp .and. s%dt_min > 0.0_wp .and. s%dt_max >= s%dt_min) then
+      call require(errors, s%event_resolution >= s%dt_min .and. s%event_resolution <= s%dt_max, pre, g, &
+                   'event_resolution', fmt_real(s%event_resolution)//' s', 'dt_min <= event_resolution <= dt_max, here '// &
+                   fmt_real(s%dt_min)//' s .. '//fmt_real(s%dt_max)//' s')
+      ! the adaptive steps are no shorter than event_resolution (but for failed corrections): this
+      ! bounds their number as dt bounds the fixed scheme's
+      if (s%t_end > 0.0_wp) call require(errors, s%event_resolution >= s%t_end/max_steps, pre, g, 'event_resolution', &
+                   fmt_real(s%event_resolution)//' s', 'event_resolution >= t_end/'//fmt_real(max_steps)//' = '// &
+                   fmt_real(s%t_end/max_steps)//' s (at most '//fmt_real(max_steps)//' time steps)')
+    end if
     call require(errors, s%gravity >= 0.0_wp, pre, g, 'gravity', fmt_real(s%gravity)//' m/s^2', 'gravity >= 0 m/s^2')
     call require(errors, s%rest_speed > 0.0_wp, pre, g, 'rest_speed', fmt_real(s%rest_speed)//' m/s', &
                  'rest_speed > 0 m/s')

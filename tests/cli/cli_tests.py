@@ -123,6 +123,8 @@ BAD_DECKS = {
     "adaptive_settings": ("&simulation tolerance = 0, dt_min = 1e-3, dt_max = 1e-4, event_resolution = -1 /\n",
                           [r"&simulation.*tolerance = 0", r"&simulation.*dt_max.*dt_min",
                            r"&simulation.*event_resolution = -1"], 3),
+    "event_resolution_range": ("&simulation event_resolution = 1e-2, t_end = 1.0 /\n",
+                               [r"&simulation.*event_resolution = 0?\.?0?1.*dt_min <= event_resolution <= dt_max"], 1),
     "stroke_zero": ("&secondary_strut stroke_lengthening = 0 /\n", [r"&secondary_strut.*stroke_lengthening"], 1),
     "unknown_group": ("&simulaton dt = 1e-5 /\n", [r"simulaton"], 1),
     "three_mistakes": ("&lander mas = 1.6e4 /\n&simulation dt = -1, t_end = 'x' /\n",
