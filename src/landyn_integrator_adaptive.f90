@@ -27,7 +27,7 @@ module landyn_integrator_adaptive
   use landyn_config, only: landyn_input_t
   use landyn_gear, only: n_q, idx_len
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
-                             sim_evaluate, sim_book, sim_advance, sim_accept, finish
+                             sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
   use landyn_integrator, only: integrator_t
   implicit none
   private
@@ -117,7 +117,7 @@ contains
       event = .false.
       call sim_advance(sim, inp, self%ev, h, stat, m2, kick=kick(self, h))
       ok = stat == 0
-      if (ok) ok = finite_state(sim)
+      if (ok) ok = body_is_finite(sim%model%body)
       if (ok) then
         h_g = clip(self, sim, t_new, h)
         call sim_save(sim, self%snap(3 - self%ip))
@@ -140,11 +140,7 @@ contains
         if (.not. ok) then
           h = 0.25_wp*h
         else if (err > 1.0_wp) then
-          if (self%smooth) then
-            h = h*max(0.1_wp, 0.9_wp/err**(1.0_wp/3.0_wp))
-          else
-            h = h*max(0.1_wp, 0.9_wp/sqrt(err))
-          end if
+          h = h*max(0.1_wp, step_factor(err, self%smooth))
           if (event) h = min(h, 0.5_wp*self%h)
         else
           h = 0.5_wp*h
@@ -202,11 +198,7 @@ contains
     ! next step: the usual controller (err ~ h^3 for the second-difference estimate, ~ h^2 for the
     ! first-order one), growth at most 2, none right after a rejection
     fac = 2.0_wp
-    if (err > 0.0_wp .and. self%smooth) then
-      fac = min(2.0_wp, 0.9_wp/err**(1.0_wp/3.0_wp))
-    else if (err > 0.0_wp) then
-      fac = min(2.0_wp, 0.9_wp/sqrt(err))
-    end if
+    if (err > 0.0_wp) fac = min(2.0_wp, step_factor(err, self%smooth))
     if (rejected) fac = min(fac, 1.0_wp)
     h = clip(self, sim, t_new, max(self%h_event, min(self%h_max, h*max(0.2_wp, fac))))
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
@@ -218,6 +210,18 @@ contains
     self%ip = 3 - self%ip
     self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
   end subroutine adaptive_step
+
+  !> The usual step-size factor 0.9 err^(-1/p): p = 3 for the second-difference estimate (error
+  !! ~ h^3), 2 for the first-order one (~ h^2).
+  pure real(wp) function step_factor(err, second_order)
+    real(wp), intent(in) :: err             !! error / tolerance, > 0 [-]
+    logical, intent(in) :: second_order     !! the estimate was error_norm2 [-]
+    if (second_order) then
+      step_factor = 0.9_wp/err**(1.0_wp/3.0_wp)
+    else
+      step_factor = 0.9_wp/sqrt(err)
+    end if
+  end function step_factor
 
   !> Length of the velocity update of a step h after the last accepted step: the variable-step
   !! leapfrog's (h_last + h)/2, whose velocities belong to the middle of each step (h/2 for the
@@ -311,12 +315,5 @@ contains
     changed = any(e0%mode(:, 1:ng) /= e1%mode(:, 1:ng)) .or. any(e0%contact(1:ng) .neqv. e1%contact(1:ng)) &
               .or. any(e0%stuck(1:ng) .neqv. e1%stuck(1:ng)) .or. ((e0%tilt > tip) .neqv. (e1%tilt > tip))
   end function discrete_change
-
-  !> The body state is finite.
-  logical function finite_state(sim) result(ok)
-    type(sim_t), intent(in) :: sim          !! simulation
-    ok = all(ieee_is_finite(sim%model%body%x)) .and. all(ieee_is_finite(sim%model%body%v)) .and. &
-         all(ieee_is_finite(sim%model%body%euler)) .and. all(ieee_is_finite(sim%model%body%omega))
-  end function finite_state
 
 end module landyn_integrator_adaptive

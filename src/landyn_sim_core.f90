@@ -33,7 +33,7 @@ module landyn_sim_core
 
   public :: sim_result_t, setup_model, model_t
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
-  public :: sim_evaluate, sim_book, sim_advance, sim_accept, finish
+  public :: sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
 
   !> Everything the time loop integrates.
   type :: model_t
@@ -85,14 +85,12 @@ module landyn_sim_core
   !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
   type :: sim_eval_t
     real(wp) :: t = 0.0_wp                             !! time of the state [s]
-    real(wp) :: dt = 0.0_wp                            !! step the lock decisions were made for [s]
     real(wp) :: xd(3, max_gears) = 0.0_wp              !! footpad positions, global [m]
     real(wp) :: vd(3, max_gears) = 0.0_wp              !! footpad velocities, global [m/s]
     real(wp) :: delta(max_gears) = 0.0_wp              !! penetrations [m]
     real(wp) :: fn(max_gears) = 0.0_wp                 !! normal forces [N]
     real(wp) :: fground(3, max_gears) = 0.0_wp         !! ground forces on the footpads, global [N]
     type(footpad_state_t) :: trial(max_gears)          !! footpad states advanced by this evaluation
-    logical :: thrusting = .false.                     !! the engine fires [-]
     real(wp) :: thrust_g(3) = 0.0_wp                   !! thrust, global [N]
     real(wp) :: acc(3) = 0.0_wp                        !! mass-centre acceleration, global [m/s^2]
     real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
@@ -106,6 +104,13 @@ module landyn_sim_core
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
     real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
   end type sim_eval_t
+
+  !> The stored velocities of body and gears, kept while lead_velocities has advanced them.
+  type :: velocities_t
+    real(wp) :: v(3) = 0.0_wp                          !! mass-centre velocity, global [m/s]
+    real(wp) :: omega(3) = 0.0_wp                      !! body rates, lander axes [rad/s]
+    real(wp) :: qd(n_q, max_gears) = 0.0_wp            !! gear rates [m/s, rad/s]
+  end type velocities_t
 
   !> Everything of a simulation that evolves in time (see sim_save).
   type :: sim_snapshot_t
@@ -395,7 +400,8 @@ contains
                                                       !! times the last accelerations (the leapfrog's velocities
                                                       !! lag the positions by half a step); default 0 [s]
     integer :: ng, i
-    real(wp) :: v_keep(3), w_keep(3), qd_keep(n_q)
+    type(velocities_t) :: kept
+    logical :: thrusting
     real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     logical :: was_locked(3)
@@ -404,23 +410,12 @@ contains
     stat = 0
     ng = sim%model%n_gears
     ev%t = t
-    ev%dt = dt
     associate (model => sim%model)
       r = model%body%r
       ! ---- Step 2: footpads and ground forces
-      if (present(v_lead)) then
-        v_keep = model%body%v
-        w_keep = model%body%omega
-        model%body%v = v_keep + v_lead*model%body%acc
-        model%body%omega = w_keep + v_lead*model%body%alpha
-      end if
+      if (present(v_lead)) call lead_velocities(model, v_lead, kept)
       do i = 1, ng
-        if (present(v_lead)) then
-          qd_keep = model%gear(i)%st%qd
-          model%gear(i)%st%qd = qd_keep + v_lead*model%gear(i)%st%qdd
-        end if
         call gear_footpad(model%gear(i), pos_g, vel_g)
-        if (present(v_lead)) model%gear(i)%st%qd = qd_keep
         d_l = mv3(model%gear(i)%rot, pos_g)
         ev%xd(:, i) = body_point_position(model%body, d_l)
         ev%vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
@@ -445,13 +440,10 @@ contains
         end if
         ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])
       end do
-      if (present(v_lead)) then
-        model%body%v = v_keep
-        model%body%omega = w_keep
-      end if
-      ev%thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
+      if (present(v_lead)) call restore_velocities(model, kept)
+      thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
       thrust_l = 0.0_wp
-      if (ev%thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
+      if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
       ev%thrust_g = mv3(r, thrust_l)
 
       ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
@@ -484,7 +476,7 @@ contains
       force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust (computed with the footpad forces above)
-      if (ev%thrusting) then
+      if (thrusting) then
         moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
       end if
       force = force + ev%thrust_g
@@ -510,7 +502,8 @@ contains
     real(wp), intent(in) :: h_sync              !! the stored velocities lag the positions by h_sync/2 [s]
     real(wp), intent(in) :: slack               !! a sample is due this close before its time [s]
     integer :: ng, i
-    real(wp) :: fnm, xt(3), ke_body, ke_legs, e_el, v_keep(3), w_keep(3)
+    real(wp) :: fnm, xt(3), ke_legs, e_el
+    type(velocities_t) :: kept
 
     ng = sim%model%n_gears
     associate (model => sim%model)
@@ -551,23 +544,18 @@ contains
 
       ! ---- output sample (state at t with the forces at t)
       if (ev%t >= sim%loop%t_next_out - slack) then
-        ! kinetic energies with the velocities at t: the stored ones (half a step behind) plus half
-        ! a step of the accelerations just computed
-        call synchronised_energies(model, h_sync, inp%simulation%gravity, ke_body, ke_legs)
+        ! the sample (its velocities and the audit's kinetic energies) with the velocities at t: the
+        ! stored ones, half a step behind, plus half a step of the accelerations just computed
+        call lead_velocities(model, 0.5_wp*h_sync, kept)
+        ke_legs = leg_energy(model, inp%simulation%gravity)
         e_el = 0.0_wp
         do i = 1, ng
           if (ev%delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
         end do
-        ! the sample's body velocities are synchronised to t as well
-        v_keep = model%body%v
-        w_keep = model%body%omega
-        model%body%v = v_keep + 0.5_wp*h_sync*model%body%acc
-        model%body%omega = w_keep + 0.5_wp*h_sync*model%body%alpha
         call record(res, model, ev%t, ev%ovl, ev%xd, ev%fground, ev%fn, ev%delta, ev%vd, sim%loop%w_normal, &
                     sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
-                    inp%simulation%gravity, ke_body)
-        model%body%v = v_keep
-        model%body%omega = w_keep
+                    inp%simulation%gravity)
+        call restore_velocities(model, kept)
         sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
       end if
     end associate
@@ -644,8 +632,7 @@ contains
       res%n_steps = sim%loop%n
 
       ! ---- divergence, tip-over and rest checks
-      if (.not. (all(ieee_is_finite(model%body%x)) .and. all(ieee_is_finite(model%body%v)) .and. &
-                 all(ieee_is_finite(model%body%euler)) .and. all(ieee_is_finite(model%body%omega)))) then
+      if (.not. body_is_finite(model%body)) then
         stat = 4
         write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t, &
           ' s: the integration diverged (reduce &simulation dt or check the input)'
@@ -682,6 +669,13 @@ contains
       end if
     end associate
   end subroutine sim_accept
+
+  !> The body's state is finite (no NaN or Inf in position, velocity, attitude, rates).
+  pure logical function body_is_finite(body) result(ok)
+    type(body_t), intent(in) :: body   !! body
+    ok = all(ieee_is_finite(body%x)) .and. all(ieee_is_finite(body%v)) .and. &
+         all(ieee_is_finite(body%euler)) .and. all(ieee_is_finite(body%omega))
+  end function body_is_finite
 
   !> Ends the run before t_end: the reason, a final sample of the state at t, the summary.
   subroutine end_early(sim, inp, res, t, reason)
@@ -776,38 +770,40 @@ contains
     end do
   end subroutine count_mode_switches
 
-  !> Kinetic energies at t_n for the audit. The semi-implicit Euler step is the leapfrog: its
-  !! positions belong to t_n and its stored velocities to t_n - dt/2, so the velocities at t_n are
-  !! the stored ones plus dt/2 times the accelerations evaluated at t_n (body and legs). The model
-  !! is used as scratch and left as it was.
-  subroutine synchronised_energies(model, dt, gravity, ke_body, ke_legs)
-    type(model_t), intent(inout) :: model   !! model with the accelerations of t_n; unchanged on return
-    real(wp), intent(in) :: dt              !! step [s]
-    real(wp), intent(in) :: gravity         !! [m/s^2]
-    real(wp), intent(out) :: ke_body        !! body kinetic energy (total mass) [J]
-    real(wp), intent(out) :: ke_legs        !! leg energy terms (landyn leg_energy) [J]
-    real(wp) :: v(3), w(3), qd(9, max_gears)
+  !> Advances the stored velocities of body and gears by `lead` times their last accelerations,
+  !! keeping the stored ones in `kept` (restore_velocities puts them back). The semi-implicit Euler
+  !! step is the leapfrog: its positions belong to t and its stored velocities to t - h/2, so
+  !! lead = h/2 gives the velocities at t.
+  pure subroutine lead_velocities(model, lead, kept)
+    type(model_t), intent(inout) :: model       !! model with the accelerations of its last evaluation
+    real(wp), intent(in) :: lead                !! [s]
+    type(velocities_t), intent(out) :: kept     !! the stored velocities
     integer :: i
-    v = model%body%v
-    w = model%body%omega
-    model%body%v = v + 0.5_wp*dt*model%body%acc
-    model%body%omega = w + 0.5_wp*dt*model%body%alpha
+    kept%v = model%body%v
+    kept%omega = model%body%omega
+    model%body%v = kept%v + lead*model%body%acc
+    model%body%omega = kept%omega + lead*model%body%alpha
     do i = 1, model%n_gears
-      qd(:, i) = model%gear(i)%st%qd
-      model%gear(i)%st%qd = qd(:, i) + 0.5_wp*dt*model%gear(i)%st%qdd
+      kept%qd(:, i) = model%gear(i)%st%qd
+      model%gear(i)%st%qd = kept%qd(:, i) + lead*model%gear(i)%st%qdd
     end do
-    ke_body = body_kinetic_energy(model%body)
-    ke_legs = leg_energy(model, gravity)
-    model%body%v = v
-    model%body%omega = w
+  end subroutine lead_velocities
+
+  !> Puts back the velocities kept by lead_velocities.
+  pure subroutine restore_velocities(model, kept)
+    type(model_t), intent(inout) :: model       !! model
+    type(velocities_t), intent(in) :: kept      !! the stored velocities
+    integer :: i
+    model%body%v = kept%v
+    model%body%omega = kept%omega
     do i = 1, model%n_gears
-      model%gear(i)%st%qd = qd(:, i)
+      model%gear(i)%st%qd = kept%qd(:, i)
     end do
-  end subroutine synchronised_energies
+  end subroutine restore_velocities
 
   !> Records one output sample.
   subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
-                    ke0, pe0, ke_legs, e_el, gravity, ke_body)
+                    ke0, pe0, ke_legs, e_el, gravity)
     type(sim_result_t), intent(inout) :: res      !! result
     type(model_t), intent(in) :: model            !! model
     real(wp), intent(in) :: t                     !! time [s]
@@ -826,7 +822,6 @@ contains
     real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
     real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
     real(wp), intent(in) :: gravity               !! [m/s^2]
-    real(wp), intent(in), optional :: ke_body     !! body kinetic energy; default from the stored velocities [J]
     integer :: k, i
     real(wp) :: s(3), pe, ke, crush, e_in
     if (res%n_out >= size(res%t)) return
@@ -862,7 +857,6 @@ contains
     res%acc_normal_force = 0.0_wp
     res%acc_strut_force = 0.0_wp
     ke = body_kinetic_energy(model%body)
-    if (present(ke_body)) ke = ke_body
     pe = -model%body%mass*gravity*model%body%x(3)
     e_in = ke0 + (pe0 - pe) + w_thrust
     res%energy(k, 1) = ke
