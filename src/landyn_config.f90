@@ -10,11 +10,12 @@ module landyn_config
   public :: landyn_input_t
   public :: simulation_cfg_t, lander_cfg_t, engine_cfg_t, gears_cfg_t, primary_cfg_t, &
             secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, initial_cfg_t, output_cfg_t
-  public :: default_input, unset_real, is_set, max_stages, name_len, path_len
+  public :: default_input, unset_real, is_set, max_stages, name_len, path_len, integrator_names
 
   real(wp), parameter :: unset_real = -huge(1.0_wp)   !! marks a real input the deck did not give
   integer, parameter :: max_stages = 5                !! largest number of primary honeycomb stages
   integer, parameter :: name_len = 32                 !! length of law names
+  character(len=*), parameter :: integrator_names = 'fixed, adaptive'  !! values of &simulation integrator
   integer, parameter :: path_len = 1024               !! length of file names
 
   !> &simulation: time stepping and termination.

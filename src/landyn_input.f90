@@ -24,7 +24,7 @@ module landyn_input
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, engine_cfg_t, gears_cfg_t, &
                            primary_cfg_t, secondary_cfg_t, contact_cfg_t, friction_cfg_t, terrain_cfg_t, &
                            initial_cfg_t, output_cfg_t, default_input, unset_real, is_set, max_stages, &
-                           name_len, path_len
+                           name_len, path_len, integrator_names
   use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, is_digit, edit_distance, &
                             fmt_int => int_text, quoted => quote_text
   use landyn_files, only: read_whole_file
@@ -1343,8 +1343,8 @@ contains
                    'dt >= t_end/'//fmt_real(max_steps)//' = '//fmt_real(s%t_end/max_steps)// &
                    ' s (at most '//fmt_real(max_steps)//' time steps)')
     end if
-    call require(errors, in_name_list(s%integrator, 'adaptive, fixed'), pre, g, 'integrator', &
-                 quoted(trim(s%integrator)), "one of 'adaptive', 'fixed'")
+    call require(errors, in_name_list(s%integrator, integrator_names), pre, g, 'integrator', &
+                 quoted(trim(s%integrator)), 'one of '//quoted_list(integrator_names))
     call require(errors, s%tolerance > 0.0_wp, pre, g, 'tolerance', fmt_real(s%tolerance)//' m/s', 'tolerance > 0 m/s')
     call require(errors, s%dt_min > 0.0_wp, pre, g, 'dt_min', fmt_real(s%dt_min)//' s', 'dt_min > 0 s')
     call require(errors, s%dt_max >= s%dt_min, pre, g, 'dt_max', fmt_real(s%dt_max)//' s', &

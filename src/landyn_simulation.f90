@@ -3,7 +3,7 @@
 !! the run. Re-exports the model and result types the callers use.
 module landyn_simulation
   use landyn_kinds, only: wp
-  use landyn_config, only: landyn_input_t
+  use landyn_config, only: landyn_input_t, integrator_names
   use landyn_sim_core, only: sim_result_t, setup_model, model_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
                              sim_save, sim_restore, n_energy, energy_names
   use landyn_integrator, only: integrator_t
@@ -32,7 +32,7 @@ contains
       allocate (adaptive_integrator_t :: integ)
     case default
       stat = 2
-      errmsg = "&simulation: integrator = '"//trim(inp%simulation%integrator)//"' is not one of 'adaptive', 'fixed'"
+      errmsg = "&simulation: integrator = '"//trim(inp%simulation%integrator)//"' is not one of: "//integrator_names
     end select
   end subroutine make_integrator
 
