@@ -3,7 +3,7 @@
 
   integrator_study.py --exe build/release/landyn --src . [--cases 30] [--seed 9]
                       [--tolerances 3e-4,1e-4,5e-5,3e-5,1e-5] [--fixed-dts 4e-5,2e-5,1e-5,5e-6]
-                      [--jobs 2] [--cache DIR] [--csv OUT.csv] [--plot OUT.png]
+                      [--adaptive-extra 'event_resolution = 5e-6'] [--jobs 2] [--cache DIR] [--csv OUT.csv] [--plot OUT.png]
 
 Cases: the paper's load cases input/lc1.nml .. lc4.nml, decks A and B of impact_study.py and
 its seeded dispersion of `--cases` landings (vertical 2-5 m/s, horizontal 0-1.5 m/s in any
@@ -50,13 +50,13 @@ THRESHOLD_MM = 0.1          # dispersion cases above this crush error are counte
 PLOT_FLOOR_MM = 1e-6        # zero errors drawn at this value on the log axis
 
 
-def settings_text(scheme, value):
+def settings_text(scheme, value, extra=""):
     if scheme == "adaptive":
-        return "integrator = 'adaptive', tolerance = %.6e" % value
+        return "integrator = 'adaptive', tolerance = %.6e" % value + (", " + extra if extra else "")
     return "integrator = 'fixed', dt = %.6e" % value
 
 
-def make_deck(text, scheme, value):
+def make_deck(text, scheme, value, extra=""):
     """The deck with its &simulation group set to `scheme` at `value` (dt or tolerance).
 
     A `dt = ...` assignment in &simulation is replaced by the settings (so the fixed step is
@@ -67,7 +67,7 @@ def make_deck(text, scheme, value):
         raise ValueError("deck has no &simulation group")
     body = m.group(1)
     dt_re = re.compile(r"(?<![\w%])dt\s*=\s*[-+0-9.eEdD]+", re.I)
-    new = settings_text(scheme, value)
+    new = settings_text(scheme, value, extra)
     if scheme == "fixed" and dt_re.search(body):
         body = dt_re.sub(new, body, count=1)
     elif scheme == "adaptive" and dt_re.search(body):
@@ -141,6 +141,8 @@ def main():
     ap.add_argument("--seed", type=int, default=9)
     ap.add_argument("--tolerances", default="3e-4,1e-4,5e-5,3e-5,1e-5")
     ap.add_argument("--fixed-dts", default="4e-5,2e-5,1e-5,5e-6")
+    ap.add_argument("--adaptive-extra", default="",
+                    help="further &simulation settings of the adaptive runs, e.g. 'event_resolution = 5e-6'")
     ap.add_argument("--dt-ref", type=float, default=1.25e-6)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--cache", default=None, help="directory for the cached references (default: a temporary one)")
@@ -181,7 +183,7 @@ def main():
         for name, text in cases:
             for k, (scheme, v) in enumerate(settings):
                 tag = "%s_%s_%g" % (name, scheme, v)
-                futs[ex.submit(run, exe, d, tag, make_deck(text, scheme, v))] = ((scheme, v), name)
+                futs[ex.submit(run, exe, d, tag, make_deck(text, scheme, v, a.adaptive_extra))] = ((scheme, v), name)
         n_ref_cached = 0
         for f in cf.as_completed(futs):
             what, name = futs[f]
