@@ -6,9 +6,7 @@
 !! * Local error: the step is the leapfrog, whose velocity update (the kick) is the midpoint rule
 !!   with local error h^3/24 |a''|. a'' is estimated from the second divided difference of the
 !!   accelerations at t - h_last, t and t + h: of the body (angular ones times the lander's size)
-!!   and of every gear coordinate, weighted in the kinetic metric: by sqrt(its diagonal mass / the
-!!   body's mass), i.e. as the body velocity that carries the same kinetic energy (a footpad's
-!!   rattle on its soil spring need not be resolved like the body's motion). That estimate is held below
+!!   and of every gear coordinate (angles times their strut's length). That estimate is held below
 !!   `tolerance` [m/s] per step. Right after an event (where a'' is undefined) and at the first
 !!   step the first-order estimate h/2 |a(t+h) - a(t)| is used instead. The accelerations at t + h
 !!   are those the next step needs anyway: one force evaluation per accepted step.
@@ -27,6 +25,7 @@ module landyn_integrator_adaptive
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len
   use landyn_config, only: landyn_input_t
+  use landyn_gear, only: n_q, idx_len
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
                              sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
   use landyn_integrator, only: integrator_t
@@ -262,7 +261,7 @@ contains
     real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
     integer, intent(in) :: ng               !! number of gears [-]
     real(wp) :: err                         !! error / tolerance [-]
-    err = 0.5_wp*h*weighted_max(e1%acc - e0%acc, e1%alpha - e0%alpha, e1%qdd - e0%qdd, e0%wq, l_char, ng)/tol
+    err = 0.5_wp*h*weighted_max(e1%acc - e0%acc, e1%alpha - e0%alpha, e1%qdd - e0%qdd, e0%strut_len, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm
 
@@ -281,26 +280,28 @@ contains
     real(wp) :: err                         !! error / tolerance [-]
     err = h**3/24.0_wp*2.0_wp/(h + h_prev)*weighted_max((e1%acc - e0%acc)/h - (e0%acc - ep%acc)/h_prev, &
       (e1%alpha - e0%alpha)/h - (e0%alpha - ep%alpha)/h_prev, (e1%qdd - e0%qdd)/h - (e0%qdd - ep%qdd)/h_prev, &
-      e0%wq, l_char, ng)/tol
+      e0%strut_len, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm2
 
   !> Largest weighted component of a set of body and gear accelerations (or their differences): the
-  !! body's linear ones as they are, its angular ones times l_char (the velocity they give the
-  !! farthest footpad), each gear coordinate's times sqrt(its mass / the body's mass) (the body
-  !! velocity of the same kinetic energy: a 20 kg footpad's error counts 1/28 of the body's).
-  pure function weighted_max(d_acc, d_alpha, d_qdd, wq, l_char, ng) result(w)
+  !! body's linear ones as they are, its angular ones times l_char, each gear's strut lengths as they
+  !! are and its leg angles times their strut's length (all then in velocity units at the footpad
+  !! scale once multiplied by a time).
+  pure function weighted_max(d_acc, d_alpha, d_qdd, strut_len, l_char, ng) result(w)
     real(wp), intent(in) :: d_acc(3)           !! body linear [m/s^2]
     real(wp), intent(in) :: d_alpha(3)         !! body angular [rad/s^2]
     real(wp), intent(in) :: d_qdd(:, :)        !! (n_q, >= ng) gear coordinates [m/s^2, rad/s^2]
-    real(wp), intent(in) :: wq(:, :)           !! (n_q, >= ng) weights of the gear coordinates [-, m]
+    real(wp), intent(in) :: strut_len(:, :)    !! (3, >= ng) strut lengths [m]
     real(wp), intent(in) :: l_char             !! lever of the angular ones [m]
     integer, intent(in) :: ng                  !! number of gears [-]
     real(wp) :: w                              !! [m/s^2]
-    integer :: i
+    integer :: i, k
     w = max(maxval(abs(d_acc)), l_char*maxval(abs(d_alpha)))
     do i = 1, ng
-      w = max(w, maxval(wq(:, i)*abs(d_qdd(:, i))))
+      do k = 1, 3
+        w = max(w, abs(d_qdd(idx_len(k), i)), strut_len(k, i)*maxval(abs(d_qdd(idx_len(k) + 1:idx_len(k) + 2, i))))
+      end do
     end do
   end function weighted_max
 

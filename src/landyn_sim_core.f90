@@ -19,7 +19,7 @@ module landyn_sim_core
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
   use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, &
                          gear_dynamics, gear_integrate, gear_footpad, &
-                         gear_leg_momentum, gear_relative_momenta, gear_settle, gear_mass_matrix, n_q, idx_len
+                         gear_leg_momentum, gear_relative_momenta, gear_settle, n_q, idx_len
   use landyn_impact, only: system_velocity_projection
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
@@ -97,8 +97,6 @@ module landyn_sim_core
     real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
     real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
     real(wp) :: strut_len(3, max_gears) = 0.0_wp       !! strut lengths [m]
-    real(wp) :: wq(n_q, max_gears) = 0.0_wp            !! error weights of the gear coordinates: sqrt of
-                                                       !! their masses over the body's [-, m]
     logical :: locks_changed = .false.                 !! a strut locked or was released [-]
     ! discrete state after the evaluation: what an event changes
     integer :: mode(3, max_gears) = 0                  !! strut modes (strut_mode) [-]
@@ -470,7 +468,6 @@ contains
         gm(:, i) = mv3(model%gear(i)%rot, model%gear(i)%st%m_body)
         ev%qdd(:, i) = model%gear(i)%st%qdd
         ev%strut_len(:, i) = model%gear(i)%st%q(idx_len)
-        ev%wq(:, i) = sqrt(gear_mass_matrix(model%gear(i), model%gear(i)%st%q)/model%body%mass)
         ev%mode(:, i) = [strut_mode(model%gear(i), 1), strut_mode(model%gear(i), 2), strut_mode(model%gear(i), 3)]
         ev%contact(i) = ev%delta(i) > 0.0_wp
         ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
