@@ -24,7 +24,9 @@ TOL_MM = 0.5
 
 
 def run(exe, deck_text, dt, workdir, tag):
-    text, n = re.subn(r"(?m)^(\s*dt\s*=\s*)[0-9.eE+-]+", lambda m: m.group(1) + repr(dt), deck_text)
+    # the fixed scheme is stated: the decks follow the default integrator (adaptive) otherwise
+    text, n = re.subn(r"(?m)^(\s*)dt\s*=\s*[0-9.eE+-]+", lambda m: "%sintegrator = 'fixed', dt = %r" % (m.group(1), dt),
+                      deck_text)
     assert n == 1, "the deck must set dt on a line of its own"
     deck = os.path.join(workdir, tag + ".nml")
     out = os.path.join(workdir, tag + ".h5")

@@ -48,7 +48,7 @@ def dispersion(n, seed):
 def run(exe, d, name, deck, dt):
     path = os.path.join(d, "%s_%g.nml" % (name, dt))
     with open(path, "w") as f:
-        f.write(deck.replace("&simulation t_end = 1.0 /", "&simulation t_end = 1.0, dt = %.6e /" % dt))
+        f.write(deck.replace("&simulation t_end = 1.0 /", "&simulation integrator = 'fixed', t_end = 1.0, dt = %.6e /" % dt))
     out = path[:-4] + ".h5"
     t0 = time.perf_counter()
     p = subprocess.run([exe, path, "-q", "-o", out], capture_output=True, text=True)

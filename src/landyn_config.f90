@@ -21,7 +21,7 @@ module landyn_config
   !> &simulation: time stepping and termination.
   type :: simulation_cfg_t
     character(len=256) :: title = 'LANDYN demonstration lander, load case LC-1'
-    character(len=name_len) :: integrator = 'fixed'  !! time integrator: 'fixed' or 'adaptive'
+    character(len=name_len) :: integrator = 'adaptive'  !! time integrator: 'adaptive' or 'fixed'
     real(wp) :: dt = 5.0e-6_wp              !! fixed integrator: the time step; adaptive: the first step tried [s]
     real(wp) :: tolerance = 1.0e-7_wp       !! adaptive: local velocity error allowed per step [m/s]
     real(wp) :: dt_max = 1.0e-3_wp          !! adaptive: largest step [s]

@@ -502,8 +502,7 @@ contains
     real(wp), intent(in) :: h_sync              !! the stored velocities lag the positions by h_sync/2 [s]
     real(wp), intent(in) :: slack               !! a sample is due this close before its time [s]
     integer :: ng, i
-    real(wp) :: fnm, xt(3), ke_legs, e_el
-    type(velocities_t) :: kept
+    real(wp) :: fnm, xt(3)
 
     ng = sim%model%n_gears
     associate (model => sim%model)
@@ -544,22 +543,35 @@ contains
 
       ! ---- output sample (state at t with the forces at t)
       if (ev%t >= sim%loop%t_next_out - slack) then
-        ! the sample (its velocities and the audit's kinetic energies) with the velocities at t: the
-        ! stored ones, half a step behind, plus half a step of the accelerations just computed
-        call lead_velocities(model, 0.5_wp*h_sync, kept)
-        ke_legs = leg_energy(model, inp%simulation%gravity)
-        e_el = 0.0_wp
-        do i = 1, ng
-          if (ev%delta(i) > 0.0_wp) e_el = e_el + model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
-        end do
-        call record(res, model, ev%t, ev%ovl, ev%xd, ev%fground, ev%fn, ev%delta, ev%vd, sim%loop%w_normal, &
-                    sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
-                    inp%simulation%gravity)
-        call restore_velocities(model, kept)
+        call record_sample(sim, inp, res, ev, h_sync)
         sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
       end if
     end associate
   end subroutine sim_book
+
+  !> Records the output sample of the state at ev%t with the forces of its evaluation ev: its
+  !! velocities (and the audit's kinetic energies) synchronised to ev%t, i.e. the stored ones, half
+  !! a step behind, plus half a step (h_sync) of the accelerations just computed.
+  subroutine record_sample(sim, inp, res, ev, h_sync)
+    type(sim_t), intent(inout) :: sim           !! simulation at ev%t (velocities restored on return)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res    !! time series
+    type(sim_eval_t), intent(in) :: ev          !! evaluation of the state
+    real(wp), intent(in) :: h_sync              !! step the stored velocities lag by twice [s]
+    type(velocities_t) :: kept
+    real(wp) :: ke_legs, e_el
+    integer :: i
+    call lead_velocities(sim%model, 0.5_wp*h_sync, kept)
+    ke_legs = leg_energy(sim%model, inp%simulation%gravity)
+    e_el = 0.0_wp
+    do i = 1, sim%model%n_gears
+      if (ev%delta(i) > 0.0_wp) e_el = e_el + sim%model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
+    end do
+    call record(res, sim%model, ev%t, ev%ovl, ev%xd, ev%fground, ev%fn, ev%delta, ev%vd, sim%loop%w_normal, &
+                sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
+                inp%simulation%gravity)
+    call restore_velocities(sim%model, kept)
+  end subroutine record_sample
 
   !> Steps 4 and 6: semi-implicit Euler over dt for the body and the gears with the accelerations
   !! of the evaluation `ev`, the gears' constraint-violation correction, the velocity projection of
@@ -644,7 +656,7 @@ contains
       res%max_tilt = max(res%max_tilt, tilt*rad2deg)
       if (tilt > inp%simulation%tipover_angle) then
         res%tipped_over = .true.
-        call end_early(sim, inp, res, t, 'tipped over')
+        call end_early(sim, inp, res, t, dt, 'tipped over')
         done = .true.
         return
       end if
@@ -656,7 +668,7 @@ contains
       end if
       if (inp%simulation%stop_at_rest .and. sim%loop%rest_clock >= inp%simulation%rest_time) then
         res%at_rest = .true.
-        call end_early(sim, inp, res, t, 'at rest')
+        call end_early(sim, inp, res, t, dt, 'at rest')
         done = .true.
         return
       end if
@@ -677,16 +689,31 @@ contains
          all(ieee_is_finite(body%euler)) .and. all(ieee_is_finite(body%omega))
   end function body_is_finite
 
-  !> Ends the run before t_end: the reason, a final sample of the state at t, the summary.
-  subroutine end_early(sim, inp, res, t, reason)
+  !> Ends the run before t_end: the reason, a final sample of the state at t (unless one was just
+  !! recorded) with the forces of an evaluation of that state, the summary.
+  subroutine end_early(sim, inp, res, t, h_last, reason)
     type(sim_t), intent(in) :: sim              !! simulation at t
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     real(wp), intent(in) :: t                   !! time [s]
+    real(wp), intent(in) :: h_last              !! the step that reached t [s]
     character(len=*), intent(in) :: reason      !! end reason [-]
+    type(sim_t) :: work
+    type(sim_eval_t) :: ev
+    integer :: stat
+    character(len=msg_len) :: m2
     res%end_reason = reason
-    call record_final(res, sim%model, t, inp, sim%ke0, sim%pe0, sim%loop%w_normal, sim%loop%w_friction, &
-                      sim%loop%w_thrust, sim%loop%w_impact)
+    if (res%n_out > 0) then
+      if (res%t(res%n_out) >= t - 1.0e-12_wp) then
+        call finish(sim%model, res, t)
+        return
+      end if
+    end if
+    ! evaluated on a copy: the evaluation's lock decisions must not touch the final state
+    work = sim
+    m2 = ''
+    call sim_evaluate(work, inp, t, h_last, ev, stat, m2)
+    if (stat == 0) call record_sample(work, inp, res, ev, h_last)
     call finish(sim%model, res, t)
   end subroutine end_early
 
@@ -873,41 +900,6 @@ contains
     res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
     res%energy_residual = res%energy(k, 11)/res%energy_input
   end subroutine record
-
-  !> Records a final sample when the run ends between output times.
-  subroutine record_final(res, model, t, inp, ke0, pe0, w_normal, w_friction, w_thrust, w_impact)
-    type(sim_result_t), intent(inout) :: res      !! result
-    type(model_t), intent(in) :: model            !! model
-    real(wp), intent(in) :: t                     !! time [s]
-    type(landyn_input_t), intent(in) :: inp       !! input
-    real(wp), intent(in) :: ke0, pe0              !! initial energies [J]
-    real(wp), intent(in) :: w_normal, w_friction, w_thrust  !! accumulated works [J]
-    real(wp), intent(in) :: w_impact              !! energy dissipated in strut impacts [J]
-    real(wp) :: xd(3, max_gears), vd(3, max_gears), fg(3, max_gears), fn(max_gears), delta(max_gears)
-    real(wp) :: pos_g(3), vel_g(3), d_l(3), ke_legs, e_el
-    integer :: i
-    if (res%n_out > 0) then
-      if (res%t(res%n_out) >= t - 1.0e-12_wp) return
-    end if
-    ke_legs = 0.0_wp; e_el = 0.0_wp
-    do i = 1, res%n_gears
-      call gear_footpad(model%gear(i), pos_g, vel_g)
-      d_l = matmul(model%gear(i)%rot, pos_g)
-      xd(:, i) = body_point_position(model%body, d_l)
-      vd(:, i) = body_point_velocity(model%body, d_l) + matmul(model%body%r, matmul(model%gear(i)%rot, vel_g))
-      delta(i) = penetration(model%plane(i), xd(:, i))
-      fn(i) = 0.0_wp
-      fg(:, i) = 0.0_wp
-      if (delta(i) > 0.0_wp) then
-        fn(i) = model%contact%normal_force(delta(i), penetration_rate(model%plane(i), vd(:, i)), &
-                                           model%footpad(i)%contact)
-        e_el = e_el + model%contact%elastic_energy(delta(i), model%footpad(i)%contact)
-      end if
-    end do
-    ke_legs = leg_energy(model, inp%simulation%gravity)
-    call record(res, model, t, [0.0_wp, 0.0_wp, 0.0_wp], xd, fg, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
-                ke0, pe0, ke_legs, e_el, inp%simulation%gravity)
-  end subroutine record_final
 
   !> Fills the summary from the final model state.
   subroutine finish(model, res, t)

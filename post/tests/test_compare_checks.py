@@ -116,10 +116,11 @@ def test_relative_tolerance_scales_with_the_channel(lc1_short, lc3_short, tmp_pa
     r = run_tool("compare", lc3_short, lc1_short, "--channels", *ch, "--rtol-rms", "5", "--table-csv", table)
     with open(tmp_path / "t_timeseries.csv", newline="") as fh:
         rows = list(csv.DictReader(fh))
+    # the CSV holds 9 significant digits (relative rounding <= 5e-9 per number): compare to 2e-8
     for row in rows:
-        assert float(row["allowed_rms"]) == pytest.approx(0.05 * float(row["reference_range"]), rel=1e-9)
+        assert float(row["allowed_rms"]) == pytest.approx(0.05 * float(row["reference_range"]), rel=2e-8)
     res = load(lc1_short)
-    assert float(rows[1]["reference_range"]) == pytest.approx(np.ptp(res.strut_force[:, 0, 0]), rel=1e-9)
+    assert float(rows[1]["reference_range"]) == pytest.approx(np.ptp(res.strut_force[:, 0, 0]), rel=1e-8)
     assert r.returncode == (3 if any(row["result"] == "FAIL" for row in rows) else 0), r
 
 
