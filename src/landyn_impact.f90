@@ -33,7 +33,8 @@ module landyn_impact
   use landyn_body, only: body_t
   use landyn_gear, only: gear_t, n_q, n_phi, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_matrix
   use landyn_kinematics, only: mv3
-  use landyn_lapack, only: factor_spd_unblocked, solve_upper_triangular, solve_factored_spd_multi
+  use landyn_lapack, only: factor_spd_unblocked
+  use landyn_small_spd, only: small_upper_solve, small_upper_solve_multi
   implicit none
   private
 
@@ -144,9 +145,7 @@ contains
         ! [z, Z] = D_i^-1 [g_i, U_i] (one multi-column solve)
         rhs(1:n, 1) = g(o + 1:o + n)
         rhs(1:n, 2:7) = u(o + 1:o + n, :)
-        call solve_factored_spd_multi(n, 7, d(:, :, j), max_rows, rhs, max_rows, stat, m2, &
-                                      'system velocity projection (A M^-1 A^T)')
-        if (stat /= 0) then; errmsg = m2; return; end if
+        call small_upper_solve_multi(n, 7, d(:, :, j), max_rows, rhs, max_rows)
         z(o + 1:o + n) = rhs(1:n, 1)
         zz(o + 1:o + n, :) = rhs(1:n, 2:7)
         ! K += U_i^T Z_i, r += U_i^T z_i
@@ -167,14 +166,14 @@ contains
     call factor_spd_unblocked(6, kk, 6, stat, m2, 'system velocity projection (Woodbury capacitance)')
     if (stat /= 0) then; errmsg = m2; return; end if
     ! t = K^-1 r;  lam = z - Z t
-    call solve_upper_triangular(6, kk, 6, rr, .true.)
-    call solve_upper_triangular(6, kk, 6, rr, .false.)
+    call small_upper_solve(6, kk, 6, rr, .true.)
+    call small_upper_solve(6, kk, 6, rr, .false.)
     lam(1:nr) = z(1:nr) - matmul(zz(1:nr, :), rr)
     dissipated = 0.5_wp*dot_product(lam(1:nr), g(1:nr))
     ! y = S^-1 U^T lam;  dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y);  dv_b = -Mb^-1 sum C_i dqd_i.
     y = matmul(lam(1:nr), u(1:nr, :))
-    call solve_upper_triangular(6, s, 6, y, .true.)
-    call solve_upper_triangular(6, s, 6, y, .false.)
+    call small_upper_solve(6, s, 6, y, .true.)
+    call small_upper_solve(6, s, 6, y, .false.)
     db = 0.0_wp
     do j = 1, n_act
       i = act(j)

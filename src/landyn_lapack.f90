@@ -8,7 +8,7 @@ module landyn_lapack
   private
 
   public :: solve_general, solve_spd, factor_spd, solve_factored_spd, solve_spd_unblocked
-  public :: factor_spd_unblocked, solve_upper_triangular, solve_factored_spd_multi
+  public :: factor_spd_unblocked
 
   interface
     subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
@@ -160,7 +160,7 @@ contains
   end subroutine solve_factored_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
-  !! unblocked dpotf2 (upper triangle), for the solves of solve_upper_triangular.
+  !! unblocked dpotf2 (upper triangle), for the triangular solves of landyn_small_spd.
   subroutine factor_spd_unblocked(n, a, lda, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
@@ -178,38 +178,5 @@ contains
       write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotf2'
     end if
   end subroutine factor_spd_unblocked
-
-  !> x <- R^-1 x (transposed = .false.) or x <- R^-T x (transposed = .true.) for the upper
-  !! triangular factor R of factor_spd_unblocked (BLAS dtrsv).
-  subroutine solve_upper_triangular(n, r, ldr, x, transposed)
-    integer, intent(in) :: n                       !! order [-]
-    integer, intent(in) :: ldr                     !! leading dimension of r [-]
-    real(wp), intent(in) :: r(ldr, n)              !! upper triangular factor [any]
-    real(wp), intent(inout) :: x(n)                !! right-hand side in, solution out [any]
-    logical, intent(in) :: transposed              !! solve with R^T instead of R [-]
-    if (transposed) then
-      call dtrsv('U', 'T', 'N', n, r, ldr, x, 1)
-    else
-      call dtrsv('U', 'N', 'N', n, r, ldr, x, 1)
-    end if
-  end subroutine solve_upper_triangular
-
-  !> Solves A X = B for several right-hand sides with the Cholesky factor of factor_spd or
-  !! factor_spd_unblocked (LAPACK dpotrs: one pair of triangular solves for all columns).
-  subroutine solve_factored_spd_multi(n, nrhs, a, lda, b, ldb, stat, errmsg, what)
-    integer, intent(in) :: n                       !! order of the system [-]
-    integer, intent(in) :: nrhs                    !! number of right-hand sides [-]
-    integer, intent(in) :: lda                     !! leading dimension of a [-]
-    real(wp), intent(in) :: a(lda, n)              !! Cholesky factor (upper triangle) [any]
-    integer, intent(in) :: ldb                     !! leading dimension of b [-]
-    real(wp), intent(inout) :: b(ldb, nrhs)        !! right-hand sides in, solutions out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
-    character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    integer :: info
-    call dpotrs('U', n, nrhs, a, lda, b, ldb, info)
-    stat = info
-    if (info /= 0) write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotrs'
-  end subroutine solve_factored_spd_multi
 
 end module landyn_lapack

@@ -723,7 +723,9 @@ contains
   !! taken (bit for bit): the basis of rejected steps and event location.
   subroutine sim_save(sim, snap)
     type(sim_t), intent(in) :: sim              !! simulation
-    type(sim_snapshot_t), intent(out) :: snap   !! its evolving state
+    ! inout, not out: intent(out) would first reset the whole snapshot (max_gears gear states)
+    ! to its default values, a cost of the same order as the copy itself, at every step
+    type(sim_snapshot_t), intent(inout) :: snap !! its evolving state (previous contents replaced)
     integer :: i
     snap%body = sim%model%body
     do i = 1, sim%model%n_gears

@@ -3,12 +3,19 @@
 !! reference LAPACK dposv spends most of its ~5,000 instructions per call on blocking and argument
 !! handling; this unblocked version needs a few hundred. It is checked against LAPACK in
 !! tests/unit/test_small_spd.pf. The gear DAE itself (eq. 14) is solved with LAPACK.
+!!
+!! small_upper_solve and small_upper_solve_multi are the triangular solves with a Cholesky factor
+!! from LAPACK (landyn_lapack's factor_spd_unblocked) for the whole-system velocity projection,
+!! which runs at every step: the reference BLAS dtrsm/dtrsv spend most of their time on argument
+!! checks at orders <= 9. They do the same operations in the same order as dtrsv/dtrsm (upper,
+!! non-unit; the BLAS skip a column whose pivot entry is zero, which changes at most the sign of a zero),
+!! so that results are bit-identical to LAPACK's dpotrs.
 module landyn_small_spd
   use landyn_kinds, only: wp
   implicit none
   private
 
-  public :: small_spd_solve
+  public :: small_spd_solve, small_upper_solve, small_upper_solve_multi
 
 contains
 
@@ -58,5 +65,64 @@ contains
       b(i) = s/a(i, i)
     end do
   end subroutine small_spd_solve
+
+  !> x <- U^-T x (transposed) or x <- U^-1 x for an upper triangular U (BLAS dtrsv 'U', 'T'|'N', 'N'
+  !! with unit stride, same order of operations).
+  pure subroutine small_upper_solve(n, u, ldu, x, transposed)
+    integer, intent(in) :: n               !! order [-]
+    integer, intent(in) :: ldu             !! leading dimension of u [-]
+    real(wp), intent(in) :: u(ldu, n)      !! upper triangular factor [any]
+    real(wp), intent(inout) :: x(n)        !! right-hand side in, solution out [any]
+    logical, intent(in) :: transposed      !! solve with U^T instead of U [-]
+    integer :: i, j
+    real(wp) :: s
+    if (transposed) then
+      do j = 1, n
+        s = x(j)
+        do i = 1, j - 1
+          s = s - u(i, j)*x(i)
+        end do
+        x(j) = s/u(j, j)
+      end do
+    else
+      do j = n, 1, -1
+        x(j) = x(j)/u(j, j)
+        s = x(j)
+        do i = j - 1, 1, -1
+          x(i) = x(i) - s*u(i, j)
+        end do
+      end do
+    end if
+  end subroutine small_upper_solve
+
+  !> B <- (U^T U)^-1 B for the Cholesky factor U of an SPD matrix and several right-hand sides
+  !! (LAPACK dpotrs 'U': dtrsm with U^T, then with U; same order of operations).
+  pure subroutine small_upper_solve_multi(n, nrhs, u, ldu, b, ldb)
+    integer, intent(in) :: n               !! order [-]
+    integer, intent(in) :: nrhs            !! number of right-hand sides [-]
+    integer, intent(in) :: ldu             !! leading dimension of u [-]
+    real(wp), intent(in) :: u(ldu, n)      !! upper triangular Cholesky factor [any]
+    integer, intent(in) :: ldb             !! leading dimension of b [-]
+    real(wp), intent(inout) :: b(ldb, nrhs)  !! right-hand sides in, solutions out [any]
+    integer :: i, j, k
+    real(wp) :: s
+    do j = 1, nrhs
+      ! U^T y = b (dtrsm 'L', 'U', 'T', 'N')
+      do i = 1, n
+        s = b(i, j)
+        do k = 1, i - 1
+          s = s - u(k, i)*b(k, j)
+        end do
+        b(i, j) = s/u(i, i)
+      end do
+      ! U x = y (dtrsm 'L', 'U', 'N', 'N')
+      do k = n, 1, -1
+        b(k, j) = b(k, j)/u(k, k)
+        do i = 1, k - 1
+          b(i, j) = b(i, j) - b(k, j)*u(i, k)
+        end do
+      end do
+    end do
+  end subroutine small_upper_solve_multi
 
 end module landyn_small_spd
