@@ -32,6 +32,7 @@ module landyn_buffer
   contains
     procedure(resistance_iface), deferred :: resistance
     procedure(capacity_iface), deferred :: capacity
+    procedure(segment_iface), deferred :: segment
   end type buffer_law_t
 
   abstract interface
@@ -53,6 +54,14 @@ module landyn_buffer
       real(wp), intent(out) :: cap_pos   !! stroke available toward +s [m]
       real(wp), intent(out) :: cap_neg   !! stroke available toward -s [m] (0: rigid stop at s = 0)
     end subroutine capacity_iface
+    !> The piece of the law's force-stroke curve at stroke s: an integer that changes exactly where
+    !! the crush force jumps or a stop begins (a stage end, the end of the stroke), so that the
+    !! adaptive integrator can locate those instants as events. Its values mean nothing else.
+    pure integer function segment_iface(self, s)
+      import :: buffer_law_t, wp
+      class(buffer_law_t), intent(in) :: self
+      real(wp), intent(in) :: s          !! stroke [m]
+    end function segment_iface
   end interface
 
   !> Primary strut: multi-stage honeycomb crushed in shortening (eq. 21); rigid stop against
@@ -66,6 +75,7 @@ module landyn_buffer
   contains
     procedure :: resistance => primary_resistance
     procedure :: capacity => primary_capacity
+    procedure :: segment => primary_segment
   end type primary_honeycomb_t
 
   !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
@@ -79,6 +89,7 @@ module landyn_buffer
   contains
     procedure :: resistance => secondary_resistance
     procedure :: capacity => secondary_capacity
+    procedure :: segment => secondary_segment
   end type secondary_honeycomb_t
 
 contains
@@ -124,6 +135,20 @@ contains
     cap_neg = 0.0_wp
   end subroutine primary_capacity
 
+  !> Stage k (1..n_stages) while s <= stage_end(k), n_stages + 1 on the end-of-stroke stop.
+  pure integer function primary_segment(self, s) result(seg)
+    class(primary_honeycomb_t), intent(in) :: self
+    real(wp), intent(in) :: s          !! stroke (shortening positive) [m]
+    integer :: k
+    seg = self%n_stages + 1
+    do k = 1, self%n_stages
+      if (s <= self%stage_end(k)) then
+        seg = k
+        return
+      end if
+    end do
+  end function primary_segment
+
   pure subroutine secondary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
     class(secondary_honeycomb_t), intent(in) :: self
     real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
@@ -155,5 +180,14 @@ contains
     cap_pos = self%stroke_lengthening
     cap_neg = self%stroke_shortening
   end subroutine secondary_capacity
+
+  !> 0 within the stroke, +1 on the lengthening stop, -1 on the shortening stop.
+  pure integer function secondary_segment(self, s) result(seg)
+    class(secondary_honeycomb_t), intent(in) :: self
+    real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
+    seg = 0
+    if (s > self%stroke_lengthening) seg = 1
+    if (-s > self%stroke_shortening) seg = -1
+  end function secondary_segment
 
 end module landyn_buffer

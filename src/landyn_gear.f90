@@ -47,7 +47,7 @@ module landyn_gear
   public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t
   public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
-  public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle
+  public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle, gear_law_segments
   public :: max_rows, idx_len
   public :: n_q, n_phi
 
@@ -336,6 +336,19 @@ contains
     s = gear%sigma*(qv(idx_len) - gear%len0)
     sd = gear%sigma*qdv(idx_len)
   end subroutine strokes
+
+  !> The piece of each strut's buffer law at the current strokes (buffer_law_t%segment): changes
+  !! exactly at a stage end or where an end-of-stroke stop begins.
+  pure function gear_law_segments(gear) result(seg)
+    type(gear_t), intent(in) :: gear   !! gear
+    integer :: seg(3)                  !! segment of primary, left, right [-]
+    real(wp) :: s(3), sd(3)
+    integer :: k
+    call strokes(gear, gear%st%q, gear%st%qd, s, sd)
+    do k = 1, 3
+      seg(k) = gear%buffer(k)%law%segment(s(k))
+    end do
+  end function gear_law_segments
 
   !> Accelerations, buffer forces and the force on the body for the current state (Steps 2-4).
   !! f_foot is the ground force on the footpad and f_field the uniform field, both in the gear frame.

@@ -11,9 +11,10 @@
 !!   step the first-order estimate h/2 |a(t+h) - a(t)| is used instead. The accelerations at t + h
 !!   are those the next step needs anyway: one force evaluation per accepted step.
 !! * Events: a change of the discrete state over a step (a strut's mode: locked, crushing either
-!!   way or free; a footpad touching down or lifting off; a stick state; the tilt passing the
-!!   tip-over angle) is located by bisection: the step is retried at half length until the one
-!!   that contains the change is no longer than `event_resolution` [s].
+!!   way or free; a stage end or end-of-stroke stop of its buffer law; a footpad touching down or
+!!   lifting off; a stick state; the tilt passing the tip-over angle) is located by bisection:
+!!   the step is retried at half length until the one that contains the change is no longer than
+!!   `event_resolution` [s].
 !! * A step whose correction drifts or fails, or whose state is not finite, is retried at a
 !!   quarter of its length.
 !! * Steps end exactly on the output times and on t_end.
@@ -32,7 +33,7 @@ module landyn_integrator_adaptive
   implicit none
   private
 
-  public :: adaptive_integrator_t, error_norm, error_norm2
+  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change
 
   !> Adaptive integrator and its state between steps.
   type, extends(integrator_t) :: adaptive_integrator_t
@@ -307,14 +308,16 @@ contains
     end do
   end function weighted_max
 
-  !> The discrete state changed between two evaluations: a strut mode, a footpad contact, a stick
-  !! state, or the tilt crossed the tip-over angle.
+  !> The discrete state changed between two evaluations: a strut mode, the piece of a buffer law
+  !! (a stage end or an end-of-stroke stop crossed), a footpad contact, a stick state, or the tilt
+  !! crossed the tip-over angle.
   pure logical function discrete_change(e0, e1, ng, tip) result(changed)
     type(sim_eval_t), intent(in) :: e0      !! evaluation at the start of the step
     type(sim_eval_t), intent(in) :: e1      !! evaluation at its end
     integer, intent(in) :: ng               !! number of gears [-]
     real(wp), intent(in) :: tip             !! tip-over angle [rad]
-    changed = any(e0%mode(:, 1:ng) /= e1%mode(:, 1:ng)) .or. any(e0%contact(1:ng) .neqv. e1%contact(1:ng)) &
+    changed = any(e0%mode(:, 1:ng) /= e1%mode(:, 1:ng)) .or. any(e0%segment(:, 1:ng) /= e1%segment(:, 1:ng)) &
+              .or. any(e0%contact(1:ng) .neqv. e1%contact(1:ng)) &
               .or. any(e0%stuck(1:ng) .neqv. e1%stuck(1:ng)) .or. ((e0%tilt > tip) .neqv. (e1%tilt > tip))
   end function discrete_change
 

@@ -19,7 +19,7 @@ module landyn_sim_core
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
   use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, &
                          gear_dynamics, gear_integrate, gear_footpad, &
-                         gear_leg_momentum, gear_relative_momenta, gear_settle, n_q, idx_len
+                         gear_leg_momentum, gear_relative_momenta, gear_settle, gear_law_segments, n_q, idx_len
   use landyn_impact, only: system_velocity_projection
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
@@ -100,6 +100,7 @@ module landyn_sim_core
     logical :: locks_changed = .false.                 !! a strut locked or was released [-]
     ! discrete state after the evaluation: what an event changes
     integer :: mode(3, max_gears) = 0                  !! strut modes (strut_mode) [-]
+    integer :: segment(3, max_gears) = 0               !! piece of each buffer law (stage, stop) [-]
     logical :: contact(max_gears) = .false.            !! footpad in contact [-]
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
     real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
@@ -469,6 +470,7 @@ contains
         ev%qdd(:, i) = model%gear(i)%st%qdd
         ev%strut_len(:, i) = model%gear(i)%st%q(idx_len)
         ev%mode(:, i) = [strut_mode(model%gear(i), 1), strut_mode(model%gear(i), 2), strut_mode(model%gear(i), 3)]
+        ev%segment(:, i) = gear_law_segments(model%gear(i))
         ev%contact(i) = ev%delta(i) > 0.0_wp
         ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
       end do
