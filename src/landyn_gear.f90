@@ -44,8 +44,9 @@ module landyn_gear
   implicit none
   private
 
-  public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t
-  public :: gear_init, gear_dynamics, gear_integrate, gear_footpad, gear_mass_matrix, gear_generalized_forces
+  public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t, gear_eval_t
+  public :: gear_init, gear_evaluate, gear_commit, gear_prepare, gear_dynamics, gear_integrate
+  public :: gear_footpad, gear_mass_matrix, gear_generalized_forces
   public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
   public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle, gear_law_segments
   public :: max_rows, idx_len
@@ -118,6 +119,20 @@ module landyn_gear
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
     real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
   end type gear_state_t
+
+  !> What one evaluation of a gear decides and computes (gear_evaluate) from its committed state,
+  !! without changing it; gear_commit makes it the gear's state.
+  type :: gear_eval_t
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    real(wp) :: axial(3) = 0.0_wp                 !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    logical :: locked(3) = .true.                 !! strut locked [-]
+    integer :: dir(3) = 0                         !! sliding direction [-]
+    real(wp) :: s_lock(3) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    logical :: rigid = .false.                    !! the gear stays rigid [-]
+  end type gear_eval_t
 
   !> One landing gear: geometry, masses, buffers and state.
   type :: gear_t
@@ -207,14 +222,20 @@ contains
   end subroutine gear_init
 
   !> Footpad position and velocity in the gear frame.
-  pure subroutine gear_footpad(gear, pos, vel)
+  pure subroutine gear_footpad(gear, pos, vel, qd)
     type(gear_t), intent(in) :: gear     !! gear
     real(wp), intent(out) :: pos(3)      !! footpad joint position, gear frame [m]
     real(wp), intent(out) :: vel(3)      !! its velocity relative to the body, gear frame [m/s]
-    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3)
+    real(wp), intent(in), optional :: qd(n_q)  !! generalized velocities to use; default the gear's [m/s, rad/s]
+    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3), v(n_q)
     call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
+    if (present(qd)) then
+      v = qd
+    else
+      v = gear%st%qd
+    end if
     pos = gear%geom%a + gear%st%q(1)*u
-    vel = gear%st%qd(1)*u + gear%st%q(1)*(du1*gear%st%qd(2) + du2*gear%st%qd(3))
+    vel = v(1)*u + gear%st%q(1)*(du1*v(2) + du2*v(3))
   end subroutine gear_footpad
 
   !> Upper joint, axis and axis partials of each strut at q (computed once per use).
@@ -368,8 +389,9 @@ contains
   !! work of the angular acceleration during an impact (an energy audit error of ~0.2 % in
   !! landings with rotation). The remaining frame terms (centrifugal variation over the leg,
   !! Coriolis) are two orders smaller at the body rates of a landing and are neglected.
-  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt, alpha)
-    type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
+  subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha)
+    type(gear_t), intent(in) :: gear             !! gear with its committed state (unchanged)
+    type(gear_eval_t), intent(out) :: ge         !! accelerations, buffer forces, lock decisions, body load
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
     integer, intent(out) :: stat                 !! 0 on success
@@ -386,13 +408,23 @@ contains
     logical :: changed, done, tried(3), released(3), stop_hit(3)
 
     stat = 0
+    ! the evaluation starts from the committed decisions
+    ge%qdd = gear%st%qdd
+    ge%axial = gear%st%axial
+    ge%f_body = gear%st%f_body
+    ge%m_body = gear%st%m_body
+    ge%locked = gear%st%locked
+    ge%dir = gear%st%dir
+    ge%s_lock = gear%st%s_lock
+    ge%tube_bound = gear%st%tube_bound
+    ge%rigid = gear%st%rigid
     ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
     ! secondary forces (landyn_tube_friction). Off by default: then nothing here runs.
-    if (gear%tube%on) call update_tube_bound(gear)
+    if (gear%tube%on) ge%tube_bound = tube_bound_now(gear)
     q_alp = 0.0_wp
     stop_hit = .false.
-    if (gear%st%rigid .and. all(gear%st%locked)) then
-      call rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg, alpha)
+    if (ge%rigid .and. all(ge%locked)) then
+      call rigid_dynamics(gear, ge, f_foot, f_field, done, stat, errmsg, alpha)
       if (stat /= 0 .or. done) return
     end if
     call strut_kinematics(gear, gear%st%q, sk)
@@ -409,23 +441,23 @@ contains
     do k = 1, 3
       call gear%buffer(k)%law%resistance(s(k), sd(k), gear%st%s_hismin(k), gear%st%s_hismax(k), fpos(k), fneg(k))
     end do
-    if (gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
+    if (gear%tube%on) call add_tube_bound(ge%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
     ! Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
     ! into a rigid stop is locked (plastic impact on the stop).
     do k = 1, 3
-      if (.not. gear%st%locked(k)) then
-        if (sd(k) > 0.0_wp) gear%st%dir(k) = 1
-        if (sd(k) < 0.0_wp) gear%st%dir(k) = -1
-        if (gear%st%dir(k) > 0) then
-          gear%st%axial(k) = -gear%sigma(k)*fpos(k)
-          if (fpos(k) >= rigid_force) gear%st%locked(k) = .true.
+      if (.not. ge%locked(k)) then
+        if (sd(k) > 0.0_wp) ge%dir(k) = 1
+        if (sd(k) < 0.0_wp) ge%dir(k) = -1
+        if (ge%dir(k) > 0) then
+          ge%axial(k) = -gear%sigma(k)*fpos(k)
+          if (fpos(k) >= rigid_force) ge%locked(k) = .true.
           if (fpos(k) >= rigid_force) stop_hit(k) = .true.
         else
-          gear%st%axial(k) = gear%sigma(k)*fneg(k)
-          if (fneg(k) >= rigid_force) gear%st%locked(k) = .true.
+          ge%axial(k) = gear%sigma(k)*fneg(k)
+          if (fneg(k) >= rigid_force) ge%locked(k) = .true.
           if (fneg(k) >= rigid_force) stop_hit(k) = .true.
         end if
-        if (gear%st%locked(k)) gear%st%s_lock(k) = s(k)
+        if (ge%locked(k)) ge%s_lock(k) = s(k)
       end if
     end do
 
@@ -439,7 +471,7 @@ contains
       b(1:n_phi) = gam
       row_of = 0
       do k = 1, 3
-        if (gear%st%locked(k)) then
+        if (ge%locked(k)) then
           nrow = nrow + 1
           a(nrow, :) = 0.0_wp
           a(nrow, idx_len(k)) = 1.0_wp
@@ -450,11 +482,11 @@ contains
           if (present(dt) .and. .not. stop_hit(k)) b(nrow) = -gear%st%qd(idx_len(k))/dt
           row_of(k) = nrow
         else
-          q_buf(idx_len(k)) = gear%st%axial(k)
+          q_buf(idx_len(k)) = ge%axial(k)
         end if
       end do
       q_tot = q_ine + q_grv + q_ext + q_buf + q_alp
-      call solve_reduced(nrow, a, b, mdiag, q_tot, gear%st%qdd, lam, stat, errmsg)
+      call solve_reduced(nrow, a, b, mdiag, q_tot, ge%qdd, lam, stat, errmsg)
       if (stat /= 0) return
       ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
       changed = .false.
@@ -462,11 +494,11 @@ contains
         ! A crushing strut (nonzero bound in its direction of motion) that would reverse within
         ! the step is locked for the step, to be checked against its bounds below.
         do k = 1, 3
-          if (gear%st%locked(k) .or. released(k)) cycle
-          if (gear%st%dir(k) > 0 .and. fpos(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%st%qdd(idx_len(k))*dt <= 0.0_wp &
-              .or. gear%st%dir(k) < 0 .and. fneg(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*gear%st%qdd(idx_len(k))*dt >= 0.0_wp) then
-            gear%st%locked(k) = .true.
-            gear%st%s_lock(k) = s(k)
+          if (ge%locked(k) .or. released(k)) cycle
+          if (ge%dir(k) > 0 .and. fpos(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*ge%qdd(idx_len(k))*dt <= 0.0_wp &
+              .or. ge%dir(k) < 0 .and. fneg(k) > 0.0_wp .and. sd(k) + gear%sigma(k)*ge%qdd(idx_len(k))*dt >= 0.0_wp) then
+            ge%locked(k) = .true.
+            ge%s_lock(k) = s(k)
             tried(k) = .true.
             changed = .true.
           end if
@@ -474,23 +506,23 @@ contains
         if (changed) cycle
       end if
       do k = 1, 3
-        if (.not. gear%st%locked(k)) cycle
-        gear%st%axial(k) = -lam(row_of(k))
+        if (.not. ge%locked(k)) cycle
+        ge%axial(k) = -lam(row_of(k))
         ! Generalized force of the lock on the stroke s is sigma*axial: negative when it holds the
         ! strut against motion toward +s (bounded by f_pos), positive against -s (bounded by f_neg).
-        demand = gear%sigma(k)*gear%st%axial(k)
+        demand = gear%sigma(k)*ge%axial(k)
         if (-demand > fpos(k)) then
-          gear%st%locked(k) = .false.
-          gear%st%dir(k) = 1
-          gear%st%axial(k) = -gear%sigma(k)*fpos(k)
+          ge%locked(k) = .false.
+          ge%dir(k) = 1
+          ge%axial(k) = -gear%sigma(k)*fpos(k)
           changed = .true.
         else if (demand > fneg(k)) then
-          gear%st%locked(k) = .false.
-          gear%st%dir(k) = -1
-          gear%st%axial(k) = gear%sigma(k)*fneg(k)
+          ge%locked(k) = .false.
+          ge%dir(k) = -1
+          ge%axial(k) = gear%sigma(k)*fneg(k)
           changed = .true.
         end if
-        if (.not. gear%st%locked(k) .and. tried(k)) released(k) = .true.
+        if (.not. ge%locked(k) .and. tried(k)) released(k) = .true.
       end do
       if (.not. changed) exit
     end do
@@ -498,25 +530,77 @@ contains
     ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
     ! included) receives the ground force minus the rate of the legs' relative momentum; in the
     ! massless-leg limit this is eq. 11's J^-T N applied at the footpad.
-    call relative_inertia(gear, sk, f_rel, m_rel)
-    gear%st%f_body = f_foot - f_rel
-    gear%st%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
-  end subroutine gear_dynamics
+    call relative_inertia(gear, sk, ge%qdd, f_rel, m_rel)
+    ge%f_body = f_foot - f_rel
+    ge%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
+  end subroutine gear_evaluate
 
   !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
   !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
-  pure subroutine update_tube_bound(gear)
-    type(gear_t), intent(inout) :: gear    !! gear; tube_bound is updated
+  pure real(wp) function tube_bound_now(gear) result(bound)
+    type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces
     type(strut_kin_t) :: sk(3)
     call strut_kinematics(gear, gear%st%q, sk)
-    gear%st%tube_bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
-  end subroutine update_tube_bound
+    bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
+  end function tube_bound_now
 
   !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
   !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
   !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
-  subroutine rigid_dynamics(gear, f_foot, f_field, done, stat, errmsg, alpha)
-    type(gear_t), intent(inout) :: gear          !! rigid gear
+  subroutine rigid_dynamics(gear, ge, f_foot, f_field, done, stat, errmsg, alpha)
+    type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
+    type(gear_eval_t), intent(inout) :: ge       !! its evaluation
+    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+    real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
+    logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+    type(gear_state_t) :: c
+    stat = 0
+    done = .false.
+    if (gear%st%rigid_cache) then
+      call rigid_solve(gear, gear%st, ge, f_foot, f_field, done, stat, errmsg, alpha)
+    else
+      ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
+      c = gear%st
+      call rigid_cache(gear, c, stat, errmsg)
+      if (stat /= 0) return
+      call rigid_solve(gear, c, ge, f_foot, f_field, done, stat, errmsg, alpha)
+    end if
+  end subroutine rigid_dynamics
+
+  !> The rigid gear's caches (strut kinematics, mass matrix, constraint rows with the three lock rows
+  !! and the Cholesky factor of A M^-1 A^T), computed from its coordinates.
+  subroutine rigid_cache(gear, c, stat, errmsg)
+    type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
+    type(gear_state_t), intent(inout) :: c       !! state whose caches are set
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    integer :: k, i, j, nrow
+    nrow = n_phi + 3
+    call strut_kinematics(gear, c%q, c%sk_c)
+    c%mdiag_c = gear_mass_matrix(gear, c%q)
+    c%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, c%q)
+    do k = 1, 3
+      c%a_c(n_phi + k, :) = 0.0_wp
+      c%a_c(n_phi + k, idx_len(k)) = 1.0_wp
+    end do
+    do j = 1, nrow
+      do i = 1, j
+        c%chol_c(i, j) = sum(c%a_c(i, :)*c%a_c(j, :)/c%mdiag_c)
+      end do
+    end do
+    call factor_spd(nrow, c%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
+    if (stat /= 0) return
+    c%rigid_cache = .true.
+  end subroutine rigid_cache
+
+  !> The lock forces of a rigid gear with its cached factor (rigid_dynamics).
+  subroutine rigid_solve(gear, c, ge, f_foot, f_field, done, stat, errmsg, alpha)
+    type(gear_t), intent(in) :: gear             !! rigid gear
+    type(gear_state_t), intent(in) :: c          !! its state with valid caches
+    type(gear_eval_t), intent(inout) :: ge       !! its evaluation
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
@@ -525,54 +609,83 @@ contains
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q)
     real(wp) :: s(3), sd(3), fpos, fneg, demand
-    integer :: k, i, j, nrow
+    integer :: k, i, nrow
     stat = 0
     done = .false.
     nrow = n_phi + 3
-    if (.not. gear%st%rigid_cache) then
-      call strut_kinematics(gear, gear%st%q, gear%st%sk_c)
-      gear%st%mdiag_c = gear_mass_matrix(gear, gear%st%q)
-      gear%st%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, gear%st%q)
-      do k = 1, 3
-        gear%st%a_c(n_phi + k, :) = 0.0_wp
-        gear%st%a_c(n_phi + k, idx_len(k)) = 1.0_wp
-      end do
-      do j = 1, nrow
-        do i = 1, j
-          gear%st%chol_c(i, j) = sum(gear%st%a_c(i, :)*gear%st%a_c(j, :)/gear%st%mdiag_c)
-        end do
-      end do
-      call factor_spd(nrow, gear%st%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
-      if (stat /= 0) return
-      gear%st%rigid_cache = .true.
-    end if
     zero = 0.0_wp
-    call generalized_forces(gear, gear%st%q, zero, gear%st%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
+    call generalized_forces(gear, c%q, zero, c%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
     qf = q_grv + q_ext
-    if (present(alpha)) qf = qf + alpha_forces(gear, gear%st%q, gear%st%sk_c, alpha)
-    qf = qf/gear%st%mdiag_c
+    if (present(alpha)) qf = qf + alpha_forces(gear, c%q, c%sk_c, alpha)
+    qf = qf/c%mdiag_c
     do i = 1, nrow
-      lam(i) = dot_product(gear%st%a_c(i, :), qf)
+      lam(i) = dot_product(c%a_c(i, :), qf)
     end do
-    call solve_factored_spd(nrow, gear%st%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
+    call solve_factored_spd(nrow, c%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
     if (stat /= 0) return
-    call strokes(gear, gear%st%q, zero, s, sd)
+    call strokes(gear, c%q, zero, s, sd)
     do k = 1, 3
-      gear%st%axial(k) = -lam(n_phi + k)
-      call gear%buffer(k)%law%resistance(s(k), 0.0_wp, gear%st%s_hismin(k), gear%st%s_hismax(k), fpos, fneg)
-      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos, fneg)   ! tube friction (eq. 24)
-      demand = gear%sigma(k)*gear%st%axial(k)
+      ge%axial(k) = -lam(n_phi + k)
+      call gear%buffer(k)%law%resistance(s(k), 0.0_wp, c%s_hismin(k), c%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(ge%tube_bound, fpos, fneg)   ! tube friction (eq. 24)
+      demand = gear%sigma(k)*ge%axial(k)
       if (-demand > fpos .or. demand > fneg) then
-        gear%st%rigid = .false.
-        gear%st%rigid_cache = .false.
+        ge%rigid = .false.
         return
       end if
     end do
-    gear%st%qdd = 0.0_wp
-    gear%st%f_body = f_foot
-    gear%st%m_body = cross3(gear%geom%a + gear%st%q(1)*gear%st%sk_c(1)%u, f_foot)
+    ge%qdd = 0.0_wp
+    ge%f_body = f_foot
+    ge%m_body = cross3(gear%geom%a + c%q(1)*c%sk_c(1)%u, f_foot)
     done = .true.
-  end subroutine rigid_dynamics
+  end subroutine rigid_solve
+
+  !> Evaluates the gear (gear_evaluate) and commits the result at once (gear_commit), preparing a
+  !! rigid gear's caches first: the gear alone, as the unit tests drive it.
+  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt, alpha)
+    type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
+    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
+    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+    type(gear_eval_t) :: ge
+    call gear_prepare(gear, stat, errmsg)
+    if (stat /= 0) return
+    call gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha)
+    if (stat /= 0) return
+    call gear_commit(gear, ge)
+  end subroutine gear_dynamics
+
+  !> Makes an evaluation (gear_evaluate) the gear's state: accelerations, buffer forces, lock
+  !! decisions, the load on the body; a gear that broke loose from the rigid state leaves it.
+  pure subroutine gear_commit(gear, ge)
+    type(gear_t), intent(inout) :: gear          !! gear
+    type(gear_eval_t), intent(in) :: ge          !! its evaluation
+    gear%st%qdd = ge%qdd
+    gear%st%axial = ge%axial
+    gear%st%f_body = ge%f_body
+    gear%st%m_body = ge%m_body
+    gear%st%locked = ge%locked
+    gear%st%dir = ge%dir
+    gear%st%s_lock = ge%s_lock
+    gear%st%tube_bound = ge%tube_bound
+    if (gear%st%rigid .and. .not. ge%rigid) then
+      gear%st%rigid = .false.
+      gear%st%rigid_cache = .false.
+    end if
+  end subroutine gear_commit
+
+  !> Computes the caches of a gear that has become rigid (gear_settle), so that evaluating it needs
+  !! only the cached factor. Nothing is done for a gear that is not rigid or already prepared.
+  subroutine gear_prepare(gear, stat, errmsg)
+    type(gear_t), intent(inout) :: gear          !! gear
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    stat = 0
+    if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, stat, errmsg)
+  end subroutine gear_prepare
 
   !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
   !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
@@ -585,12 +698,13 @@ contains
     real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
     type(strut_kin_t) :: sk(3)
     call strut_kinematics(gear, gear%st%q, sk)
-    call relative_inertia(gear, sk, f_rel, m_rel)
+    call relative_inertia(gear, sk, gear%st%qdd, f_rel, m_rel)
   end subroutine gear_relative_inertia
 
-  pure subroutine relative_inertia(gear, sk, f_rel, m_rel)
-    type(gear_t), intent(in) :: gear       !! gear with qdd set
+  pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel)
+    type(gear_t), intent(in) :: gear       !! gear (q, qd)
     type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
+    real(wp), intent(in) :: qdd(n_q)       !! generalized accelerations [m/s^2, rad/s^2]
     real(wp), intent(out) :: f_rel(3)      !! relative momentum rate, gear frame [N]
     real(wp), intent(out) :: m_rel(3)      !! relative angular momentum rate about O_L [N m]
     integer :: k, i0
@@ -599,10 +713,10 @@ contains
     m_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%st%q(i0 + 1); ld = gear%st%qd(i0 + 1); ldd = gear%st%qdd(i0 + 1)
+      len = gear%st%q(i0 + 1); ld = gear%st%qd(i0 + 1); ldd = qdd(i0 + 1)
       t1d = gear%st%qd(i0 + 2); t2d = gear%st%qd(i0 + 3)
       ud = sk(k)%u1*t1d + sk(k)%u2*t2d
-      udd = sk(k)%u1*gear%st%qdd(i0 + 2) + sk(k)%u2*gear%st%qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
+      udd = sk(k)%u1*qdd(i0 + 2) + sk(k)%u2*qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
             + 2.0_wp*sk(k)%u12*t1d*t2d + sk(k)%u22*t2d*t2d
       s1 = gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       sm = gear%s_0(k) + s1

@@ -188,7 +188,7 @@ contains
     self%h_last = h
     call sim_book(sim, inp, res, ev_new, h, self%slack)
     call sim_accept(sim, inp, res, t_new, h, done, stat, errmsg, progress_unit, &
-                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp)
+                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp, ev_new)
     if (done) return
     if (t_new >= self%t_end) then
       res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time

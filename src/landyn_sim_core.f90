@@ -17,8 +17,8 @@ module landyn_sim_core
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3, mtv3
   use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
                          body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
-  use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, &
-                         gear_dynamics, gear_integrate, gear_footpad, &
+  use landyn_gear, only: gear_t, gear_state_t, gear_eval_t, strut_mass_t, gear_init, &
+                         gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, &
                          gear_leg_momentum, gear_relative_momenta, gear_settle, gear_law_segments, n_q, idx_len
   use landyn_impact, only: system_velocity_projection
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
@@ -95,11 +95,13 @@ module landyn_sim_core
     real(wp) :: acc(3) = 0.0_wp                        !! mass-centre acceleration, global [m/s^2]
     real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
     real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
+    type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
+                                                       !! forces, lock decisions (committed by sim_advance)
     real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
     real(wp) :: strut_len(3, max_gears) = 0.0_wp       !! strut lengths [m]
     logical :: locks_changed = .false.                 !! a strut locked or was released [-]
     ! discrete state after the evaluation: what an event changes
-    integer :: mode(3, max_gears) = 0                  !! strut modes (strut_mode) [-]
+    integer :: mode(3, max_gears) = 0                  !! strut modes (strut_modes) [-]
     integer :: segment(3, max_gears) = 0               !! piece of each buffer law (stage, stop) [-]
     logical :: contact(max_gears) = .false.            !! footpad in contact [-]
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
@@ -382,10 +384,11 @@ contains
   !> Forces and accelerations of the state at time t for a step of dt to come (Steps 2, 3-4 and 6
   !! of Fig. 6): footpad positions and velocities, ground forces from a trial copy of the footpad
   !! states, each gear's crush logic and DAE (dt enters only the velocity-level lock decisions),
-  !! the loads on the body and its accelerations. The model's accelerations, strut forces and
-  !! modes are set; nothing is committed and no accumulator or result changes.
+  !! the loads on the body and its accelerations. The simulation is not changed (intent(in)):
+  !! the accelerations, strut forces, lock decisions and footpad states are the evaluation's, and
+  !! sim_advance commits the evaluation the step is taken with.
   subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field, v_lead)
-    type(sim_t), intent(inout) :: sim           !! simulation (accelerations and strut modes updated)
+    type(sim_t), intent(in) :: sim              !! simulation (unchanged)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     real(wp), intent(in) :: t                   !! time of the state [s]
     real(wp), intent(in) :: dt                  !! step to come [s]
@@ -393,19 +396,18 @@ contains
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     real(wp), intent(in), optional :: acc_field(3)    !! body acceleration for the legs' frame field, global;
-                                                      !! default: the last evaluation's [m/s^2]
+                                                      !! default: the committed (last step's) one [m/s^2]
     real(wp), intent(in), optional :: alpha_field(3)  !! body angular acceleration for it, lander axes;
-                                                      !! default: the last evaluation's [rad/s^2]
+                                                      !! default: the committed one [rad/s^2]
     real(wp), intent(in), optional :: v_lead          !! the footpad velocities (contact damping, friction) are
                                                       !! taken with the stored velocities advanced by v_lead
-                                                      !! times the last accelerations (the leapfrog's velocities
-                                                      !! lag the positions by half a step); default 0 [s]
+                                                      !! times the committed accelerations (the leapfrog's
+                                                      !! velocities lag the positions by half a step); default 0 [s]
     integer :: ng, i
-    type(velocities_t) :: kept
+    type(body_t) :: body
     logical :: thrusting
-    real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
+    real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), qd_l(n_q)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
-    logical :: was_locked(3)
     character(len=msg_len) :: m2
 
     stat = 0
@@ -413,13 +415,24 @@ contains
     ev%t = t
     associate (model => sim%model)
       r = model%body%r
+      ! the body as this evaluation sees it: its velocities led for the footpads, then its
+      ! accelerations for the legs' frame field and the new ones
+      body = model%body
+      if (present(v_lead)) then
+        body%v = model%body%v + v_lead*model%body%acc
+        body%omega = model%body%omega + v_lead*model%body%alpha
+      end if
       ! ---- Step 2: footpads and ground forces
-      if (present(v_lead)) call lead_velocities(model, v_lead, kept)
       do i = 1, ng
-        call gear_footpad(model%gear(i), pos_g, vel_g)
+        if (present(v_lead)) then
+          qd_l = model%gear(i)%st%qd + v_lead*model%gear(i)%st%qdd
+          call gear_footpad(model%gear(i), pos_g, vel_g, qd_l)
+        else
+          call gear_footpad(model%gear(i), pos_g, vel_g)
+        end if
         d_l = mv3(model%gear(i)%rot, pos_g)
-        ev%xd(:, i) = body_point_position(model%body, d_l)
-        ev%vd(:, i) = body_point_velocity(model%body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
+        ev%xd(:, i) = body_point_position(body, d_l)
+        ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
         ev%delta(i) = penetration(model%plane(i), ev%xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), ev%vd(:, i))
         ! trial footpad state of this step: committed with the step (sim_advance)
@@ -441,7 +454,8 @@ contains
         end if
         ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])
       end do
-      if (present(v_lead)) call restore_velocities(model, kept)
+      body%v = model%body%v
+      body%omega = model%body%omega
       thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
       thrust_l = 0.0_wp
       if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
@@ -450,26 +464,27 @@ contains
       ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
       ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
       ! evaluation's, an integrator may pass a better estimate.
-      if (present(acc_field)) model%body%acc = acc_field
-      if (present(alpha_field)) model%body%alpha = alpha_field
+      if (present(acc_field)) body%acc = acc_field
+      if (present(alpha_field)) body%alpha = alpha_field
       force = model%body%mass*model%g_vec
       moment = 0.0_wp
       ev%locks_changed = .false.
       do i = 1, ng
-        field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(model%body, model%point_a(:, i)))
+        field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
         ffoot = mtv3(model%gear(i)%rot, mtv3(r, ev%fground(:, i)))
-        was_locked = model%gear(i)%st%locked
-        call gear_dynamics(model%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, model%body%alpha))
+        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, body%alpha))
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           return
         end if
-        if (any(was_locked .neqv. model%gear(i)%st%locked)) ev%locks_changed = .true.
-        gf(:, i) = mv3(model%gear(i)%rot, model%gear(i)%st%f_body)
-        gm(:, i) = mv3(model%gear(i)%rot, model%gear(i)%st%m_body)
-        ev%qdd(:, i) = model%gear(i)%st%qdd
+        associate (ge => ev%gear(i))
+          if (any(model%gear(i)%st%locked .neqv. ge%locked)) ev%locks_changed = .true.
+          gf(:, i) = mv3(model%gear(i)%rot, ge%f_body)
+          gm(:, i) = mv3(model%gear(i)%rot, ge%m_body)
+          ev%qdd(:, i) = ge%qdd
+          ev%mode(:, i) = strut_modes(ge%locked, ge%axial, ge%dir)
+        end associate
         ev%strut_len(:, i) = model%gear(i)%st%q(idx_len)
-        ev%mode(:, i) = [strut_mode(model%gear(i), 1), strut_mode(model%gear(i), 2), strut_mode(model%gear(i), 3)]
         ev%segment(:, i) = gear_law_segments(model%gear(i))
         ev%contact(i) = ev%delta(i) > 0.0_wp
         ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
@@ -483,10 +498,10 @@ contains
       end if
       force = force + ev%thrust_g
       ! ---- Step 6: body accelerations
-      call body_accelerations(model%body, force, moment)
-      ev%acc = model%body%acc
-      ev%alpha = model%body%alpha
-      ev%ovl = mtv3(r, model%body%acc - model%g_vec)/g_earth
+      call body_accelerations(body, force, moment)
+      ev%acc = body%acc
+      ev%alpha = body%alpha
+      ev%ovl = mtv3(r, body%acc - model%g_vec)/g_earth
       ev%tilt = acos(max(-1.0_wp, min(1.0_wp, r(3, 3))))
     end associate
   end subroutine sim_evaluate
@@ -539,8 +554,8 @@ contains
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
       do i = 1, ng
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
-        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(model%gear(i)%st%axial))
-        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(model%gear(i)%st%axial))
+        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(ev%gear(i)%axial))
+        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(ev%gear(i)%axial))
       end do
 
       ! ---- output sample (state at t with the forces at t)
@@ -563,13 +578,13 @@ contains
     type(velocities_t) :: kept
     real(wp) :: ke_legs, e_el
     integer :: i
-    call lead_velocities(sim%model, 0.5_wp*h_sync, kept)
+    call lead_velocities(sim%model, 0.5_wp*h_sync, ev, kept)
     ke_legs = leg_energy(sim%model, inp%simulation%gravity)
     e_el = 0.0_wp
     do i = 1, sim%model%n_gears
       if (ev%delta(i) > 0.0_wp) e_el = e_el + sim%model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
     end do
-    call record(res, sim%model, ev%t, ev%ovl, ev%xd, ev%fground, ev%fn, ev%delta, ev%vd, sim%loop%w_normal, &
+    call record(res, sim%model, ev, sim%loop%w_normal, &
                 sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
                 inp%simulation%gravity)
     call restore_velocities(sim%model, kept)
@@ -596,6 +611,12 @@ contains
 
     ng = sim%model%n_gears
     associate (model => sim%model)
+      ! ---- commit the evaluation the step is taken with: accelerations, strut forces and modes
+      model%body%acc = ev%acc
+      model%body%alpha = ev%alpha
+      do i = 1, ng
+        call gear_commit(model%gear(i), ev%gear(i))
+      end do
       call body_step(model%body, dt, kick)
       do i = 1, ng
         call gear_integrate(model%gear(i), dt, inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
@@ -615,6 +636,11 @@ contains
       model%footpad(1:ng) = ev%trial(1:ng)
       do i = 1, ng
         call gear_settle(model%gear(i))
+        call gear_prepare(model%gear(i), stat, m2)
+        if (stat /= 0) then
+          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', ev%t + dt, ' s: ', trim(m2)
+          return
+        end if
       end do
       sim%loop%n = sim%loop%n + 1
     end associate
@@ -622,7 +648,7 @@ contains
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
   !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = 4).
-  subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due)
+  subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due, ev)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
@@ -633,6 +659,9 @@ contains
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
     logical, intent(in) :: progress_due         !! a progress line is due [-]
+    type(sim_eval_t), intent(in), optional :: ev  !! evaluation of the state reached, when the integrator
+                                                  !! has made it: its strut modes are counted; default
+                                                  !! the committed modes of the step just taken
     integer :: ng, i
     real(wp) :: tilt, speed_char
 
@@ -641,7 +670,14 @@ contains
     ng = sim%model%n_gears
     associate (model => sim%model)
       do i = 1, ng
-        call count_mode_switches(model%gear(i), sim%loop%mode(:, i), res%mode_switches(:, i))
+        if (present(ev)) then
+          call count_mode_switches(ev%mode(:, i), sim%loop%mode(:, i), res%mode_switches(:, i))
+        else
+          associate (st => model%gear(i)%st)
+            call count_mode_switches(strut_modes(st%locked, st%axial, st%dir), sim%loop%mode(:, i), &
+                                     res%mode_switches(:, i))
+          end associate
+        end if
       end do
       res%n_steps = sim%loop%n
 
@@ -711,10 +747,10 @@ contains
         return
       end if
     end if
-    ! evaluated on a copy: the evaluation's lock decisions must not touch the final state
+    ! the sample leads the velocities by half a step in place: on a copy of the final state
     work = sim
     m2 = ''
-    call sim_evaluate(work, inp, t, h_last, ev, stat, m2)
+    call sim_evaluate(sim, inp, t, h_last, ev, stat, m2)
     if (stat == 0) call record_sample(work, inp, res, ev, h_last)
     call finish(sim%model, res, t)
   end subroutine end_early
@@ -772,51 +808,53 @@ contains
     end if
   end function symmetric_sum
 
-  !> Crush mode of strut k: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
+  !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
   !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
   !! of motion is not a mode).
-  pure integer function strut_mode(gear, k) result(m)
-    type(gear_t), intent(in) :: gear          !! gear
-    integer, intent(in) :: k                  !! strut [-]
-    if (gear%st%locked(k)) then
-      m = 0
-    else if (abs(gear%st%axial(k)) > tiny(1.0_wp)) then
-      m = sign(1, gear%st%dir(k))
-    else
-      m = 2
-    end if
-  end function strut_mode
+  pure function strut_modes(locked, axial, dir) result(m)
+    logical, intent(in) :: locked(3)          !! struts locked [-]
+    real(wp), intent(in) :: axial(3)          !! axial buffer forces [N]
+    integer, intent(in) :: dir(3)             !! sliding directions [-]
+    integer :: m(3)                           !! modes [-]
+    integer :: k
+    do k = 1, 3
+      if (locked(k)) then
+        m(k) = 0
+      else if (abs(axial(k)) > tiny(1.0_wp)) then
+        m(k) = sign(1, dir(k))
+      else
+        m(k) = 2
+      end if
+    end do
+  end function strut_modes
 
-  !> Counts the changes of each strut's crush mode (strut_mode), i.e. the switches of the buffer
+  !> Counts the changes of each strut's crush mode (strut_modes), i.e. the switches of the buffer
   !! force law.
-  pure subroutine count_mode_switches(gear, mode, switches)
-    type(gear_t), intent(in) :: gear          !! gear after the step
+  pure subroutine count_mode_switches(m, mode, switches)
+    integer, intent(in) :: m(3)               !! modes after the step [-]
     integer, intent(inout) :: mode(3)         !! mode at the previous step, updated [-]
     integer, intent(inout) :: switches(3)     !! mode changes so far [-]
-    integer :: k, m
-    do k = 1, 3
-      m = strut_mode(gear, k)
-      if (m /= mode(k)) switches(k) = switches(k) + 1
-      mode(k) = m
-    end do
+    where (m /= mode) switches = switches + 1
+    mode = m
   end subroutine count_mode_switches
 
-  !> Advances the stored velocities of body and gears by `lead` times their last accelerations,
-  !! keeping the stored ones in `kept` (restore_velocities puts them back). The semi-implicit Euler
-  !! step is the leapfrog: its positions belong to t and its stored velocities to t - h/2, so
-  !! lead = h/2 gives the velocities at t.
-  pure subroutine lead_velocities(model, lead, kept)
-    type(model_t), intent(inout) :: model       !! model with the accelerations of its last evaluation
+  !> Advances the stored velocities of body and gears by `lead` times the accelerations of an
+  !! evaluation, keeping the stored ones in `kept` (restore_velocities puts them back). The
+  !! semi-implicit Euler step is the leapfrog: its positions belong to t and its stored velocities
+  !! to t - h/2, so lead = h/2 with the accelerations at t gives the velocities at t.
+  pure subroutine lead_velocities(model, lead, ev, kept)
+    type(model_t), intent(inout) :: model       !! model
     real(wp), intent(in) :: lead                !! [s]
+    type(sim_eval_t), intent(in) :: ev          !! evaluation with the accelerations
     type(velocities_t), intent(out) :: kept     !! the stored velocities
     integer :: i
     kept%v = model%body%v
     kept%omega = model%body%omega
-    model%body%v = kept%v + lead*model%body%acc
-    model%body%omega = kept%omega + lead*model%body%alpha
+    model%body%v = kept%v + lead*ev%acc
+    model%body%omega = kept%omega + lead*ev%alpha
     do i = 1, model%n_gears
       kept%qd(:, i) = model%gear(i)%st%qd
-      model%gear(i)%st%qd = kept%qd(:, i) + lead*model%gear(i)%st%qdd
+      model%gear(i)%st%qd = kept%qd(:, i) + lead*ev%gear(i)%qdd
     end do
   end subroutine lead_velocities
 
@@ -833,17 +871,11 @@ contains
   end subroutine restore_velocities
 
   !> Records one output sample.
-  subroutine record(res, model, t, ovl, xd, fground, fn, delta, vd, w_normal, w_friction, w_thrust, w_impact, &
+  subroutine record(res, model, ev, w_normal, w_friction, w_thrust, w_impact, &
                     ke0, pe0, ke_legs, e_el, gravity)
     type(sim_result_t), intent(inout) :: res      !! result
-    type(model_t), intent(in) :: model            !! model
-    real(wp), intent(in) :: t                     !! time [s]
-    real(wp), intent(in) :: ovl(3)                !! overload [g]
-    real(wp), intent(in) :: xd(:, :)              !! footpad positions [m]
-    real(wp), intent(in) :: fground(:, :)         !! ground forces [N]
-    real(wp), intent(in) :: fn(:)                 !! normal forces [N]
-    real(wp), intent(in) :: delta(:)              !! penetrations [m]
-    real(wp), intent(in) :: vd(:, :)              !! footpad velocities [m/s]
+    type(model_t), intent(in) :: model            !! model at ev%t (velocities synchronised)
+    type(sim_eval_t), intent(in) :: ev            !! its evaluation (forces, footpads, overload)
     real(wp), intent(in) :: w_normal              !! work into the ground (normal) [J]
     real(wp), intent(in) :: w_friction            !! friction dissipation [J]
     real(wp), intent(in) :: w_thrust              !! thrust work [J]
@@ -858,31 +890,31 @@ contains
     if (res%n_out >= size(res%t)) return
     res%n_out = res%n_out + 1
     k = res%n_out
-    res%t(k) = t
+    res%t(k) = ev%t
     res%mc_position(:, k) = model%body%x
     res%position(:, k) = model%body%x - matmul(model%body%r, model%body%mc)
     res%velocity(:, k) = model%body%v
     res%euler(:, k) = model%body%euler*rad2deg
     res%rate(:, k) = model%body%omega*rad2deg
-    res%overload(:, k) = ovl
+    res%overload(:, k) = ev%ovl
     crush = 0.0_wp
     do i = 1, res%n_gears
       associate (g => model%gear(i))
         res%strut_length(:, i, k) = g%st%q(idx_len)
         s = g%sigma*(g%st%q(idx_len) - g%len0)
         res%stroke(:, i, k) = s
-        res%strut_force(:, i, k) = g%st%axial
+        res%strut_force(:, i, k) = ev%gear(i)%axial
         crush = crush + sum(g%st%work_crush)
       end associate
-      res%footpad_position(:, i, k) = xd(:, i)
-      res%ground_force(:, i, k) = fground(:, i)
-      res%normal_force(i, k) = fn(i)
-      res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(fground(:, i), fground(:, i)) - fn(i)**2))
-      res%penetration(i, k) = delta(i)
-      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), vd(:, i)))
+      res%footpad_position(:, i, k) = ev%xd(:, i)
+      res%ground_force(:, i, k) = ev%fground(:, i)
+      res%normal_force(i, k) = ev%fn(i)
+      res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(ev%fground(:, i), ev%fground(:, i)) - ev%fn(i)**2))
+      res%penetration(i, k) = ev%delta(i)
+      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), ev%vd(:, i)))
     end do
-    res%overload_peak(k) = max(res%acc_overload, norm2(ovl))
-    res%normal_force_peak(:, k) = max(res%acc_normal_force, fn(1:res%n_gears))
+    res%overload_peak(k) = max(res%acc_overload, norm2(ev%ovl))
+    res%normal_force_peak(:, k) = max(res%acc_normal_force, ev%fn(1:res%n_gears))
     res%strut_force_peak(:, :, k) = res%acc_strut_force
     res%acc_overload = 0.0_wp
     res%acc_normal_force = 0.0_wp
