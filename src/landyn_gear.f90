@@ -37,7 +37,7 @@ module landyn_gear
   use landyn_kinds, only: wp, msg_len
   use landyn_buffer, only: buffer_law_t, rigid_force
   use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, gear_constraints, gear_constraint_jacobian, &
-                               gear_constraint_gamma, cross3
+                               gear_constraint_gamma, cross3, gear_points
   use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd, solve_factored_spd
   use landyn_small_spd, only: small_spd_solve
   use landyn_tube_friction, only: tube_friction_t, tube_friction_bound, add_tube_bound
@@ -132,6 +132,13 @@ module landyn_gear
     real(wp) :: s_lock(3) = 0.0_wp                !! stroke held by a locked strut [m]
     real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
     logical :: rigid = .false.                    !! the gear stays rigid [-]
+    ! interface loads (gear_joint_loads), gear frame: columns a, b, c are the forces the upper
+    ! joints put on the body, column 4 the force the footpad puts on the primary at d
+    real(wp) :: f_joint(3, 4) = 0.0_wp            !! joint forces [N]
+    real(wp) :: m_joint(3, 3) = 0.0_wp            !! moments of a, b, c on the body (about the strut's
+                                                  !! Hooke-joint axis: its spin is constrained) [N m]
+    real(wp) :: f_interface(3) = 0.0_wp           !! the gear's total force on the body from the
+                                                  !! leg's momentum balance (= sum of columns a-c) [N]
   end type gear_eval_t
 
   !> One landing gear: geometry, masses, buffers and state.
@@ -402,7 +409,7 @@ contains
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
     real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand
-    real(wp) :: f_rel(3), m_rel(3)
+    real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
     logical :: changed, done, tried(3), released(3), stop_hit(3)
@@ -530,10 +537,107 @@ contains
     ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
     ! included) receives the ground force minus the rate of the legs' relative momentum; in the
     ! massless-leg limit this is eq. 11's J^-T N applied at the footpad.
-    call relative_inertia(gear, sk, ge%qdd, f_rel, m_rel)
+    call relative_inertia(gear, sk, ge%qdd, f_rel, m_rel, f_strut, h_strut)
     ge%f_body = f_foot - f_rel
     ge%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
+    call joint_loads(gear, sk, gear%st%q, gear%st%qd, ge%qdd, f_strut, h_strut, lam(1:n_phi), f_foot, f_field, &
+                     alpha_or_zero(alpha), ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
   end subroutine gear_evaluate
+
+  !> alpha when given, else zero.
+  pure function alpha_or_zero(alpha) result(a)
+    real(wp), intent(in), optional :: alpha(3)   !! [rad/s^2]
+    real(wp) :: a(3)                             !! [rad/s^2]
+    a = 0.0_wp
+    if (present(alpha)) a = alpha
+  end function alpha_or_zero
+
+  !> Interface loads of a gear, gear frame: the force each upper joint a, b, c puts on the body and
+  !! the force the footpad puts on the primary at its ball joint d (f_joint columns 1-4), and the
+  !! gear's total force on the body (f_interface) from the leg's momentum balance.
+  !!
+  !! Each strut is a free body between its upper joint (no moment: universal joint, spin neglected)
+  !! and its lower end: the ground force at the footpad and the lugs' reactions for the primary
+  !! (-lambda_e, -lambda_f: the multipliers of Phi = [e_pri - e_sec; f_pri - f_sec], M qdd = Q -
+  !! Phi_q^T lambda), +lambda_e, +lambda_f for the left and right secondaries. Its force balance in
+  !! the body frame, with the frame field on all its parts (uniform g - a_frame and the angular
+  !! part -alpha x (r - a)), gives the joint force: body on strut = f_k - F_field,k - F_lower,k,
+  !! with f_k the rate of the strut's relative momentum; the joint's force on the body is its
+  !! negative. The buffer and lock forces are internal to a strut. The footpad (the primary's end
+  !! mass) puts f_foot - m_fp (d_rel'' - field at d) on the primary.
+  !!
+  !! The body of the model carries the legs' mass, so what it receives from a gear in its equations
+  !! is f_body = f_foot - f_rel; the physical interface force adds the legs' weight and inertia in
+  !! the moving frame: f_interface = f_body + m_leg f_field - alpha x (first moment of the legs
+  !! about a). The sum of the three joint forces equals it (the lug reactions cancel).
+  pure subroutine joint_loads(gear, sk, q, qd, qdd, f_strut, h_strut, lam_phi, f_foot, f_field, alpha, f_body, &
+                              f_joint, m_joint, f_interface)
+    type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
+    type(strut_kin_t), intent(in) :: sk(3)       !! strut kinematics at q
+    real(wp), intent(in) :: q(n_q)               !! coordinates [m, rad]
+    real(wp), intent(in) :: qd(n_q)              !! velocities [m/s, rad/s]
+    real(wp), intent(in) :: qdd(n_q)             !! accelerations [m/s^2, rad/s^2]
+    real(wp), intent(in) :: f_strut(3, 3)        !! rate of each strut's relative momentum [N]
+    real(wp), intent(in) :: h_strut(3, 3)        !! rate of its relative angular momentum about its upper joint [N m]
+    real(wp), intent(in) :: lam_phi(n_phi)       !! multipliers of the lug constraints [N]
+    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad [N]
+    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame [m/s^2]
+    real(wp), intent(in) :: alpha(3)             !! body angular acceleration, gear axes [rad/s^2]
+    real(wp), intent(in) :: f_body(3)            !! the gear's load on the body in the model, f_foot - f_rel [N]
+    real(wp), intent(out) :: f_joint(3, 4)       !! forces of a, b, c on the body; footpad on primary at d [N]
+    real(wp), intent(out) :: m_joint(3, 3)       !! moments of a, b, c on the body [N m]
+    real(wp), intent(out) :: f_interface(3)      !! the gear's total physical force on the body [N]
+    real(wp) :: f_low(3, 3), f_fld(3), sm, len, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
+    real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3)
+    integer :: k, i0
+    f_low(:, 1) = f_foot - lam_phi(1:3) - lam_phi(4:6)
+    f_low(:, 2) = lam_phi(1:3)
+    f_low(:, 3) = lam_phi(4:6)
+    do k = 1, 3
+      len = q(idx_len(k))
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      f_fld = gear%m_tot(k)*f_field - cross3(alpha, gear%m_tot(k)*(sk(k)%p - gear%geom%a) + sm*sk(k)%u)
+      f_joint(:, k) = f_fld + f_low(:, k) - f_strut(:, k)
+    end do
+    ! Moments. A universal joint with pins along w1 = R0 e_x (body) and w2 = R0 Rx(t1) e_y (strut)
+    ! transmits a moment about n = w1 x w2 = R0 (0, -sin t1, cos t1), the direction the strut's two
+    ! angle equations leave free (its spin is not a degree of freedom): the joint supplies the
+    ! n-component of (rate of angular momentum about the joint - moment of the other forces on the
+    ! strut). The primary's lugs lie off its axis, so the primary's joint a carries a torque.
+    call gear_points(gear%geom, q, d, e_pri, f_pri, e_sec, f_sec)
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      len = q(i0 + 1)
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      select case (k)
+      case (1)
+        tau = cross3(d - sk(1)%p, f_foot) - cross3(e_pri - sk(1)%p, lam_phi(1:3)) - cross3(f_pri - sk(1)%p, lam_phi(4:6))
+        r0 = gear%geom%R0p
+      case (2)
+        tau = cross3(e_sec - sk(2)%p, lam_phi(1:3))
+        r0 = gear%geom%R0b
+      case default
+        tau = cross3(f_sec - sk(3)%p, lam_phi(4:6))
+        r0 = gear%geom%R0c
+      end select
+      tau = tau + cross3(sm*sk(k)%u, f_field) - cross3(sm*sk(k)%u, cross3(alpha, sk(k)%p - gear%geom%a)) &
+            - jr*cross3(sk(k)%u, cross3(alpha, sk(k)%u))
+      n = matmul(r0, [0.0_wp, -sin(q(i0 + 2)), cos(q(i0 + 2))])
+      m_joint(:, k) = -dot_product(h_strut(:, k) - tau, n)*n
+    end do
+    ! footpad ball joint d = a + L u of the primary: its acceleration relative to the body
+    i0 = idx_len(1) - 1
+    ud = sk(1)%u1*qd(i0 + 2) + sk(1)%u2*qd(i0 + 3)
+    udd = sk(1)%u1*qdd(i0 + 2) + sk(1)%u2*qdd(i0 + 3) + sk(1)%u11*qd(i0 + 2)**2 &
+          + 2.0_wp*sk(1)%u12*qd(i0 + 2)*qd(i0 + 3) + sk(1)%u22*qd(i0 + 3)**2
+    dd = qdd(i0 + 1)*sk(1)%u + 2.0_wp*qd(i0 + 1)*ud + q(i0 + 1)*udd
+    f_joint(:, 4) = f_foot - gear%m_end(1)*(dd - f_field + cross3(alpha, q(i0 + 1)*sk(1)%u))
+    ! the leg's momentum balance, with the legs' first moment as gear_leg_momentum takes it
+    fm = leg_first_moment(gear, sk, q)
+    m_leg = sum(gear%m_tot)
+    f_interface = f_body + m_leg*f_field - cross3(alpha, fm - m_leg*gear%geom%a)
+  end subroutine joint_loads
 
   !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
   !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
@@ -607,7 +711,7 @@ contains
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! message
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
-    real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q)
+    real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q), f_strut(3, 3)
     real(wp) :: s(3), sd(3), fpos, fneg, demand
     integer :: k, i, nrow
     stat = 0
@@ -637,6 +741,9 @@ contains
     ge%qdd = 0.0_wp
     ge%f_body = f_foot
     ge%m_body = cross3(gear%geom%a + c%q(1)*c%sk_c(1)%u, f_foot)
+    f_strut = 0.0_wp
+    call joint_loads(gear, c%sk_c, c%q, zero, zero, f_strut, f_strut, lam(1:n_phi), f_foot, f_field, alpha_or_zero(alpha), &
+                     ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
     done = .true.
   end subroutine rigid_solve
 
@@ -701,12 +808,15 @@ contains
     call relative_inertia(gear, sk, gear%st%qdd, f_rel, m_rel)
   end subroutine gear_relative_inertia
 
-  pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel)
+  pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel, f_strut, h_strut)
     type(gear_t), intent(in) :: gear       !! gear (q, qd)
     type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
     real(wp), intent(in) :: qdd(n_q)       !! generalized accelerations [m/s^2, rad/s^2]
     real(wp), intent(out) :: f_rel(3)      !! relative momentum rate, gear frame [N]
     real(wp), intent(out) :: m_rel(3)      !! relative angular momentum rate about O_L [N m]
+    real(wp), intent(out), optional :: f_strut(3, 3)  !! each strut's share of f_rel [N]
+    real(wp), intent(out), optional :: h_strut(3, 3)  !! rate of each strut's relative angular momentum
+                                                      !! about its upper joint [N m]
     integer :: k, i0
     real(wp) :: ud(3), udd(3), f(3), len, ld, ldd, t1d, t2d, sm, s1, jr
     f_rel = 0.0_wp
@@ -722,7 +832,9 @@ contains
       sm = gear%s_0(k) + s1
       jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
       f = gear%m_s(k)*ldd*sk(k)%u + 2.0_wp*gear%m_s(k)*ld*ud + sm*udd
+      if (present(f_strut)) f_strut(:, k) = f
       f_rel = f_rel + f
+      if (present(h_strut)) h_strut(:, k) = cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
       m_rel = m_rel + cross3(sk(k)%p, f) + cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
     end do
   end subroutine relative_inertia
@@ -777,17 +889,32 @@ contains
     real(wp) :: ud(3), len, sm
     call strut_kinematics(gear, gear%st%q, sk)
     p_rel = 0.0_wp
-    first_moment = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
       ud = sk(k)%u1*gear%st%qd(i0 + 2) + sk(k)%u2*gear%st%qd(i0 + 3)
       sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       p_rel = p_rel + gear%m_s(k)*gear%st%qd(i0 + 1)*sk(k)%u + sm*ud
-      first_moment = first_moment + gear%m_tot(k)*sk(k)%p + sm*sk(k)%u
     end do
+    first_moment = leg_first_moment(gear, sk, gear%st%q)
     leg_mass = sum(gear%m_tot)
   end subroutine gear_leg_momentum
+
+  !> First moment of mass of the leg parts, sum m x, gear frame.
+  pure function leg_first_moment(gear, sk, q) result(fm)
+    type(gear_t), intent(in) :: gear         !! gear (masses)
+    type(strut_kin_t), intent(in) :: sk(3)   !! strut kinematics at q
+    real(wp), intent(in) :: q(n_q)           !! coordinates [m, rad]
+    real(wp) :: fm(3)                        !! [kg m]
+    integer :: k
+    real(wp) :: len, sm
+    fm = 0.0_wp
+    do k = 1, 3
+      len = q(idx_len(k))
+      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      fm = fm + gear%m_tot(k)*sk(k)%p + sm*sk(k)%u
+    end do
+  end function leg_first_moment
 
   !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
   subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
