@@ -10,12 +10,13 @@ module landyn_output
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
   use landyn_health, only: health_t, check_names, n_checks
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr
+  use landyn_loads, only: n_load, n_joint, n_quantity, load_names, joint_names, quantity_names
   implicit none
   private
 
   public :: write_result_file, schema_version, iso_timestamp
 
-  character(len=*), parameter :: schema_version = '1.1'  !! version of docs/output.md
+  character(len=*), parameter :: schema_version = '1.2'  !! version of docs/output.md
 
 contains
 
@@ -128,6 +129,8 @@ contains
       call h5_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(1:n, k), 'J', stat, errmsg)
       if (stat /= 0) return
     end do
+    call write_interface_loads(f, res, stat, errmsg)
+    if (stat /= 0) return
 
     ! ---- /summary
     call h5_write(f, '/summary/crush_length', res%crush_net, 'm', stat, errmsg, &
@@ -196,6 +199,71 @@ contains
       description='largest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
   end subroutine write_all
+
+  !> Interface loads (docs/output.md, "Interface loads"): per joint histories in lander axes and in
+  !! each gear's axes, the gear's total force on the body, and the peak-load table.
+  subroutine write_interface_loads(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file
+    type(sim_result_t), intent(in) :: res          !! results
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message
+    real(wp), allocatable :: v(:, :, :), vg(:, :, :), sim2(:, :, :)
+    integer :: n, ng, j, i, k, c0
+    character(len=*), parameter :: on_body = ' puts on the body (hard point of the gear), '
+    character(len=20) :: name
+    character(len=200) :: what
+    character(len=20), parameter :: block_names(7) = [character(len=20) :: 'joint_force_a', 'joint_force_b', &
+      'joint_force_c', 'footpad_joint_force', 'joint_moment_a', 'joint_moment_b', 'joint_moment_c']
+    n = res%n_out
+    ng = res%n_gears
+    allocate (v(3, ng, n), vg(3, ng, n))
+    do j = 1, 7
+      ! load-vector blocks: 1-3 forces of a, b, c; 4 footpad force at d; 5-7 moments of a, b, c
+      c0 = 3*(j - 1)
+      v = res%loads(c0 + 1:c0 + 3, 1:ng, 1:n)
+      do k = 1, n
+        do i = 1, ng
+          vg(:, i, k) = matmul(transpose(res%gear_rot(:, :, i)), v(:, i, k))
+        end do
+      end do
+      name = block_names(j)
+      if (j == 4) then
+        what = 'force the footpad puts on the primary strut at its ball joint d, shape (n, n_gears, 3)'
+      else if (j < 4) then
+        what = 'force joint '//name(13:13)//on_body//'shape (n, n_gears, 3)'
+      else
+        what = 'moment joint '//name(14:14)//on_body//'about the strut''s universal-joint axis'
+      end if
+      call h5_write(f, '/timeseries/gears/'//trim(name), v, merge('N m', 'N  ', j > 4), stat, errmsg, &
+                    description=trim(what)//'; lander axes')
+      if (stat /= 0) return
+      call h5_write(f, '/timeseries/gears/gear_axes/'//trim(name), vg, merge('N m', 'N  ', j > 4), stat, errmsg, &
+                    description=trim(what)//'; axes of the gear frame')
+      if (stat /= 0) return
+    end do
+    call h5_write(f, '/timeseries/gears/interface_force', res%interface_force(:, :, 1:n), 'N', stat, errmsg, &
+      description='the gear''s total force on the body from its momentum balance (ground force minus the rate '// &
+                  'of the legs'' momentum, plus their weight and inertia in the moving frame); equals '// &
+                  'joint_force_a + b + c; lander axes')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/peak_joint_load/value', res%load_peaks%value, 'N', stat, errmsg, &
+      description='shape (n_gears, 4 joints a b c d, 4 quantities x y z magnitude), lander axes: the largest '// &
+                  '|value| over every accepted step (components signed)')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/peak_joint_load/time', res%load_peaks%time, 's', stat, errmsg, &
+      description='instant of each peak, shape as value'); if (stat /= 0) return
+    allocate (sim2(n_load, n_quantity*n_joint, ng))
+    sim2 = reshape(res%load_peaks%simultaneous, [n_load, n_quantity*n_joint, ng])
+    call h5_write(f, '/summary/peak_joint_load/simultaneous', sim2, 'N, N m', stat, errmsg, &
+      description='the gear''s loads at the instant of each peak, shape (n_gears, 16 = joint*4 + quantity, '// &
+                  '21 = load_names), lander axes')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/peak_joint_load/load_names', load_names, '-', stat, errmsg, &
+      description='F: forces of joints a, b, c on the body and of the footpad on the primary at d [N]; '// &
+                  'M: moments of joints a, b, c on the body [N m]'); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_joint_load/joint_names', joint_names, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/peak_joint_load/quantity_names', quantity_names, '-', stat, errmsg)
+  end subroutine write_interface_loads
 
   subroutine write_health_group(f, h, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file

@@ -43,6 +43,14 @@ contains
         1.0e-3_wp*res%peak_normal_force(i)
     end do
     write (u, '(a)') ''
+    write (u, '(a)') '  interface loads, lander axes: peak |force| [kN] (t [s]) at the hard points a, b, c and the footpad d'
+    write (u, '(a)') '     gear             a                  b                  c                  d'
+    do i = 1, res%n_gears
+      write (u, '(2x,i7,4(f11.1,a,f6.4,a))') i, (1.0e-3_wp*res%load_peaks%value(4, k, i), ' (', &
+        res%load_peaks%time(4, k, i), ')', k = 1, 4)
+    end do
+    write (u, '(a)') '  (per component, with the simultaneous loads: /summary/peak_joint_load, landyn-export --tables)'
+    write (u, '(a)') ''
     write (u, '(a,f8.3,a,f8.4,a)') '  peak overload at the mass centre ', res%peak_overload, ' g at t = ', &
       res%t_peak_overload, ' s'
     write (u, '(a,3f9.3,a)') '  final attitude (yaw, pitch, roll) ', res%final_euler, ' deg'

@@ -21,6 +21,7 @@ module landyn_sim_core
                          gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, &
                          gear_leg_momentum, gear_relative_momenta, gear_settle, gear_law_segments, n_q, idx_len
   use landyn_impact, only: system_velocity_projection
+  use landyn_loads, only: n_load, load_peaks_t, gear_load_vector, load_peaks_init, load_peaks_update
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
                             to_global
@@ -144,6 +145,13 @@ module landyn_sim_core
     real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
     real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
     real(wp), allocatable :: energy(:, :)                  !! (n, n_energy) audit channels, one column each [J]
+    ! interface loads (landyn_loads): each gear's load vector (joint forces a, b, c on the body,
+    ! footpad force at d, joint moments a, b, c), lander axes, and the gear's total force on the body
+    ! from its momentum balance (the equilibrium reference of the joint forces)
+    real(wp), allocatable :: loads(:, :, :)                !! (n_load, n_gears, n) [N, N m]
+    real(wp), allocatable :: interface_force(:, :, :)      !! (3, n_gears, n) [N]
+    real(wp), allocatable :: gear_rot(:, :, :)             !! (3, 3, n_gears) gear frame -> lander frame [-]
+    type(load_peaks_t) :: load_peaks                       !! peak-load table over every accepted step
     ! Peaks over each output interval (every step since the previous sample, this one included),
     ! so that the stored histories keep the peaks the summary reports.
     real(wp), allocatable :: overload_peak(:)              !! (n) largest |a - g|/g0 [g]
@@ -329,6 +337,9 @@ contains
     sim%nstep = nint(inp%simulation%t_end/sim%dt)
     n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
     call allocate_result(res, ng, n_cap)
+    do i = 1, ng
+      res%gear_rot(:, :, i) = sim%model%gear(i)%rot
+    end do
     sim%l_char = 0.0_wp
     do i = 1, ng
       sim%l_char = max(sim%l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
@@ -552,6 +563,7 @@ contains
       end if
       ! peaks of every step, for the summary and the interval-peak channels
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
+      call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
       do i = 1, ng
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
         res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(ev%gear(i)%axial))
@@ -808,6 +820,18 @@ contains
     end if
   end function symmetric_sum
 
+  !> The load vectors (landyn_loads) of all gears of an evaluation, lander axes.
+  pure function eval_loads(model, ev) result(v)
+    type(model_t), intent(in) :: model          !! model (gear rotations)
+    type(sim_eval_t), intent(in) :: ev          !! evaluation
+    real(wp) :: v(n_load, max_gears)            !! [N, N m]
+    integer :: i
+    v = 0.0_wp
+    do i = 1, model%n_gears
+      v(:, i) = gear_load_vector(model%gear(i)%rot, ev%gear(i))
+    end do
+  end function eval_loads
+
   !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
   !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
   !! of motion is not a mode).
@@ -904,6 +928,8 @@ contains
         s = g%sigma*(g%st%q(idx_len) - g%len0)
         res%stroke(:, i, k) = s
         res%strut_force(:, i, k) = ev%gear(i)%axial
+        res%loads(:, i, k) = gear_load_vector(g%rot, ev%gear(i))
+        res%interface_force(:, i, k) = matmul(g%rot, ev%gear(i)%f_interface)
         crush = crush + sum(g%st%work_crush)
       end associate
       res%footpad_position(:, i, k) = ev%xd(:, i)
@@ -994,6 +1020,8 @@ contains
     res%peak_strut_force = 0.0_wp
     allocate (res%mode_switches(3, ng))
     res%mode_switches = 0
+    allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
+    call load_peaks_init(res%load_peaks, ng)
     res%n_out = 0
   end subroutine allocate_result
 

@@ -297,6 +297,35 @@ def study_runs_table(tree: Node) -> list[tuple[str, list]]:
     return [(k, [r.get(k, "") for r in rows]) for k in keys]
 
 
+def peak_joint_load_table(tree: Node) -> list[tuple[str, list]]:
+    """The peak-load table of a result (schema >= 1.2) as CSV columns: one row per gear, joint
+    (a, b, c, d) and quantity (x, y, z, magnitude; lander axes), the peak in kN and its instant,
+    then the gear's 21 simultaneous loads (forces in kN, moments in kN m). Empty for older files."""
+    summary = tree.get("summary") if isinstance(tree, Node) else None
+    grp = summary.get("peak_joint_load") if isinstance(summary, Node) else None
+    if not isinstance(grp, Node):
+        return []
+    value = np.asarray(grp["value"].value, dtype=float)           # (g, 4, 4)
+    time = np.asarray(grp["time"].value, dtype=float)
+    simul = np.asarray(grp["simultaneous"].value, dtype=float)     # (g, 16, 21)
+    joints, quantities = ("a", "b", "c", "d"), ("x", "y", "z", "magnitude")
+    names = [f"F{j}_{c}" for j in "abcd" for c in "xyz"] + [f"M{j}_{c}" for j in "abc" for c in "xyz"]
+    cols: dict[str, list] = {k: [] for k in ("gear", "joint", "quantity", "peak_kN", "time_s")}
+    for nm in names:
+        cols[nm + ("_kN" if nm[0] == "F" else "_kNm")] = []
+    for i in range(value.shape[0]):
+        for j in range(4):
+            for k in range(4):
+                cols["gear"].append(i + 1)
+                cols["joint"].append(joints[j])
+                cols["quantity"].append(quantities[k])
+                cols["peak_kN"].append(value[i, j, k] / 1e3)
+                cols["time_s"].append(time[i, j, k])
+                for m, nm in enumerate(names):
+                    cols[nm + ("_kN" if nm[0] == "F" else "_kNm")].append(simul[i, 4 * j + k, m] / 1e3)
+    return list(cols.items())
+
+
 def write_tables(src: str, kind: str, outdir: str) -> list[str]:
     """CSV files of every table of a study or campaign file (and of a run's summary and meta)."""
     attrs, tree = read_tree(src)
@@ -306,7 +335,10 @@ def write_tables(src: str, kind: str, outdir: str) -> list[str]:
                                       "stroke_margin", "bottomed_out", "crush_work", "mode_switches",
                                       "peak_strut_force")}
         labels["final_attitude"] = ("yaw", "pitch", "roll")
-        tables = tables_of(tree, attrs, ("/timeseries",), labels, {"/summary": "gear"})
+        tables = tables_of(tree, attrs, ("/timeseries", "/summary/peak_joint_load"), labels, {"/summary": "gear"})
+        peaks = peak_joint_load_table(tree)
+        if peaks:
+            tables["peak_joint_loads"] = peaks
     elif kind == "study":
         variants = tuple(tree["study"]["variant_label"].value) if "study" in tree else ()
         labels = {"crush_length": variants, "status": variants, "energy_residual": variants}

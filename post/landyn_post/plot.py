@@ -451,6 +451,38 @@ ENERGY_STACK = (("kinetic_body", "body kinetic"), ("kinetic_legs", "legs (relati
                 ("strut_impacts", "strut impacts"))
 
 
+def fig_interface_loads(res: Result, opts: PlotOptions | None = None):
+    """Interface loads: magnitude of the force each hard point a, b, c puts on the body and of the
+    footpad force at d, per gear, over time; the peak of every step (/summary/peak_joint_load) is
+    marked, since the stored samples may miss it. None for files without interface loads (< 1.2)."""
+    if res.data.get("joint_force_a") is None:
+        return None
+    plt = _plt()
+    fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+    t = res.time
+    notes = []
+    blocks = (("a", res.joint_force_a, "joint a (primary, upper)"), ("b", res.joint_force_b, "joint b (left secondary)"),
+              ("c", res.joint_force_c, "joint c (right secondary)"), ("d", res.footpad_joint_force, "footpad joint d"))
+    peak = res.data.get("peak_joint_load/value")
+    tpk = res.data.get("peak_joint_load/time")
+    for j, (ax, (name, f, what)) in enumerate(zip(axs, blocks)):
+        mag = np.linalg.norm(f, axis=2) * KN
+        notes.append((what, draw_curves(ax, t, [(f"gear {i + 1}", mag[:, i], dict(color=_gear_color(i)))
+                                               for i in range(res.n_gears)])))
+        if peak is not None:
+            for i in range(res.n_gears):
+                ax.plot(tpk[i, j, 3], peak[i, j, 3] * KN, marker="v", ms=6, color=_gear_color(i), ls="none",
+                        label="peak (every step)" if i == 0 else None)
+        ax.set_ylabel(f"|force| at {name} [kN]")
+        ax.set_title(what, fontsize=9, loc="left")
+        ax.grid(True, alpha=0.3)
+    axs[0].legend(fontsize=7, ncol=5)
+    axs[-1].set_xlabel("time [s]")
+    _title(fig, res, "Interface loads on the body (a, b, c) and at the footpad (d)")
+    fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
+    return fig
+
+
 def fig_energy(res: Result, opts: PlotOptions | None = None):
     """Energy audit: where the input energy went, stacked over time, and the residual."""
     plt = _plt()
@@ -484,6 +516,7 @@ FIGURES = (
     ("footpad_forces", fig_footpad_forces, "footpad normal and friction forces, penetration (paper Fig. 11)"),
     ("body", fig_body, "body velocity, attitude and overload (optionally CFC-filtered)"),
     ("footpad_paths", fig_footpad_paths, "footpad paths on the ground"),
+    ("interface_loads", fig_interface_loads, "forces at the hard points a, b, c and the footpad joint d, per gear"),
     ("energy", fig_energy, "energy audit stacked over time"),
 )
 
@@ -498,6 +531,8 @@ def write_figures(res: Result, outdir: str, formats=("png",), dpi: int = 120, on
         if only and name not in only:
             continue
         fig = func(res, opts)
+        if fig is None:           # nothing to draw in this file (e.g. an older schema)
+            continue
         for fmt in formats:
             written.append(cli.savefig(fig, os.path.join(outdir, f"{base}_{name}.{fmt}"), dpi=dpi))
         plt.close(fig)

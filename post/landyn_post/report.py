@@ -152,6 +152,8 @@ def write_report(res: Result, path: str, opts=None) -> str:
             _text_page(pdf, f"LANDYN result: {res.title}", blocks, (verdict_lines[0], ok))
             for _, func, _ in FIGURES:
                 fig = func(res, opts)
+                if fig is None:       # nothing to draw in this file (e.g. an older schema)
+                    continue
                 pdf.savefig(fig)
                 plt.close(fig)
     return path

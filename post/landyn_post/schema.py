@@ -33,7 +33,7 @@ __all__ = [
     "ROOT_ATTRIBUTES", "META",
 ]
 
-SCHEMA_VERSION = "1.1"     #: the schema version this package was written for
+SCHEMA_VERSION = "1.2"     #: the schema version this package was written for
 SUPPORTED_MAJOR = "1"      #: files with schema_version 1.x are read (minor versions only add)
 
 #: strut order of the last axis of gear arrays (Table 3 measure order within a gear)
@@ -72,14 +72,31 @@ class DatasetSpec:
     kind: str
     meaning: str
     components: tuple = ()
+    since: str = "1.0"    #: schema version that added it (older files are read without it)
 
     @property
     def is_timeseries(self) -> bool:
         return self.path.startswith("/timeseries/") and self.key != "time"
 
 
-def _ts(key, path, units, shape, meaning, components=()):
-    return DatasetSpec(key, path, units, shape, "real", meaning, components)
+def _ts(key, path, units, shape, meaning, components=(), since="1.0"):
+    return DatasetSpec(key, path, units, shape, "real", meaning, components, since)
+
+
+#: interface loads (schema 1.2): the load vector's blocks as LANDYN writes them
+JOINT_BLOCKS = (
+    ("joint_force_a", "N", "force joint a (upper joint of the primary) puts on the body"),
+    ("joint_force_b", "N", "force joint b (upper joint of the left secondary) puts on the body"),
+    ("joint_force_c", "N", "force joint c (upper joint of the right secondary) puts on the body"),
+    ("footpad_joint_force", "N", "force the footpad puts on the primary strut at its ball joint d"),
+    ("joint_moment_a", "N m", "moment joint a puts on the body (about its universal-joint axis)"),
+    ("joint_moment_b", "N m", "moment joint b puts on the body (about its universal-joint axis)"),
+    ("joint_moment_c", "N m", "moment joint c puts on the body (about its universal-joint axis)"),
+)
+#: names of the 21 loads of /summary/peak_joint_load/simultaneous
+LOAD_NAMES = tuple(f"F{j}_{c}" for j in "abcd" for c in "xyz") + tuple(f"M{j}_{c}" for j in "abc" for c in "xyz")
+PEAK_JOINTS = ("a", "b", "c", "d")
+PEAK_QUANTITIES = ("x", "y", "z", "magnitude")
 
 
 #: /meta: provenance strings (all scalar text, units '-')
@@ -98,7 +115,7 @@ META = (
     ("units", "unit system statement"),
 )
 
-#: Every dataset of schema 1.1 (root attributes title, producer, schema_version are separate).
+#: Every dataset of schema 1.2 (root attributes title, producer, schema_version are separate).
 DATASETS: tuple[DatasetSpec, ...] = tuple(
     [DatasetSpec(k, "/meta/" + k, "-", (), "text", m) for k, m in META]
     + [
@@ -142,6 +159,13 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         _ts("slip_speed", "/timeseries/gears/slip_speed", "m/s", ("n", "g"),
             "footpad speed tangential to the local surface"),
     ]
+    + [_ts(k, "/timeseries/gears/" + k, u, ("n", "g", 3), m + ", lander axes", _XYZ, "1.2")
+       for k, u, m in JOINT_BLOCKS]
+    + [_ts("gear_axes/" + k, "/timeseries/gears/gear_axes/" + k, u, ("n", "g", 3), m + ", gear axes", _XYZ, "1.2")
+       for k, u, m in JOINT_BLOCKS]
+    + [_ts("interface_force", "/timeseries/gears/interface_force", "N", ("n", "g", 3),
+           "the gear's total force on the body from its momentum balance (= joint_force_a + b + c), lander axes",
+           _XYZ, "1.2")]
     + [_ts("energy/" + e, "/timeseries/energy/" + e, "J", ("n",), "energy audit: " + e.replace("_", " "))
        for e in ENERGY_NAMES]
     + [
@@ -206,6 +230,20 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
         DatasetSpec("integrator/dt_smallest", "/summary/integrator/dt_smallest", "s", (), "real", "smallest accepted step"),
         DatasetSpec("integrator/dt_largest", "/summary/integrator/dt_largest", "s", (), "real", "largest accepted step"),
         DatasetSpec("wall_time", "/summary/wall_time", "s", (), "real", "wall-clock time of the simulation"),
+        DatasetSpec("peak_joint_load/value", "/summary/peak_joint_load/value", "N", ("g", 4, 4), "real",
+                    "peak interface load per gear, joint (a, b, c, d) and quantity (x, y, z, magnitude), lander "
+                    "axes, over every accepted step; components signed", (), "1.2"),
+        DatasetSpec("peak_joint_load/time", "/summary/peak_joint_load/time", "s", ("g", 4, 4), "real",
+                    "instant of each peak", (), "1.2"),
+        DatasetSpec("peak_joint_load/simultaneous", "/summary/peak_joint_load/simultaneous", "N, N m",
+                    ("g", 16, 21), "real", "the gear's 21 loads (load_names) at the instant of each peak; "
+                    "row = 4 * joint + quantity", (), "1.2"),
+        DatasetSpec("peak_joint_load/load_names", "/summary/peak_joint_load/load_names", "-", (21,), "text",
+                    "names of the simultaneous loads: Fa_x ... Fd_z [N], Ma_x ... Mc_z [N m]", (), "1.2"),
+        DatasetSpec("peak_joint_load/joint_names", "/summary/peak_joint_load/joint_names", "-", (4,), "text",
+                    "a, b, c, d", (), "1.2"),
+        DatasetSpec("peak_joint_load/quantity_names", "/summary/peak_joint_load/quantity_names", "-", (4,), "text",
+                    "x, y, z, magnitude", (), "1.2"),
         DatasetSpec("health/status", "/summary/health/status", "-", (), "int",
                     "worst run-health check: 0 passed, 1 warnings, 2 failed (run meaningless; docs/health.md)"),
         DatasetSpec("health/checks", "/summary/health/checks", "-", (6,), "text", "names of the run-health checks"),
@@ -438,8 +476,9 @@ class Result:
         """A scalar time history from a spec such as ``stroke[gear=1,strut=primary]``,
         ``velocity[comp=z]``, ``normal_force[gear=2]`` or ``energy_friction``."""
         name, sel = parse_channel_spec(text)
-        if name.startswith("energy_") and "energy/" + name[7:] in _BY_KEY:
-            name = "energy/" + name[7:]
+        for group in ("energy", "gear_axes"):      # column names write group/key as group_key
+            if name.startswith(group + "_") and group + "/" + name[len(group) + 1:] in _BY_KEY:
+                name = group + "/" + name[len(group) + 1:]
         if name not in _BY_KEY or not _BY_KEY[name].is_timeseries:
             known = ", ".join(d.key for d in DATASETS if d.is_timeseries)
             raise LandynPostError(f"unknown quantity {name!r} in channel {text!r} (known: {known})")
@@ -595,7 +634,11 @@ def load(path: str | os.PathLike) -> Result:
                 f"{path}: schema_version {ver} is not supported (this landyn_post reads {SUPPORTED_MAJOR}.x, "
                 f"written for {SCHEMA_VERSION})")
         data: dict[str, object] = {}
+        minor = _minor(ver)
         for d in DATASETS:
+            if d.path not in f and minor < _minor(d.since):
+                data[d.key] = None       # added after the file's schema version
+                continue
             if d.path not in f:
                 raise LandynFileError(f"{path}: missing dataset {d.path} (schema {ver}); "
                                       "the file is incomplete or not a LANDYN result")
@@ -615,13 +658,19 @@ def load(path: str | os.PathLike) -> Result:
     return Result(path, attrs, data)
 
 
+def _minor(version: str) -> int:
+    """Minor number of 'MAJOR.MINOR' (0 when absent)."""
+    parts = version.split(".")
+    return int(parts[1]) if len(parts) > 1 and parts[1].isdigit() else 0
+
+
 def _check_shapes(path: str, data: dict[str, object]) -> None:
     n = np.shape(data["time"])[0] if np.ndim(data["time"]) == 1 else -1
     g = np.shape(data["crush_length"])[0] if np.ndim(data["crush_length"]) == 2 else -1
     if n < 1 or g < 1:
         raise LandynFileError(f"{path}: /timeseries/time or /summary/crush_length has an unexpected shape")
     for d in DATASETS:
-        if d.kind == "text":
+        if d.kind == "text" or data[d.key] is None:
             continue
         want = tuple(n if s == "n" else g if s == "g" else s for s in d.shape)
         got = np.shape(data[d.key])

@@ -97,6 +97,42 @@ def test_run_tables_and_no_overwrite(lc1_short, tmp_path, run_tool):
     assert lc1_short.read_bytes() == before
 
 
+def test_interface_loads_equilibrium_and_peak_table(lc3_short, tmp_path, run_tool):
+    """Interface loads on LC-3 (sloped ground, yawed and tilted lander): the three joint forces add
+    up to the gear's total force on the body at every sample; the exported peak-load table has a row
+    per gear, joint and quantity, its peak is the load of its own simultaneous set, and it is at
+    least the largest stored sample (the table is taken over every step)."""
+    res = load(lc3_short)
+    total = res.joint_force_a + res.joint_force_b + res.joint_force_c
+    scale = np.abs(res.interface_force).max()
+    assert scale > 1e4                                   # real loads (N)
+    np.testing.assert_allclose(total, res.interface_force, rtol=0, atol=1e-9 * scale)
+    # gear axes: the lander-axes vector turned by the gear's rotation about z
+    rot = np.radians(res.hard_points()["rotation"])
+    for i in range(res.n_gears):
+        c, s_ = np.cos(rot[i]), np.sin(rot[i])
+        r = np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])       # gear frame -> lander frame
+        np.testing.assert_allclose(res.data["gear_axes/joint_force_b"][:, i] @ r.T, res.joint_force_b[:, i],
+                                   atol=1e-9 * scale)
+    r = run_tool("export", lc3_short, "--tables", tmp_path / "t")
+    assert r.returncode == 0, r
+    rows = _csv(tmp_path / "t" / "lc3_short_peak_joint_loads.csv")
+    assert len(rows) == res.n_gears * 4 * 4
+    stored = {"a": res.joint_force_a, "b": res.joint_force_b, "c": res.joint_force_c, "d": res.footpad_joint_force}
+    for row in rows:
+        g, j, q = int(row["gear"]) - 1, row["joint"], row["quantity"]
+        peak = float(row["peak_kN"])
+        hist = stored[j][:, g]
+        if q == "magnitude":
+            own = np.linalg.norm([float(row[f"F{j}_{c}_kN"]) for c in "xyz"])
+            assert own == pytest.approx(peak, rel=1e-9)
+            assert peak >= np.linalg.norm(hist, axis=1).max() / 1e3 * (1 - 1e-12)
+        else:
+            assert float(row[f"F{j}_{q}_kN"]) == pytest.approx(peak, rel=1e-9)
+            assert abs(peak) >= np.abs(hist[:, "xyz".index(q)]).max() / 1e3 * (1 - 1e-12)
+        assert 0.0 <= float(row["time_s"]) <= 0.4
+
+
 # ----------------------------------------------------------------------------------------- studies
 
 def test_study_export_and_figure(study_file, tmp_path, run_tool):

@@ -67,6 +67,19 @@ def check(cond, what):
         FAILS.append(what)
 
 
+def interface_checks(f):
+    """Interface loads: at every sample and for every gear the forces of the three hard points a, b, c
+    add up to the gear's total force on the body from its momentum balance (two computations: per
+    strut with the lug reactions, and of the gear as a whole)."""
+    g = f["timeseries/gears"]
+    total = g["joint_force_a"][()] + g["joint_force_b"][()] + g["joint_force_c"][()]
+    ref = g["interface_force"][()]
+    scale = float(np.abs(ref).max())
+    err = float(np.abs(total - ref).max())
+    check(scale > 1e4 and err <= 1e-9 * scale,
+          "interface-load equilibrium: max |a + b + c - interface_force| = %.3g N (scale %.4g N)" % (err, scale))
+
+
 def find_table3(src):
     # the paper's Table 3 (identical to post/landyn_post/data/table3_crush_lengths.csv, docs/model_conventions.md)
     for cand in (os.path.join(src, "tests", "regression", "data", "table3_crush_lengths.csv"),):
@@ -219,6 +232,7 @@ def main():
             sys.exit(1)
         with h5py.File(out, "r") as f:
             paper_checks(a.case, f, load_theory(a.src, a.case))
+            interface_checks(f)
             if a.update:
                 os.makedirs(os.path.dirname(base), exist_ok=True)
                 write_baseline(f, base, roundoff_spreads(a.exe, open(deck).read(), d, f))
