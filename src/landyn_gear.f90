@@ -37,9 +37,9 @@ module landyn_gear
   use landyn_kinds, only: wp, msg_len
   use landyn_buffer, only: buffer_law_t, rigid_force
   use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, gear_constraints, gear_constraint_jacobian, &
-                               gear_constraint_gamma, cross3, gear_points
-  use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd, solve_factored_spd
-  use landyn_small_spd, only: small_spd_solve
+                               gear_constraint_gamma, cross3
+  use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd
+  use landyn_small_spd, only: small_spd_solve, small_upper_solve_multi
   use landyn_tube_friction, only: tube_friction_t, tube_friction_bound, add_tube_bound
   implicit none
   private
@@ -396,7 +396,7 @@ contains
   !! work of the angular acceleration during an impact (an energy audit error of ~0.2 % in
   !! landings with rotation). The remaining frame terms (centrifugal variation over the leg,
   !! Coriolis) are two orders smaller at the body rates of a landing and are neglected.
-  subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha)
+  subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
     type(gear_t), intent(in) :: gear             !! gear with its committed state (unchanged)
     type(gear_eval_t), intent(out) :: ge         !! accelerations, buffer forces, lock decisions, body load
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
@@ -405,6 +405,8 @@ contains
     character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
     real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+    logical, intent(in), optional :: loads       !! compute the interface loads (f_joint, m_joint,
+                                                 !! f_interface); default .true. [-]
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q), q_alp(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
@@ -412,9 +414,11 @@ contains
     real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3)
-    logical :: changed, done, tried(3), released(3), stop_hit(3)
+    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads
 
     stat = 0
+    with_loads = .true.
+    if (present(loads)) with_loads = loads
     ! the evaluation starts from the committed decisions
     ge%qdd = gear%st%qdd
     ge%axial = gear%st%axial
@@ -431,7 +435,7 @@ contains
     q_alp = 0.0_wp
     stop_hit = .false.
     if (ge%rigid .and. all(ge%locked)) then
-      call rigid_dynamics(gear, ge, f_foot, f_field, done, stat, errmsg, alpha)
+      call rigid_dynamics(gear, ge, f_foot, f_field, with_loads, done, stat, errmsg, alpha)
       if (stat /= 0 .or. done) return
     end if
     call strut_kinematics(gear, gear%st%q, sk)
@@ -540,7 +544,7 @@ contains
     call relative_inertia(gear, sk, ge%qdd, f_rel, m_rel, f_strut, h_strut)
     ge%f_body = f_foot - f_rel
     ge%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
-    call joint_loads(gear, sk, gear%st%q, gear%st%qd, ge%qdd, f_strut, h_strut, lam(1:n_phi), f_foot, f_field, &
+    if (with_loads) call joint_loads(gear, sk, gear%st%q, gear%st%qd, ge%qdd, f_strut, h_strut, lam(1:n_phi), f_foot, f_field, &
                      alpha_or_zero(alpha), ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
   end subroutine gear_evaluate
 
@@ -588,7 +592,7 @@ contains
     real(wp), intent(out) :: m_joint(3, 3)       !! moments of a, b, c on the body [N m]
     real(wp), intent(out) :: f_interface(3)      !! the gear's total physical force on the body [N]
     real(wp) :: f_low(3, 3), f_fld(3), sm, len, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
-    real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3)
+    real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3), rp(3, 3)
     integer :: k, i0
     f_low(:, 1) = f_foot - lam_phi(1:3) - lam_phi(4:6)
     f_low(:, 2) = lam_phi(1:3)
@@ -600,11 +604,19 @@ contains
       f_joint(:, k) = f_fld + f_low(:, k) - f_strut(:, k)
     end do
     ! Moments. A universal joint with pins along w1 = R0 e_x (body) and w2 = R0 Rx(t1) e_y (strut)
-    ! transmits a moment about n = w1 x w2 = R0 (0, -sin t1, cos t1), the direction the strut's two
-    ! angle equations leave free (its spin is not a degree of freedom): the joint supplies the
-    ! n-component of (rate of angular momentum about the joint - moment of the other forces on the
-    ! strut). The primary's lugs lie off its axis, so the primary's joint a carries a torque.
-    call gear_points(gear%geom, q, d, e_pri, f_pri, e_sec, f_sec)
+    ! transmits a moment about n = w1 x w2, the direction the strut's two angle equations leave free
+    ! (its spin is not a degree of freedom): the joint supplies the n-component of (rate of angular
+    ! momentum about the joint - moment of the other forces on the strut). The primary's lugs lie off
+    ! its axis, so the primary's joint a carries a torque. No trigonometry: the strut's orientation
+    ! R0 Rx(t1) Ry(t2) has the columns u2 = du/dt2, u x u2 and u, and w2 = u x u2.
+    rp(:, 1) = sk(1)%u2
+    rp(:, 2) = cross3(sk(1)%u, sk(1)%u2)
+    rp(:, 3) = sk(1)%u
+    d = sk(1)%p + q(idx_len(1))*sk(1)%u
+    e_pri = sk(1)%p + matmul(rp, gear%geom%e_loc)
+    f_pri = sk(1)%p + matmul(rp, gear%geom%f_loc)
+    e_sec = sk(2)%p + q(idx_len(2))*sk(2)%u
+    f_sec = sk(3)%p + q(idx_len(3))*sk(3)%u
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1)
@@ -623,7 +635,7 @@ contains
       end select
       tau = tau + cross3(sm*sk(k)%u, f_field) - cross3(sm*sk(k)%u, cross3(alpha, sk(k)%p - gear%geom%a)) &
             - jr*cross3(sk(k)%u, cross3(alpha, sk(k)%u))
-      n = matmul(r0, [0.0_wp, -sin(q(i0 + 2)), cos(q(i0 + 2))])
+      n = cross3(r0(:, 1), cross3(sk(k)%u, sk(k)%u2))
       m_joint(:, k) = -dot_product(h_strut(:, k) - tau, n)*n
     end do
     ! footpad ball joint d = a + L u of the primary: its acceleration relative to the body
@@ -651,10 +663,11 @@ contains
   !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
   !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
   !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
-  subroutine rigid_dynamics(gear, ge, f_foot, f_field, done, stat, errmsg, alpha)
+  subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
     type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+    logical, intent(in) :: loads                 !! compute the interface loads [-]
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
     integer, intent(out) :: stat                 !! 0 on success
@@ -664,13 +677,13 @@ contains
     stat = 0
     done = .false.
     if (gear%st%rigid_cache) then
-      call rigid_solve(gear, gear%st, ge, f_foot, f_field, done, stat, errmsg, alpha)
+      call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
     else
       ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
       c = gear%st
       call rigid_cache(gear, c, stat, errmsg)
       if (stat /= 0) return
-      call rigid_solve(gear, c, ge, f_foot, f_field, done, stat, errmsg, alpha)
+      call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
     end if
   end subroutine rigid_dynamics
 
@@ -701,15 +714,15 @@ contains
   end subroutine rigid_cache
 
   !> The lock forces of a rigid gear with its cached factor (rigid_dynamics).
-  subroutine rigid_solve(gear, c, ge, f_foot, f_field, done, stat, errmsg, alpha)
+  subroutine rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
     type(gear_t), intent(in) :: gear             !! rigid gear
     type(gear_state_t), intent(in) :: c          !! its state with valid caches
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
+    logical, intent(in) :: loads                 !! compute the interface loads [-]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message
+    integer, intent(out) :: stat                 !! 0 (the cached factor is regular)
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q), f_strut(3, 3)
     real(wp) :: s(3), sd(3), fpos, fneg, demand
@@ -725,8 +738,8 @@ contains
     do i = 1, nrow
       lam(i) = dot_product(c%a_c(i, :), qf)
     end do
-    call solve_factored_spd(nrow, c%chol_c, max_rows, lam, stat, errmsg, 'gear DAE, rigid')
-    if (stat /= 0) return
+    ! the cached factor's solves in the order of operations of LAPACK's dpotrs (landyn_small_spd)
+    call small_upper_solve_multi(nrow, 1, c%chol_c, max_rows, lam, max_rows)
     call strokes(gear, c%q, zero, s, sd)
     do k = 1, 3
       ge%axial(k) = -lam(n_phi + k)
@@ -742,8 +755,8 @@ contains
     ge%f_body = f_foot
     ge%m_body = cross3(gear%geom%a + c%q(1)*c%sk_c(1)%u, f_foot)
     f_strut = 0.0_wp
-    call joint_loads(gear, c%sk_c, c%q, zero, zero, f_strut, f_strut, lam(1:n_phi), f_foot, f_field, alpha_or_zero(alpha), &
-                     ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
+    if (loads) call joint_loads(gear, c%sk_c, c%q, zero, zero, f_strut, f_strut, lam(1:n_phi), f_foot, f_field, &
+                                alpha_or_zero(alpha), ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
     done = .true.
   end subroutine rigid_solve
 

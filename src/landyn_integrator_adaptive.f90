@@ -46,9 +46,15 @@ module landyn_integrator_adaptive
     real(wp) :: t = 0.0_wp                 !! time of the current state [s]
     real(wp) :: h = 0.0_wp                 !! step to take next [s]
     real(wp) :: h_last = 0.0_wp            !! last accepted step (0 at t = 0) [s]
-    type(sim_eval_t) :: ev                 !! evaluation of the current state, made for the step h
-    type(sim_eval_t) :: ev_prev            !! evaluation of the previous accepted state
-    logical :: smooth = .false.            !! no event between ev_prev and ev: second differences apply
+    ! Three evaluation records, used in rotation (no copies on acceptance): evs(i_cur) is the
+    ! evaluation of the current state, made for the step h; evs(i_prev) that of the previous
+    ! accepted state; evs(i_new) the work record of the evaluation at the end of the step tried.
+    type(sim_eval_t) :: evs(3)             !! evaluation records
+    integer :: i_cur = 1                   !! slot of the current state's evaluation [-]
+    integer :: i_prev = 2                  !! slot of the previous accepted state's [-]
+    integer :: i_new = 3                   !! slot of the step tried [-]
+    logical :: smooth = .false.            !! no event between the previous and the current evaluation:
+                                           !! second differences apply
     type(sim_snapshot_t) :: snap(2)        !! snap(ip): the current state before that evaluation;
                                            !! the other slot takes the next state (no copy on acceptance)
     integer :: ip = 1                      !! slot of the current state's snapshot [-]
@@ -81,13 +87,13 @@ contains
     self%ip = 1
     call sim_save(sim, self%snap(1))
     self%h_last = 0.0_wp
-    call sim_evaluate(sim, inp, 0.0_wp, kick(self, self%h), self%ev, stat, errmsg)
+    call sim_evaluate(sim, inp, 0.0_wp, kick(self, self%h), self%evs(self%i_cur), stat, errmsg)
     res%n_evaluations = res%n_evaluations + 1
     if (stat /= 0) then
       call finish(sim%model, res, 0.0_wp)
       return
     end if
-    call sim_book(sim, inp, res, self%ev, 0.0_wp, self%slack)
+    call sim_book(sim, inp, res, self%evs(self%i_cur), 0.0_wp, self%slack)
     self%snap(1)%loop = sim%loop    ! a rejected first step returns to t = 0 as booked
   end subroutine adaptive_start
 
@@ -103,8 +109,8 @@ contains
     integer, intent(out) :: stat                         !! 0 on success
     character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
     integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
-    type(sim_eval_t) :: ev_new
     real(wp) :: h, h_g, t_new, err, fac, acc_t(3), alpha_t(3)
+    integer :: k
     logical :: ok, event, rejected
     character(len=msg_len) :: m2
 
@@ -116,23 +122,25 @@ contains
       if (t_new >= self%t_end - self%slack) t_new = self%t_end
       err = 0.0_wp
       event = .false.
-      call sim_advance(sim, inp, self%ev, h, stat, m2, kick=kick(self, h))
+      call sim_advance(sim, inp, self%evs(self%i_cur), h, stat, m2, kick=kick(self, h))
       ok = stat == 0
       if (ok) ok = body_is_finite(sim%model%body)
       if (ok) then
         h_g = clip(self, sim, t_new, h)
         call sim_save(sim, self%snap(3 - self%ip))
-        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), ev_new, stat, m2, v_lead=0.5_wp*h)
+        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, m2, v_lead=0.5_wp*h)
         res%n_evaluations = res%n_evaluations + 1
         ok = stat == 0
       end if
       if (ok) then
         if (self%smooth) then
-          err = error_norm2(self%ev_prev, self%ev, ev_new, self%h_last, h, sim%l_char, self%tol, sim%model%n_gears)
+          err = error_norm2(self%evs(self%i_prev), self%evs(self%i_cur), self%evs(self%i_new), self%h_last, h, &
+                            sim%l_char, self%tol, sim%model%n_gears)
         else
-          err = error_norm(self%ev, ev_new, h, sim%l_char, self%tol, sim%model%n_gears)
+          err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%l_char, self%tol, sim%model%n_gears)
         end if
-        event = discrete_change(self%ev, ev_new, sim%model%n_gears, inp%simulation%tipover_angle)
+        event = discrete_change(self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
+                                inp%simulation%tipover_angle)
       end if
       if ((.not. ok .and. h > self%h_min) .or. &
           (ok .and. h > self%h_event*(1.0_wp + 1.0e-9_wp) .and. (err > 1.0_wp .or. event))) then
@@ -155,9 +163,10 @@ contains
         rejected = .true.
         ! the body's accelerations at t are known from the first evaluation of t (copied: ev is
         ! intent(out) of sim_evaluate)
-        acc_t = self%ev%acc
-        alpha_t = self%ev%alpha
-        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%ev, stat, m2, acc_field=acc_t, alpha_field=alpha_t, &
+        acc_t = self%evs(self%i_cur)%acc
+        alpha_t = self%evs(self%i_cur)%alpha
+        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%evs(self%i_cur), stat, m2, acc_field=acc_t, &
+                          alpha_field=alpha_t, &
                           v_lead=0.5_wp*self%h_last)
         res%n_evaluations = res%n_evaluations + 1
         if (stat /= 0) then
@@ -186,9 +195,9 @@ contains
     res%dt_largest = max(res%dt_largest, h)
     self%t = t_new
     self%h_last = h
-    call sim_book(sim, inp, res, ev_new, h, self%slack)
+    call sim_book(sim, inp, res, self%evs(self%i_new), h, self%slack)
     call sim_accept(sim, inp, res, t_new, h, done, stat, errmsg, progress_unit, &
-                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp, ev_new)
+                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp, self%evs(self%i_new))
     if (done) return
     if (t_new >= self%t_end) then
       res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time
@@ -203,11 +212,14 @@ contains
     if (rejected) fac = min(fac, 1.0_wp)
     h = clip(self, sim, t_new, max(self%h_event, min(self%h_max, h*max(0.2_wp, fac))))
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
-    if (ev_new%locks_changed) h = h_g
+    if (self%evs(self%i_new)%locks_changed) h = h_g
     self%h = h
-    self%ev_prev = self%ev
+    ! rotate the records: current -> previous, new -> current, the old previous is the next work record
+    k = self%i_prev
+    self%i_prev = self%i_cur
+    self%i_cur = self%i_new
+    self%i_new = k
     self%smooth = .not. event
-    self%ev = ev_new
     self%ip = 3 - self%ip
     self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
   end subroutine adaptive_step

@@ -4,7 +4,7 @@
 module landyn_integrator_fixed
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
-  use landyn_sim_core, only: sim_t, sim_result_t, sim_step
+  use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step
   use landyn_integrator, only: integrator_t
   implicit none
   private
@@ -14,6 +14,7 @@ module landyn_integrator_fixed
   !> Fixed-step integrator (the step count lives in the simulation).
   type, extends(integrator_t) :: fixed_integrator_t
     real(wp) :: dt = 0.0_wp    !! the step [s]
+    type(sim_eval_t) :: ev     !! work record of each step's evaluation
   contains
     procedure :: start => fixed_start
     procedure :: step => fixed_step
@@ -52,7 +53,7 @@ contains
     character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
     integer, intent(in) :: progress_unit              !! unit for progress lines, < 0 for none
     sim%dt = self%dt
-    call sim_step(sim, inp, res, done, stat, errmsg, progress_unit)
+    call sim_step(sim, inp, res, done, stat, errmsg, progress_unit, self%ev)
     res%n_evaluations = res%n_evaluations + 1
   end subroutine fixed_step
 

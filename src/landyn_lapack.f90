@@ -7,7 +7,7 @@ module landyn_lapack
   implicit none
   private
 
-  public :: solve_general, solve_spd, factor_spd, solve_factored_spd, solve_spd_unblocked
+  public :: solve_general, solve_spd, factor_spd, solve_spd_unblocked
   public :: factor_spd_unblocked
 
   interface
@@ -25,14 +25,6 @@ module landyn_lapack
       real(wp), intent(inout) :: a(lda, *)
       integer, intent(out) :: info
     end subroutine dpotrf
-    subroutine dpotrs(uplo, n, nrhs, a, lda, b, ldb, info)
-      import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, nrhs, lda, ldb
-      real(wp), intent(in) :: a(lda, *)
-      real(wp), intent(inout) :: b(ldb, *)
-      integer, intent(out) :: info
-    end subroutine dpotrs
     subroutine dpotf2(uplo, n, a, lda, info)
       import :: wp
       character(len=1), intent(in) :: uplo
@@ -125,7 +117,7 @@ contains
   end subroutine solve_spd_unblocked
 
   !> Cholesky factorisation of a symmetric positive-definite A (LAPACK dpotrf, upper triangle),
-  !! for repeated solves with solve_factored_spd.
+  !! for repeated solves with landyn_small_spd's small_upper_solve_multi.
   subroutine factor_spd(n, a, lda, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
@@ -143,21 +135,6 @@ contains
       write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotrf'
     end if
   end subroutine factor_spd
-
-  !> Solves A X = B with the Cholesky factor from factor_spd (LAPACK dpotrs).
-  subroutine solve_factored_spd(n, a, lda, b, stat, errmsg, what)
-    integer, intent(in) :: n                       !! order of the system [-]
-    integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
-    real(wp), intent(in) :: a(lda, n)              !! Cholesky factor from factor_spd [any]
-    real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
-    character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    integer :: info
-    call dpotrs('U', n, 1, a, lda, b, n, info)
-    stat = info
-    if (info /= 0) write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotrs'
-  end subroutine solve_factored_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
   !! unblocked dpotf2 (upper triangle), for the triangular solves of landyn_small_spd.

@@ -81,6 +81,7 @@ module landyn_sim_core
     real(wp) :: l_char = 0.0_wp                        !! largest mass-centre to footpad distance [m]
     real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
     real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
+    logical :: loads = .true.                          !! compute and record the interface loads [-]
   end type sim_t
 
   !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
@@ -355,7 +356,7 @@ contains
   !! output sample of t_n, then (unless t_n is the end time) the step to t_n+1 and its commit
   !! (footpad histories, strut modes), followed by the divergence, tip-over and rest checks.
   !! done = .true. when the run has ended (end time, rest, tip-over or failure).
-  subroutine sim_step(sim, inp, res, done, stat, errmsg, progress_unit)
+  subroutine sim_step(sim, inp, res, done, stat, errmsg, progress_unit, ev)
     type(sim_t), intent(inout) :: sim           !! simulation, advanced by one step
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
@@ -363,7 +364,8 @@ contains
     integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
-    type(sim_eval_t) :: ev
+    type(sim_eval_t), intent(inout) :: ev       !! work record for the step's evaluation (the caller's, so
+                                                !! that it is not set up afresh at every step)
     real(wp) :: t, dt
 
     done = .false.
@@ -403,7 +405,9 @@ contains
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     real(wp), intent(in) :: t                   !! time of the state [s]
     real(wp), intent(in) :: dt                  !! step to come [s]
-    type(sim_eval_t), intent(out) :: ev         !! the evaluation
+    ! inout, not out: every component an evaluation defines is set below (for gears 1..n_gears);
+    ! intent(out) would reset the whole record, max_gears gears of it, at every evaluation
+    type(sim_eval_t), intent(inout) :: ev       !! the evaluation (previous contents replaced)
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     real(wp), intent(in), optional :: acc_field(3)    !! body acceleration for the legs' frame field, global;
@@ -483,7 +487,8 @@ contains
       do i = 1, ng
         field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
         ffoot = mtv3(model%gear(i)%rot, mtv3(r, ev%fground(:, i)))
-        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, body%alpha))
+        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, body%alpha), &
+                           sim%loads)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           return
@@ -563,7 +568,7 @@ contains
       end if
       ! peaks of every step, for the summary and the interval-peak channels
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
-      call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
+      if (sim%loads) call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
       do i = 1, ng
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
         res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(ev%gear(i)%axial))

@@ -37,12 +37,15 @@ contains
   end subroutine make_integrator
 
   !> Runs one landing. `progress_unit` < 0 silences progress reports.
-  subroutine run_simulation(inp, res, stat, errmsg, progress_unit)
+  subroutine run_simulation(inp, res, stat, errmsg, progress_unit, loads)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(out) :: res      !! time series and summary
     integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
+    logical, intent(in), optional :: loads      !! compute the interface loads (default .true.; a caller
+                                                !! that keeps only summary metrics saves ~10 % of the time
+                                                !! with .false.; their histories and peaks are then zero) [-]
     type(sim_t) :: sim
     class(integrator_t), allocatable :: integ
     logical :: done
@@ -51,6 +54,7 @@ contains
     call system_clock(c0, crate)
     call sim_init(inp, sim, res, stat, errmsg)
     if (stat /= 0) return
+    if (present(loads)) sim%loads = loads
     call make_integrator(inp, integ, stat, errmsg)
     if (stat /= 0) return
     call integ%start(sim, inp, res, stat, errmsg)

@@ -386,7 +386,8 @@ contains
           flush (progress_unit)
         end if
         msg = ''
-        call run_simulation(study%inp(c, v), res, st, msg, -1)
+        ! interface loads only for the result files kept
+        call run_simulation(study%inp(c, v), res, st, msg, -1, loads=study%keep_results)
         associate (r => study%run(c, v))
           r%message = ''
           if (st /= 0) then

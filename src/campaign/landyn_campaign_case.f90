@@ -175,7 +175,7 @@ contains
     end if
     msg = ''
     call system_clock(c_in)
-    call run_simulation(inp, res, st, msg, -1)
+    call run_simulation(inp, res, st, msg, -1, loads=save_history)    ! interface loads only for saved histories
     call system_clock(c_sim)
     if (st /= 0) then
       row%status = status_failed
