@@ -1026,6 +1026,8 @@ contains
     allocate (res%mode_switches(3, ng))
     res%mode_switches = 0
     allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
+    res%loads = 0.0_wp                 ! stays zero when the interface loads are not computed
+    res%interface_force = 0.0_wp
     call load_peaks_init(res%load_peaks, ng)
     res%n_out = 0
   end subroutine allocate_result
