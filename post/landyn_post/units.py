@@ -24,14 +24,16 @@ UNITS = {
     "deg/s": ("deg/s", 1.0), "rad/s": ("deg/s", 180.0 / math.pi),
     "g": ("g", 1.0), "m/s^2": ("g", 1.0 / G0), "m/s2": ("g", 1.0 / G0),
     "J": ("J", 1.0), "kJ": ("J", 1e3), "MJ": ("J", 1e6),
+    # moments (the joint moments of the interface loads; channel unit 'N m')
+    "N m": ("N m", 1.0), "Nm": ("N m", 1.0), "kNm": ("N m", 1e3), "kN m": ("N m", 1e3), "lbf ft": ("N m", 1.3558179483314),
     "-": ("-", 1.0),
 }
 
 #: channel unit -> (engineering unit for plots and tables, factor)
 ENGINEERING = {"m": ("mm", 1e3), "N": ("kN", 1e-3), "J": ("kJ", 1e-3), "m/s": ("m/s", 1.0), "deg": ("deg", 1.0),
-               "deg/s": ("deg/s", 1.0), "g": ("g", 1.0), "s": ("s", 1.0), "-": ("-", 1.0)}
+               "deg/s": ("deg/s", 1.0), "g": ("g", 1.0), "s": ("s", 1.0), "N m": ("kN m", 1e-3), "-": ("-", 1.0)}
 
-_QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?)\s*([A-Za-z%/^0-9-]*)\s*$")
+_QTY = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eEdD][-+]?\d+)?)\s*([A-Za-z%/^0-9-]*(?: [A-Za-z]+)?)\s*$")
 
 
 def known_units() -> str:
