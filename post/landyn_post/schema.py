@@ -646,7 +646,9 @@ def load(path: str | os.PathLike) -> Result:
             if not isinstance(obj, h5py.Dataset):
                 raise LandynFileError(f"{path}: {d.path} is a group, expected a dataset")
             raw = obj[()]
-            if d.kind == "text":
+            if d.kind == "text" and np.ndim(raw) >= 1:
+                data[d.key] = tuple(_text(x) for x in np.ravel(raw))     # a list of names
+            elif d.kind == "text":
                 data[d.key] = _text(raw)
             elif d.kind == "bool":
                 data[d.key] = bool(np.asarray(raw).item())

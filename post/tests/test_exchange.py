@@ -114,6 +114,10 @@ def test_interface_loads_equilibrium_and_peak_table(lc3_short, tmp_path, run_too
         r = np.array([[c, -s_, 0.0], [s_, c, 0.0], [0.0, 0.0, 1.0]])       # gear frame -> lander frame
         np.testing.assert_allclose(res.data["gear_axes/joint_force_b"][:, i] @ r.T, res.joint_force_b[:, i],
                                    atol=1e-9 * scale)
+    # the names of the table as the reader returns them: lists of strings
+    assert res.data["peak_joint_load/load_names"][:4] == ("Fa_x", "Fa_y", "Fa_z", "Fb_x")
+    assert res.data["peak_joint_load/joint_names"] == ("a", "b", "c", "d")
+    assert res.data["health/checks"][0] and isinstance(res.data["health/checks"], tuple)
     r = run_tool("export", lc3_short, "--tables", tmp_path / "t")
     assert r.returncode == 0, r
     rows = _csv(tmp_path / "t" / "lc3_short_peak_joint_loads.csv")
