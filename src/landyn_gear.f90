@@ -268,7 +268,7 @@ contains
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1)
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      jr = strut_inertia(gear, k, len)
       c = cos(q(i0 + 3))
       mdiag(i0 + 1) = gear%m_s(k)
       mdiag(i0 + 2) = jr*c*c
@@ -306,13 +306,13 @@ contains
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1); lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      jr = strut_inertia(gear, k, len)
       jp = 2.0_wp*gear%m_in(k)*(len - gear%l_in(k)) + 2.0_wp*gear%m_end(k)*len
       c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
       q_ine(i0 + 1) = 0.5_wp*jp*(c*c*t1d*t1d + t2d*t2d)
       q_ine(i0 + 2) = -jp*lend*c*c*t1d + 2.0_wp*jr*c*sn*t1d*t2d
       q_ine(i0 + 3) = -jp*lend*t2d - jr*c*sn*t1d*t1d
-      fm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      fm = strut_first_moment(gear, k, len)
       q_grv(i0 + 1) = gear%m_s(k)*dot_product(sk(k)%u, f_field)
       q_grv(i0 + 2) = fm*dot_product(sk(k)%u1, f_field)
       q_grv(i0 + 3) = fm*dot_product(sk(k)%u2, f_field)
@@ -338,8 +338,8 @@ contains
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1)
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      sm = strut_first_moment(gear, k, len)
+      jr = strut_inertia(gear, k, len)
       pa = sk(k)%p - gear%geom%a
       qa(i0 + 1) = -dot_product(alpha, gear%m_s(k)*cross3(pa, sk(k)%u))
       qa(i0 + 2) = -dot_product(alpha, sm*cross3(pa, sk(k)%u1) + jr*cross3(sk(k)%u, sk(k)%u1))
@@ -364,6 +364,24 @@ contains
     s = gear%sigma*(qv(idx_len) - gear%len0)
     sd = gear%sigma*qdv(idx_len)
   end subroutine strokes
+
+  !> First moment of mass of strut k about its upper joint, along its axis, at length len:
+  !! S(L) = m_o l_o + m_i (L - l_i) + m_end L.
+  pure real(wp) function strut_first_moment(gear, k, len) result(sm)
+    type(gear_t), intent(in) :: gear   !! gear (strut masses)
+    integer, intent(in) :: k           !! strut [-]
+    real(wp), intent(in) :: len        !! strut length [m]
+    sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+  end function strut_first_moment
+
+  !> Transverse moment of inertia of strut k about its upper joint at length len:
+  !! J(L) = j_0 + m_i (L - l_i)^2 + m_end L^2.
+  pure real(wp) function strut_inertia(gear, k, len) result(jr)
+    type(gear_t), intent(in) :: gear   !! gear (strut masses)
+    integer, intent(in) :: k           !! strut [-]
+    real(wp), intent(in) :: len        !! strut length [m]
+    jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+  end function strut_inertia
 
   !> The piece of each strut's buffer law at the current strokes (buffer_law_t%segment): changes
   !! exactly at a stage end or where an end-of-stroke stop begins.
@@ -597,18 +615,8 @@ contains
     f_low(:, 1) = f_foot - lam_phi(1:3) - lam_phi(4:6)
     f_low(:, 2) = lam_phi(1:3)
     f_low(:, 3) = lam_phi(4:6)
-    do k = 1, 3
-      len = q(idx_len(k))
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      f_fld = gear%m_tot(k)*f_field - cross3(alpha, gear%m_tot(k)*(sk(k)%p - gear%geom%a) + sm*sk(k)%u)
-      f_joint(:, k) = f_fld + f_low(:, k) - f_strut(:, k)
-    end do
-    ! Moments. A universal joint with pins along w1 = R0 e_x (body) and w2 = R0 Rx(t1) e_y (strut)
-    ! transmits a moment about n = w1 x w2, the direction the strut's two angle equations leave free
-    ! (its spin is not a degree of freedom): the joint supplies the n-component of (rate of angular
-    ! momentum about the joint - moment of the other forces on the strut). The primary's lugs lie off
-    ! its axis, so the primary's joint a carries a torque. No trigonometry: the strut's orientation
-    ! R0 Rx(t1) Ry(t2) has the columns u2 = du/dt2, u x u2 and u, and w2 = u x u2.
+    ! Lower ends and lugs. No trigonometry: the primary's orientation R0 Rx(t1) Ry(t2) has the
+    ! columns u2 = du/dt2, u x u2 and u.
     rp(:, 1) = sk(1)%u2
     rp(:, 2) = cross3(sk(1)%u, sk(1)%u2)
     rp(:, 3) = sk(1)%u
@@ -618,10 +626,17 @@ contains
     e_sec = sk(2)%p + q(idx_len(2))*sk(2)%u
     f_sec = sk(3)%p + q(idx_len(3))*sk(3)%u
     do k = 1, 3
-      i0 = idx_len(k) - 1
-      len = q(i0 + 1)
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      len = q(idx_len(k))
+      sm = strut_first_moment(gear, k, len)
+      jr = strut_inertia(gear, k, len)
+      ! force: body on strut = f_k - field - lower-end forces; the joint's force on the body is its negative
+      f_fld = gear%m_tot(k)*f_field - cross3(alpha, gear%m_tot(k)*(sk(k)%p - gear%geom%a) + sm*sk(k)%u)
+      f_joint(:, k) = f_fld + f_low(:, k) - f_strut(:, k)
+      ! Moment. A universal joint with pins along w1 = R0 e_x (body) and w2 = R0 Rx(t1) e_y = u x u2
+      ! (strut) transmits a moment about n = w1 x w2, the direction the strut's two angle equations
+      ! leave free (its spin is not a degree of freedom): the joint supplies the n-component of (rate
+      ! of angular momentum about the joint - moment of the other forces on the strut). The primary's
+      ! lugs lie off its axis, so the primary's joint a carries a torque.
       select case (k)
       case (1)
         tau = cross3(d - sk(1)%p, f_foot) - cross3(e_pri - sk(1)%p, lam_phi(1:3)) - cross3(f_pri - sk(1)%p, lam_phi(4:6))
@@ -831,7 +846,7 @@ contains
     real(wp), intent(out), optional :: h_strut(3, 3)  !! rate of each strut's relative angular momentum
                                                       !! about its upper joint [N m]
     integer :: k, i0
-    real(wp) :: ud(3), udd(3), f(3), len, ld, ldd, t1d, t2d, sm, s1, jr
+    real(wp) :: ud(3), udd(3), f(3), hd(3), len, ld, ldd, t1d, t2d, sm, s1, jr
     f_rel = 0.0_wp
     m_rel = 0.0_wp
     do k = 1, 3
@@ -843,12 +858,13 @@ contains
             + 2.0_wp*sk(k)%u12*t1d*t2d + sk(k)%u22*t2d*t2d
       s1 = gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
       sm = gear%s_0(k) + s1
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      jr = strut_inertia(gear, k, len)
       f = gear%m_s(k)*ldd*sk(k)%u + 2.0_wp*gear%m_s(k)*ld*ud + sm*udd
       if (present(f_strut)) f_strut(:, k) = f
       f_rel = f_rel + f
-      if (present(h_strut)) h_strut(:, k) = cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
-      m_rel = m_rel + cross3(sk(k)%p, f) + cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
+      hd = cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
+      if (present(h_strut)) h_strut(:, k) = hd
+      m_rel = m_rel + cross3(sk(k)%p, f) + hd
     end do
   end subroutine relative_inertia
 
@@ -881,8 +897,8 @@ contains
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
       ud = sk(k)%u1*qd(i0 + 2) + sk(k)%u2*qd(i0 + 3)
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      sm = strut_first_moment(gear, k, len)
+      jr = strut_inertia(gear, k, len)
       p = gear%m_s(k)*qd(i0 + 1)*sk(k)%u + sm*ud
       p_rel = p_rel + p
       h_rel = h_rel + cross3(sk(k)%p, p) + jr*cross3(sk(k)%u, ud)
@@ -906,7 +922,7 @@ contains
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
       ud = sk(k)%u1*gear%st%qd(i0 + 2) + sk(k)%u2*gear%st%qd(i0 + 3)
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      sm = strut_first_moment(gear, k, len)
       p_rel = p_rel + gear%m_s(k)*gear%st%qd(i0 + 1)*sk(k)%u + sm*ud
     end do
     first_moment = leg_first_moment(gear, sk, gear%st%q)
@@ -924,7 +940,7 @@ contains
     fm = 0.0_wp
     do k = 1, 3
       len = q(idx_len(k))
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
+      sm = strut_first_moment(gear, k, len)
       fm = fm + gear%m_tot(k)*sk(k)%p + sm*sk(k)%u
     end do
   end function leg_first_moment
@@ -1135,8 +1151,8 @@ contains
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
-      sm = gear%s_0(k) + gear%m_in(k)*(len - gear%l_in(k)) + gear%m_end(k)*len
-      jr = gear%j_0(k) + gear%m_in(k)*(len - gear%l_in(k))**2 + gear%m_end(k)*len*len
+      sm = strut_first_moment(gear, k, len)
+      jr = strut_inertia(gear, k, len)
       pm(:, i0 + 1) = gear%m_s(k)*sk(k)%u
       pm(:, i0 + 2) = sm*sk(k)%u1
       pm(:, i0 + 3) = sm*sk(k)%u2

@@ -49,13 +49,7 @@ contains
       end do
     end do
     ! U^T y = b
-    do i = 1, n
-      s = b(i)
-      do k = 1, i - 1
-        s = s - a(k, i)*b(k)
-      end do
-      b(i) = s/a(i, i)
-    end do
+    call small_upper_solve(n, a, lda, b, .true.)
     ! U x = y
     do i = n, 1, -1
       s = b(i)
@@ -95,8 +89,9 @@ contains
     end if
   end subroutine small_upper_solve
 
-  !> B <- (U^T U)^-1 B for the Cholesky factor U of an SPD matrix and several right-hand sides
-  !! (LAPACK dpotrs 'U': dtrsm with U^T, then with U; same order of operations).
+  !> B <- (U^T U)^-1 B for the Cholesky factor U of an SPD matrix and several right-hand sides,
+  !! column by column (LAPACK dpotrs 'U': dtrsm with U^T, then with U, does the same operations on
+  !! each column in the same order).
   pure subroutine small_upper_solve_multi(n, nrhs, u, ldu, b, ldb)
     integer, intent(in) :: n               !! order [-]
     integer, intent(in) :: nrhs            !! number of right-hand sides [-]
@@ -104,24 +99,10 @@ contains
     real(wp), intent(in) :: u(ldu, n)      !! upper triangular Cholesky factor [any]
     integer, intent(in) :: ldb             !! leading dimension of b [-]
     real(wp), intent(inout) :: b(ldb, nrhs)  !! right-hand sides in, solutions out [any]
-    integer :: i, j, k
-    real(wp) :: s
+    integer :: j
     do j = 1, nrhs
-      ! U^T y = b (dtrsm 'L', 'U', 'T', 'N')
-      do i = 1, n
-        s = b(i, j)
-        do k = 1, i - 1
-          s = s - u(k, i)*b(k, j)
-        end do
-        b(i, j) = s/u(i, i)
-      end do
-      ! U x = y (dtrsm 'L', 'U', 'N', 'N')
-      do k = n, 1, -1
-        b(k, j) = b(k, j)/u(k, k)
-        do i = 1, k - 1
-          b(i, j) = b(i, j) - b(k, j)*u(i, k)
-        end do
-      end do
+      call small_upper_solve(n, u, ldu, b(1:n, j), .true.)
+      call small_upper_solve(n, u, ldu, b(1:n, j), .false.)
     end do
   end subroutine small_upper_solve_multi
 

@@ -25,7 +25,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from . import cli
-from .schema import STRUTS, LandynPostError, is_hdf5, units_token
+from .schema import LOAD_NAMES, PEAK_JOINTS, PEAK_QUANTITIES, STRUTS, LandynPostError, is_hdf5, units_token
 
 CAMPAIGN_SCHEMA = "landyn-campaign-1.0"
 
@@ -308,21 +308,19 @@ def peak_joint_load_table(tree: Node) -> list[tuple[str, list]]:
     value = np.asarray(grp["value"].value, dtype=float)           # (g, 4, 4)
     time = np.asarray(grp["time"].value, dtype=float)
     simul = np.asarray(grp["simultaneous"].value, dtype=float)     # (g, 16, 21)
-    joints, quantities = ("a", "b", "c", "d"), ("x", "y", "z", "magnitude")
-    names = [f"F{j}_{c}" for j in "abcd" for c in "xyz"] + [f"M{j}_{c}" for j in "abc" for c in "xyz"]
-    cols: dict[str, list] = {k: [] for k in ("gear", "joint", "quantity", "peak_kN", "time_s")}
-    for nm in names:
-        cols[nm + ("_kN" if nm[0] == "F" else "_kNm")] = []
+    load_cols = [nm + ("_kN" if nm[0] == "F" else "_kNm") for nm in LOAD_NAMES]
+    cols: dict[str, list] = {k: [] for k in ["gear", "joint", "quantity", "peak_kN", "time_s"] + load_cols}
     for i in range(value.shape[0]):
-        for j in range(4):
-            for k in range(4):
+        for j, joint in enumerate(PEAK_JOINTS):
+            for k, quantity in enumerate(PEAK_QUANTITIES):
                 cols["gear"].append(i + 1)
-                cols["joint"].append(joints[j])
-                cols["quantity"].append(quantities[k])
+                cols["joint"].append(joint)
+                cols["quantity"].append(quantity)
                 cols["peak_kN"].append(value[i, j, k] / 1e3)
                 cols["time_s"].append(time[i, j, k])
-                for m, nm in enumerate(names):
-                    cols[nm + ("_kN" if nm[0] == "F" else "_kNm")].append(simul[i, 4 * j + k, m] / 1e3)
+                row = simul[i, len(PEAK_QUANTITIES) * j + k] / 1e3
+                for c, x in zip(load_cols, row):
+                    cols[c].append(x)
     return list(cols.items())
 
 

@@ -30,7 +30,7 @@ __all__ = [
     "SCHEMA_VERSION", "SUPPORTED_MAJOR", "STRUTS", "STRUT_LABELS", "ENERGY_NAMES", "DATASETS",
     "DatasetSpec", "Channel", "Result", "LandynPostError", "LandynFileError", "load", "is_hdf5",
     "measure_number", "measure_gear_strut", "parse_channel_spec", "units_token", "strut_index",
-    "ROOT_ATTRIBUTES", "META",
+    "ROOT_ATTRIBUTES", "META", "JOINT_BLOCKS", "LOAD_NAMES", "PEAK_JOINTS", "PEAK_QUANTITIES",
 ]
 
 SCHEMA_VERSION = "1.2"     #: the schema version this package was written for
