@@ -2,7 +2,7 @@
 
 The result file stores the body motion, the footpad positions and the strut lengths but not the
 joint positions. They are rebuilt here from the hard points in /meta/resolved_input with LANDYN's
-own kinematics (src/landyn_kinematics.f90):
+own kinematics (src/core/landyn_kinematics.f90):
 
 * body-to-global rotation R = Rz(yaw) Ry(pitch) Rx(roll) (standard right-handed matrices, frames
   z down), global point = position + R p_L (position = lander origin O_L);
