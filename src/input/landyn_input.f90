@@ -18,6 +18,7 @@ module landyn_input
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, deg2rad, rad2deg, max_gears
+  use landyn_errors, only: input_errors_t
   use landyn_contact, only: contact_law_names
   use landyn_friction, only: friction_law_names, default_stribeck_speed
   use landyn_kinematics, only: rot_z
@@ -39,22 +40,6 @@ module landyn_input
   public :: read_input_file, read_input_text, apply_input_text, resolve_input, validate_input, load_input
   public :: write_resolved_input, resolved_input_text
 
-  !> One message (deferred length, so nothing is truncated).
-  type :: message_t
-    character(len=:), allocatable :: text  !! the message [-]
-  end type message_t
-
-  !> A growing list of input error messages. Grown only while input is processed.
-  type :: input_errors_t
-    private
-    integer :: n = 0                          !! number of messages [-]
-    type(message_t), allocatable :: list(:)   !! messages 1..n [-]
-  contains
-    procedure :: add => errors_add            !! append a message
-    procedure :: count => errors_count        !! number of messages
-    procedure :: message => errors_message    !! message i
-    procedure :: write => errors_write        !! write all messages, one per line, to a unit
-  end type input_errors_t
 
   ! Group indices.
   ! Bounds of docs/input (physically motivated, and far from floating-point trouble)
@@ -211,52 +196,6 @@ module landyn_input
     vars_secondary, vars_contact, vars_friction, vars_terrain, vars_initial, vars_output]
 
 contains
-
-  ! ================================================================ error list
-
-  !> Append one message to the error list.
-  subroutine errors_add(self, text)
-    class(input_errors_t), intent(inout) :: self  !! error list
-    character(len=*), intent(in) :: text          !! message [-]
-    type(message_t), allocatable :: tmp(:)
-    if (.not. allocated(self%list)) allocate (self%list(16))
-    if (self%n == size(self%list)) then
-      allocate (tmp(2*self%n))
-      tmp(1:self%n) = self%list
-      call move_alloc(tmp, self%list)
-    end if
-    self%n = self%n + 1
-    self%list(self%n)%text = text
-  end subroutine errors_add
-
-  !> Number of messages in the list.
-  pure function errors_count(self) result(n)
-    class(input_errors_t), intent(in) :: self  !! error list
-    integer :: n                               !! number of messages [-]
-    n = self%n
-  end function errors_count
-
-  !> Message i of the list ('' when i is out of range).
-  pure function errors_message(self, i) result(text)
-    class(input_errors_t), intent(in) :: self  !! error list
-    integer, intent(in) :: i                   !! message index, 1..count() [-]
-    character(len=:), allocatable :: text      !! the message [-]
-    if (i >= 1 .and. i <= self%n) then
-      text = self%list(i)%text
-    else
-      text = ''
-    end if
-  end function errors_message
-
-  !> Write every message, one per line, to a formatted unit the caller has open.
-  subroutine errors_write(self, unit)
-    class(input_errors_t), intent(in) :: self  !! error list
-    integer, intent(in) :: unit                !! formatted output unit [-]
-    integer :: i
-    do i = 1, self%n
-      write (unit, '(a)') self%list(i)%text
-    end do
-  end subroutine errors_write
 
   ! ================================================================ public procedures
 
