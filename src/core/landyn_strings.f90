@@ -7,7 +7,8 @@ module landyn_strings
   implicit none
   private
 
-  public :: lower_case, is_blank_char, is_letter, is_digit, is_ident_char, edit_distance, int_text, quote_text
+  public :: lower_case, is_blank_char, is_letter, is_digit, is_ident_char, edit_distance, int_text, quote_text, &
+            nonempty
 
 contains
 
@@ -47,14 +48,33 @@ contains
     yes = is_letter(c) .or. is_digit(c) .or. c == '_' .or. c == '%'
   end function is_ident_char
 
-  !> Integer as text.
-  pure function int_text(i) result(s)
-    integer, intent(in) :: i            !! value [-]
-    character(len=:), allocatable :: s  !! decimal text [-]
-    character(len=12) :: buf
-    write (buf, '(i0)') i
+  !> Integer as text; with `width`, zero-padded to at least that many digits (1..9).
+  pure function int_text(i, width) result(s)
+    integer, intent(in) :: i               !! value [-]
+    integer, intent(in), optional :: width !! zero-padded width [-]
+    character(len=:), allocatable :: s     !! decimal text [-]
+    character(len=16) :: buf
+    if (present(width)) then
+      write (buf, '(i0.'//achar(iachar('0') + min(max(width, 1), 9))//')') i
+    else
+      write (buf, '(i0)') i
+    end if
     s = trim(buf)
   end function int_text
+
+  !> `s`, or `fallback` ('(none)' when absent) when `s` is blank.
+  pure function nonempty(s, fallback) result(r)
+    character(len=*), intent(in) :: s                   !! text [-]
+    character(len=*), intent(in), optional :: fallback  !! used when s is blank; default '(none)' [-]
+    character(len=:), allocatable :: r                  !! s or the fallback [-]
+    if (len_trim(s) > 0) then
+      r = s
+    else if (present(fallback)) then
+      r = fallback
+    else
+      r = '(none)'
+    end if
+  end function nonempty
 
   !> Text in single quotes, inner quotes doubled.
   pure function quote_text(t) result(s)
