@@ -294,14 +294,7 @@ contains
           code = EXIT_INPUT
           return
         end if
-        do k = 1, size(rows)
-          call results_add(table, rows(k), added)
-          if (added) then
-            n_s = n_s + 1
-          else
-            n_out = n_out + 1
-          end if
-        end do
+        call add_rows(n_s)
       end if
       if (ex_j) then
         call journal_read(journal, meta, rows, n_bad, st, msg)
@@ -310,14 +303,7 @@ contains
           code = EXIT_INPUT
           return
         end if
-        do k = 1, size(rows)
-          call results_add(table, rows(k), added)
-          if (added) then
-            n_j = n_j + 1
-          else
-            n_out = n_out + 1
-          end if
-        end do
+        call add_rows(n_j)
       end if
       if (.not. opts%quiet) then
         if (ex_s .or. ex_j) then
@@ -338,6 +324,22 @@ contains
       write (err_u, '(a)') 'landyn_batch: '//trim(msg)
       code = EXIT_FILE
     end if
+
+  contains
+
+    !> Put `rows` into the table: n_added counts the rows taken, n_out those of cases beyond the deck's.
+    subroutine add_rows(n_added)
+      integer, intent(inout) :: n_added   !! rows taken so far [-]
+      do k = 1, size(rows)
+        call results_add(table, rows(k), added)
+        if (added) then
+          n_added = n_added + 1
+        else
+          n_out = n_out + 1
+        end if
+      end do
+    end subroutine add_rows
+
   end subroutine prepare_output
 
   !> Rank 0: hand out cases, run some itself, record every row.
