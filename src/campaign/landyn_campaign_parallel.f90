@@ -46,7 +46,8 @@ module landyn_campaign_parallel
   use landyn_campaign_case, only: case_row_t, run_case, pack_row, unpack_row, row_int_count, row_real_count, &
                                   status_ok
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
-                                   results_init, results_add, results_rows, results_missing
+                                   results_init, results_add, results_rows, results_missing, &
+                                   results_take_rows
   use landyn_campaign_journal, only: journal_open, journal_append, journal_flush, journal_read
   use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_tasks, only: load_or_report, report_probability, report_row
@@ -214,11 +215,7 @@ contains
         code_ = EXIT_INCOMPLETE
         return
       end if
-      if (table%n_have == table%n_cases) then
-        call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
-      else
-        rows = results_rows(table)
-      end if
+      call results_take_rows(table, rows)
       msg = ''
       call write_summary(summary, meta, rows, opts%command_line, st2, msg)
       if (st2 /= 0) then

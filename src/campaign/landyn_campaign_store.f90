@@ -23,7 +23,7 @@ module landyn_campaign_store
 
   public :: summary_meta_t, meta_from_campaign, write_summary, read_summary
   public :: success_probability, wilson_interval, schema_version
-  public :: results_t, results_init, results_add, results_rows, results_missing
+  public :: results_t, results_init, results_add, results_rows, results_missing, results_take_rows
 
   character(len=*), parameter :: schema_version = 'landyn-campaign-1.0'  !! layout of docs/campaign.md
   real(wp), parameter :: z95 = 1.959963984540054_wp   !! two-sided 95 % normal quantile [-]
@@ -100,6 +100,18 @@ contains
       rows(k) = res%rows(i)
     end do
   end function results_rows
+
+  !> The rows present, in case-id order, taken from the table: moved without a copy when every
+  !! case has its row (the table's rows are gone afterwards; n_have and the flags stay).
+  subroutine results_take_rows(res, rows)
+    type(results_t), intent(inout) :: res                  !! table [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    if (res%n_have == res%n_cases) then
+      call move_alloc(res%rows, rows)
+    else
+      rows = results_rows(res)
+    end if
+  end subroutine results_take_rows
 
   !> Ids of the cases without a row.
   subroutine results_missing(res, ids)

@@ -14,7 +14,7 @@ module landyn_campaign_tasks
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, n_criteria, criterion_name, &
                                   failed_criteria_names, failure_counts
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
-                                   results_init, results_add, results_rows, results_missing, success_probability
+                                   results_init, results_add, results_missing, results_take_rows, success_probability
   implicit none
   private
 
@@ -127,8 +127,7 @@ contains
     type(case_row_t), allocatable :: rows(:)
     type(summary_meta_t) :: meta
     character(len=:), allocatable :: path
-    character(len=msg_len) :: msg
-    integer :: id, st
+    integer :: id
     call load_or_report(deck, camp, err_u, code)
     if (code /= EXIT_OK) return
     if (k1 < 1 .or. k2 > camp%n_cases .or. k1 > k2) then
@@ -147,15 +146,28 @@ contains
       call report_row(rows(id - k1 + 1), camp%n_cases, out_u)
     end do
     meta = meta_from_campaign(camp)
+    call write_rows(path, meta, rows, command_line, err_u, code)
+    if (code /= EXIT_OK) return
+    write (out_u, '(a)') 'Rows written to '//path
+  end subroutine run_case_range
+
+  !> Write the summary file `path` with `rows`; on failure say so on err_u and set code = EXIT_FILE.
+  subroutine write_rows(path, meta, rows, command_line, err_u, code)
+    character(len=*), intent(in) :: path          !! summary file [-]
+    type(summary_meta_t), intent(in) :: meta      !! campaign meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows in case-id order [-]
+    character(len=*), intent(in) :: command_line  !! command that writes the file [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    integer, intent(inout) :: code                !! EXIT_FILE on failure, else unchanged [-]
+    integer :: st
+    character(len=msg_len) :: msg
     msg = ''
     call write_summary(path, meta, rows, command_line, st, msg)
     if (st /= 0) then
       write (err_u, '(a)') 'landyn_batch: cannot write '//path//': '//trim(msg)
       code = EXIT_FILE
-      return
     end if
-    write (out_u, '(a)') 'Rows written to '//path
-  end subroutine run_case_range
+  end subroutine write_rows
 
   !> One line about a finished case.
   subroutine report_row(row, n_cases, u)
@@ -268,18 +280,9 @@ contains
       end do
     end do
     if (allocated(rows)) deallocate (rows)
-    if (table%n_have == table%n_cases) then
-      call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
-    else
-      rows = results_rows(table)
-    end if
-    msg = ''
-    call write_summary(out_file, meta, rows, command_line, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: cannot write '//out_file//': '//trim(msg)
-      code = EXIT_FILE
-      return
-    end if
+    call results_take_rows(table, rows)
+    call write_rows(out_file, meta, rows, command_line, err_u, code)
+    if (code /= EXIT_OK) return
     write (out_u, '(a)') 'Merged '//int_text(size(inputs))//' file(s), '//int_text(size(rows))//' of '// &
       int_text(meta%n_cases)//' cases ('//int_text(ndup)//' duplicate rows dropped) into '//out_file
     call report_probability(rows, meta%crit%failed_runs, out_u)

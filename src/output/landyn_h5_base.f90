@@ -134,19 +134,7 @@ contains
     integer, intent(in) :: nchar          !! characters stored per element
     integer(hid_t), intent(out) :: ftype  !! new datatype (no_id on failure)
     integer, intent(out) :: hdferr        !! negative on failure
-    logical :: ok
-
-    call h5tcopy_f(H5T_C_S1, ftype, hdferr)
-    if (hdferr < 0) then
-      ftype = no_id
-      return
-    end if
-    call h5tset_size_f(ftype, int(max(1, nchar), size_t), hdferr)
-    if (hdferr >= 0) call h5tset_strpad_f(ftype, H5T_STR_NULLPAD_F, hdferr)
-    if (hdferr < 0) then
-      ok = .true.
-      call release(ftype, ok)
-    end if
+    call string_type(H5T_C_S1, H5T_STR_NULLPAD_F, nchar, ftype, hdferr)
   end subroutine file_string_type
 
   !> Memory datatype of a Fortran character(len=nchar) variable: blank-padded, at least 1
@@ -156,20 +144,30 @@ contains
     integer, intent(in) :: nchar          !! length of the Fortran variable
     integer(hid_t), intent(out) :: mtype  !! new datatype (no_id on failure)
     integer, intent(out) :: hdferr        !! negative on failure
+    call string_type(H5T_FORTRAN_S1, H5T_STR_SPACEPAD_F, nchar, mtype, hdferr)
+  end subroutine mem_string_type
+
+  !> A copy of the string datatype `base` with `nchar` characters (at least 1) and padding `pad`.
+  subroutine string_type(base, pad, nchar, tid, hdferr)
+    integer(hid_t), intent(in) :: base    !! predefined string datatype (H5T_C_S1, H5T_FORTRAN_S1)
+    integer, intent(in) :: pad            !! H5T_STR_NULLPAD_F or H5T_STR_SPACEPAD_F
+    integer, intent(in) :: nchar          !! characters per element
+    integer(hid_t), intent(out) :: tid    !! new datatype (no_id on failure)
+    integer, intent(out) :: hdferr        !! negative on failure
     logical :: ok
 
-    call h5tcopy_f(H5T_FORTRAN_S1, mtype, hdferr)
+    call h5tcopy_f(base, tid, hdferr)
     if (hdferr < 0) then
-      mtype = no_id
+      tid = no_id
       return
     end if
-    call h5tset_size_f(mtype, int(max(1, nchar), size_t), hdferr)
-    if (hdferr >= 0) call h5tset_strpad_f(mtype, H5T_STR_SPACEPAD_F, hdferr)
+    call h5tset_size_f(tid, int(max(1, nchar), size_t), hdferr)
+    if (hdferr >= 0) call h5tset_strpad_f(tid, pad, hdferr)
     if (hdferr < 0) then
       ok = .true.
-      call release(mtype, ok)
+      call release(tid, ok)
     end if
-  end subroutine mem_string_type
+  end subroutine string_type
 
   !> Length of a fixed-length string datatype; hdferr = vlen_string for variable-length strings.
   subroutine fixed_string_length(tid, nchar, hdferr)
