@@ -167,6 +167,7 @@ program landyn_batch
 
 contains
 
+  !> Select the task; two different task options are a usage error.
   subroutine set_task(t)
     character(len=*), intent(in) :: t      !! task name
     if (task /= 'campaign' .and. task /= t) call app%die_usage('--check, --list-cases, --case and --merge exclude '// &
@@ -215,6 +216,7 @@ contains
     if (len(why) > 0) call app%die_files(why)
   end subroutine check_output_file
 
+  !> A usage error unless a campaign deck was given.
   subroutine need_deck()
     if (len(deck) == 0) call app%die_usage('no campaign deck given')
   end subroutine need_deck

@@ -69,6 +69,7 @@ contains
     close (u)
   end subroutine end_with_newline
 
+  !> The header line of the journal of the campaign `meta` describes.
   function journal_header(meta) result(s)
     type(summary_meta_t), intent(in) :: meta  !! meta data [-]
     character(len=:), allocatable :: s        !! header line [-]

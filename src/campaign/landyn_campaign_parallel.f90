@@ -201,6 +201,7 @@ contains
 
   contains
 
+    !> Write the final summary file, delete the journal and report the campaign.
     subroutine finish(code_)
       integer, intent(out) :: code_   !! exit code [-]
       type(case_row_t), allocatable :: rows(:)
@@ -512,6 +513,7 @@ contains
       prof(p_record) = prof(p_record) + (t_flush - t_)
     end subroutine flush_journal
 
+    !> Report a journal operation that failed.
     subroutine journal_problem(st, msg)
       integer, intent(in) :: st             !! status of the journal operation [-]
       character(len=*), intent(in) :: msg   !! its message [-]
@@ -691,6 +693,7 @@ contains
 
   contains
 
+    !> A fraction as a percentage text.
     function pct(x) result(t)
       real(wp), intent(in) :: x            !! fraction [-]
       character(len=:), allocatable :: t  !! percentage text [-]
@@ -699,6 +702,7 @@ contains
       t = trim(adjustl(b))//' %'
     end function pct
 
+    !> One time account as text.
     function acct(p) result(t)
       real(wp), intent(in) :: p(n_prof)    !! one account [s, -]
       character(len=:), allocatable :: t  !! text [-]
@@ -708,6 +712,7 @@ contains
           int_text(nint(p(p_rows)))//' book_cpu='//g(p(p_book_cpu))
     end function acct
 
+    !> A time as text.
     function g(x) result(t)
       real(wp), intent(in) :: x            !! time [s]
       character(len=:), allocatable :: t  !! text [-]

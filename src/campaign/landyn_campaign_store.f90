@@ -233,6 +233,7 @@ contains
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_summary
 
+  !> The contents of a summary file: attributes, /meta, /campaign, /parameters, /criteria, /cases, /probability.
   subroutine write_contents(f, meta, rows, command_line, stat, errmsg)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
@@ -392,6 +393,7 @@ contains
 
   contains
 
+    !> A text column of the rows as a fixed-length string array.
     function text_column(which) result(col)
       integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file, 4 failed criteria [-]
       character(len=:), allocatable :: col(:)      !! column [-]
@@ -426,6 +428,7 @@ contains
 
   end subroutine write_contents
 
+  !> '' for the '(none)' that nonempty stores for blank text, else `s`.
   pure function from_nonempty(s) result(r)
     character(len=*), intent(in) :: s    !! stored text [-]
     character(len=:), allocatable :: r   !! '' for '(none)' [-]
@@ -452,6 +455,7 @@ contains
     call h5_close(f, st2, m2)
   end subroutine read_summary
 
+  !> Meta data and rows of an open summary file.
   subroutine read_contents(f, meta, rows, stat, errmsg)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(out) :: meta            !! meta data [-]
@@ -599,6 +603,7 @@ contains
 
   contains
 
+    !> True when a column has `expected` (default n) entries; else stat and errmsg are set.
     logical function sized(m, what, expected)
       integer, intent(in) :: m                   !! size found [-]
       character(len=*), intent(in) :: what       !! dataset [-]

@@ -295,6 +295,7 @@ contains
 
   contains
 
+    !> Enlarge the table to n cases, keeping its rows.
     subroutine grow(t, n)
       type(results_t), intent(inout) :: t   !! table [-]
       integer, intent(in) :: n              !! new case count [-]
@@ -309,6 +310,7 @@ contains
 
   end subroutine merge_summaries
 
+  !> Case ids as comma-separated text.
   pure function ids_text(v) result(s)
     integer, intent(in) :: v(:)         !! ids [-]
     character(len=:), allocatable :: s  !! 'a, b, c' [-]

@@ -39,6 +39,7 @@ contains
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_result_file
 
+  !> Root attributes, /meta (write_meta and the run's deck), /timeseries and /summary of a run.
   subroutine write_all(f, inp, res, command_line, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file
     type(landyn_input_t), intent(in) :: inp        !! resolved input
@@ -242,6 +243,7 @@ contains
     call h5_write(f, '/summary/peak_joint_load/quantity_names', quantity_names, '-', stat, errmsg)
   end subroutine write_interface_loads
 
+  !> The run-health checks under /summary/health (docs/health.md).
   subroutine write_health_group(f, h, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file
     type(health_t), intent(in) :: h                !! run-health checks

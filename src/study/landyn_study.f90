@@ -35,7 +35,7 @@ module landyn_study
   use landyn_health, only: health_t, check_health, health_fail
   use landyn_output, only: write_result_file
   use landyn_strings, only: int_text, lower_case
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE
+  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH
   use landyn_files, only: read_whole_file
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
@@ -52,10 +52,11 @@ module landyn_study
   integer, parameter :: max_measures = 96    !! table rows
   integer, parameter :: label_len = 64       !! length of labels
   integer, parameter :: set_len = 512        !! length of one `set` entry
-  integer, parameter :: status_ok = 0        !! run completed (a tip-over is a result)
-  integer, parameter :: status_input = 2     !! invalid input: not run
-  integer, parameter :: status_failed = 3    !! the simulation failed (diverged)
-  integer, parameter :: status_unhealthy = 6 !! completed, but a run-health check failed (docs/health.md)
+  ! Run statuses, as landyn's exit statuses
+  integer, parameter :: status_ok = EXIT_OK              !! run completed (a tip-over is a result)
+  integer, parameter :: status_input = EXIT_INPUT        !! invalid input: not run
+  integer, parameter :: status_failed = EXIT_DIVERGED    !! the simulation failed (diverged)
+  integer, parameter :: status_unhealthy = EXIT_HEALTH   !! completed, but a run-health check failed (docs/health.md)
   !> Names of the struts of a gear, in the order of the result file's strut axis (Table 3); their
   !! number bounds measure_strut. The crush lengths themselves take their shape from the results.
   character(len=*), parameter :: strut_names(3) = [character(len=15) :: 'primary', 'secondary left', &
@@ -274,6 +275,7 @@ contains
     end do
     stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   contains
+    !> `t` shortened for a message.
     pure function short(t) result(r)
       character(len=*), intent(in) :: t     !! text [-]
       character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]

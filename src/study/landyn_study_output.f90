@@ -110,6 +110,7 @@ contains
     if (stat /= STAT_OK) stat = STAT_FILE
   end subroutine write_study_h5
 
+  !> The contents of the study's HDF5 file: provenance, study, table, summary and per-run groups.
   subroutine write_h5_all(f, study, command_line, stat, errmsg)
     type(h5_file_t), intent(inout) :: f          !! open file
     type(study_t), intent(in) :: study           !! study with results
@@ -217,6 +218,7 @@ contains
     t = t//'"'
   end function csv_text
 
+  !> A real as text with `d` decimals ('nan' for NaN), with a leading zero.
   pure function real_text(x, d) result(s)
     real(wp), intent(in) :: x              !! value [any unit]
     integer, intent(in) :: d               !! decimals [-]
