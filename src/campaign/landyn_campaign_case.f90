@@ -23,11 +23,10 @@ module landyn_campaign_case
   implicit none
   private
 
-  public :: case_row_t, run_case, new_row, evaluate_criteria, history_file_name
+  public :: case_row_t, run_case, new_row
   public :: row_int_count, row_real_count, pack_row, unpack_row, rows_equal
-  public :: status_not_run, status_ok, status_invalid_input, status_failed
-  public :: fail_tipped_over, fail_stroke_margin, fail_overload, fail_clearance, fail_not_at_rest, fail_run
-  public :: n_criteria, criterion_bit, criterion_name, failed_criteria_names, failure_counts
+  public :: status_ok, status_failed
+  public :: n_criteria, criterion_name, failed_criteria_names, failure_counts
 
   integer, parameter :: status_not_run = -1        !! row not filled [-]
   integer, parameter :: status_ok = EXIT_OK                 !! the simulation ran to its end (a tip-over is a result) [-]

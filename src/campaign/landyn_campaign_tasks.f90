@@ -18,7 +18,7 @@ module landyn_campaign_tasks
   implicit none
   private
 
-  public :: load_or_report, check_campaign, list_cases, run_case_range, merge_summaries, part_file_name
+  public :: load_or_report, check_campaign, list_cases, run_case_range, merge_summaries
   public :: report_probability, report_row
 
 contains

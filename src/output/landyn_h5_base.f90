@@ -22,11 +22,11 @@ module landyn_h5_base
   private
 
   public :: h5_file_t, h5_is_open, h5_exists
-  public :: no_id, max_rank, vlen_string
+  public :: no_id, max_rank
   public :: init_library, real_type, int_type, make_lcpl, file_string_type, mem_string_type, fixed_string_length
-  public :: release, check_writable, begin_dataset, end_dataset, open_dataset, query_extent, end_read
+  public :: release, check_writable, begin_dataset, end_dataset, open_dataset, end_read
   public :: open_object, close_object, new_attribute, put_attr_string, open_attribute, end_attr_read
-  public :: attr_label, class_name, fail, fail_file
+  public :: fail, fail_file
 
   integer(hid_t), parameter :: no_id = -1_hid_t   !! marks an HDF5 handle that is not open
   integer, parameter :: max_rank = 3               !! highest array rank handled here
