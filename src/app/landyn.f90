@@ -1,4 +1,4 @@
-!> landyn: runs one touchdown simulation of a legged lander.
+!> The landyn program runs one touchdown simulation of a legged lander.
 !!
 !!   landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]
 !!

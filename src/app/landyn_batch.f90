@@ -1,4 +1,4 @@
-!> landyn_batch: campaigns of LANDYN runs (grids, Monte Carlo dispersions, case lists) on
+!> The landyn_batch program runs campaigns of LANDYN runs (grids, Monte Carlo dispersions, case lists) on
 !! one or many MPI ranks, and the serial pieces for Slurm job arrays. See docs/campaign.md.
 !!
 !!   mpirun -np N landyn_batch DECK [--resume] [--force] [--stop-after N] [-o FILE] [--dedicated-master] [-q]

@@ -1,4 +1,4 @@
-!> landyn_study: runs a sensitivity study (the paper's section 4: contact laws, friction laws,
+!> The landyn_study program runs a sensitivity study (the paper's section 4: contact laws, friction laws,
 !! tube friction) and writes one HDF5 file and one CSV table of crush lengths.
 !!
 !!   landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]
