@@ -20,10 +20,10 @@ module landyn_app_support
     character(len=:), allocatable :: usage_line  !! usage line shown after a usage error [-]
     character(len=:), allocatable :: help(:)     !! lines of the --help text [-]
   contains
-    procedure :: info_option
-    procedure :: option_value
-    procedure :: die_usage
-    procedure :: die_files
+    procedure :: info_option   !! -h/--help and -V/--version
+    procedure :: option_value  !! the file name after an option
+    procedure :: die_usage     !! stop on a usage error
+    procedure :: die_files     !! stop on a refused output file
   end type app_t
 
 contains

@@ -106,6 +106,7 @@ module landyn_campaign_parallel
     integer(c_long) :: nsec = 0_c_long  !! nanoseconds [ns]
   end type timespec_t
 
+  !> POSIX nanosleep(2), for the master's short waits.
   interface
     !> POSIX nanosleep(2)
     function c_nanosleep(req, rem) bind(c, name='nanosleep') result(r)

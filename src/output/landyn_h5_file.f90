@@ -14,6 +14,7 @@ module landyn_h5_file
   public :: h5_create, h5_open_read, h5_close, h5_create_group
   public :: rename_file, delete_file, h5_create_partial, h5_commit_partial
 
+  !> The C library's rename(3) and remove(3).
   interface
     !> C library rename(3): 0 on success.
     function c_rename(old_name, new_name) bind(C, name='rename') result(rc)

@@ -15,15 +15,15 @@ module landyn_h5_read
   !> Read a dataset; arrays are allocatable and take their shape from the file:
   !! `call h5_read(file, path, value, stat, errmsg)`.
   interface h5_read
-    module procedure read_real_0d, read_real_1d, read_real_2d, read_real_3d
-    module procedure read_int_0d, read_int_1d, read_int_2d, read_logical_0d
-    module procedure read_string_0d, read_string_1d
+    module procedure read_real_0d, read_real_1d, read_real_2d, read_real_3d  !! real(wp), rank 0 to 3
+    module procedure read_int_0d, read_int_1d, read_int_2d, read_logical_0d  !! integer rank 0 to 2, logical
+    module procedure read_string_0d, read_string_1d                         !! character, rank 0 and 1
   end interface h5_read
 
   !> Read a scalar attribute of a group or dataset:
   !! `call h5_read_attr(file, obj_path, name, value, stat, errmsg)`.
   interface h5_read_attr
-    module procedure read_attr_string, read_attr_real, read_attr_int
+    module procedure read_attr_string, read_attr_real, read_attr_int  !! character, real(wp), integer
   end interface h5_read_attr
 
 contains

@@ -15,15 +15,15 @@ module landyn_h5_write
   !> Write a dataset with a mandatory "units" and an optional "description" attribute:
   !! `call h5_write(file, path, value, units, stat, errmsg [, description])`.
   interface h5_write
-    module procedure write_real_0d, write_real_1d, write_real_2d, write_real_3d
-    module procedure write_int_0d, write_int_1d, write_int_2d, write_logical_0d
-    module procedure write_string_0d, write_string_1d
+    module procedure write_real_0d, write_real_1d, write_real_2d, write_real_3d  !! real(wp), rank 0 to 3
+    module procedure write_int_0d, write_int_1d, write_int_2d, write_logical_0d  !! integer rank 0 to 2, logical
+    module procedure write_string_0d, write_string_1d                           !! character, rank 0 and 1
   end interface h5_write
 
   !> Write (or replace) a scalar attribute on a group or dataset:
   !! `call h5_write_attr(file, obj_path, name, value, stat, errmsg)`.
   interface h5_write_attr
-    module procedure write_attr_string, write_attr_real, write_attr_int
+    module procedure write_attr_string, write_attr_real, write_attr_int  !! character, real(wp), integer
   end interface h5_write_attr
 
 contains

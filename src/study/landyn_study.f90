@@ -122,8 +122,8 @@ contains
     integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
     logical :: keep_results
     namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
-      measure_strut, keep_results
-    namelist /variant/ label, set
+      measure_strut, keep_results  !! the &study group of a study deck (docs/study.md)
+    namelist /variant/ label, set  !! one &variant group of a study deck
     integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study, s0, s1, g
     integer, allocatable :: bad(:)
     character(len=msg_len) :: msg
