@@ -16,8 +16,8 @@ program bench_campaign_store
   use landyn_kinds, only: wp, msg_len
   use landyn_h5, only: delete_file
   use landyn_campaign_case, only: case_row_t, new_row, status_ok
-  use landyn_campaign_store, only: summary_meta_t, write_summary, read_summary, journal_open, journal_append, &
-                                   journal_flush
+  use landyn_campaign_store, only: summary_meta_t, write_summary, read_summary
+  use landyn_campaign_journal, only: journal_open, journal_append, journal_flush
   implicit none
 
   integer, parameter :: n_par = 8, n_gears = 4

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what LANDYN needs on Debian 12: compilers and libraries from Debian's packages, and the
-# Python post-processing packages (pinned in post/requirements.txt) into a virtual environment
-# .venv in the source tree. Run as root or with sudo available.
+# Python post-processing packages (pinned in post/requirements.txt) and FORD (docs/api/requirements.txt)
+# into a virtual environment .venv in the source tree. Run as root or with sudo available.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -26,5 +26,6 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install -q --upgrade pip
 .venv/bin/python -m pip install -q -r post/requirements.txt
+.venv/bin/python -m pip install -q -r docs/api/requirements.txt   # FORD, for the api_docs target
 .venv/bin/python -m pip install -q -e post/
 echo "install_prereqs: done"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite: unit (pFUnit), executable, regression against the paper and the stored
-# baselines, physics checks, campaigns (MPI) and the Python post-processing tests, on the Release
-# build; the unit and executable tests again on the Debug build (run-time checks, FP traps).
+# baselines, physics checks, campaigns (MPI), the Python post-processing tests and the API
+# documentation (FORD, label docs: fails on any FORD warning), on the Release build; the unit and
+# executable tests again on the Debug build (run-time checks, FP traps).
 # Benchmarks (label bench) are not part of it: run them with  ctest --test-dir build/release -L bench
 set -euo pipefail
 cd "$(dirname "$0")/.."

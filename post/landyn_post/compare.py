@@ -119,7 +119,7 @@ class StrutReference:
 
 
 def read_strut_csv(path: str, n_gears: int, load_case: str | None = None,
-                   column: str | None = None) -> StrutReference:
+                   column: str | None = None, n_struts: int = len(STRUTS)) -> StrutReference:
     """Reads a per-strut crush-length CSV (values in mm), see the module documentation.
 
     Value column: --column NAME (NAME or NAME_mm); default crush_mm if present, else the only column
@@ -171,16 +171,16 @@ def read_strut_csv(path: str, n_gears: int, load_case: str | None = None,
                     k_csv = strut_index(r[cols["strut"]])
                 except LandynPostError as exc:
                     raise LandynPostError(f"{path}: line {ln}: {exc}") from None
-                if measure_number(g_csv, k_csv) != m:
+                if measure_number(g_csv, k_csv, n_struts) != m:
                     raise LandynPostError(f"{path}: line {ln}: measure {m} is not gear {g_csv} {r[cols['strut']]}")
         else:
             g = int(_number(path, ln, "gear", r[cols["gear"]]))
             try:
-                m = measure_number(g, strut_index(r[cols["strut"]]))
+                m = measure_number(g, strut_index(r[cols["strut"]]), n_struts)
             except LandynPostError as exc:
                 raise LandynPostError(f"{path}: line {ln}: {exc}") from None
-        if not 1 <= m <= 3 * n_gears:
-            raise LandynPostError(f"{path}: line {ln}: measure {m} outside 1..{3 * n_gears} "
+        if not 1 <= m <= n_struts * n_gears:
+            raise LandynPostError(f"{path}: line {ln}: measure {m} outside 1..{n_struts * n_gears} "
                                   f"(the result has {n_gears} gears)")
         if m in values:
             raise LandynPostError(f"{path}: line {ln}: measure {m} appears twice")
@@ -390,7 +390,7 @@ class CrushRow:
 def crush_rows(res: Result, ref: StrutReference) -> list[CrushRow]:
     rows = []
     for m in sorted(ref.values):
-        g, k = measure_gear_strut(m)
+        g, k = measure_gear_strut(m, res.n_struts)
         rows.append(CrushRow(m, g, k, float(res.crush_length[g - 1, k]), ref.values[m]))
     return rows
 
@@ -696,13 +696,13 @@ def _not_checked_struts(res: Result, rows: list[CrushRow], series: list[Series],
     if crush_ref:
         have = {r.measure for r in rows}
         for g in range(1, res.n_gears + 1):
-            for k in range(3):
-                if measure_number(g, k) not in have:
-                    out.append(f"No. {measure_number(g, k)} gear {g} {STRUT_LABELS[STRUTS[k]]}")
+            for k in range(res.n_struts):
+                if measure_number(g, k, res.n_struts) not in have:
+                    out.append(f"No. {measure_number(g, k, res.n_struts)} gear {g} {STRUT_LABELS[STRUTS[k]]}")
     else:
         have = {(s.gear, s.strut) for s in series if s.strut is not None}
         for g in range(1, res.n_gears + 1):
-            for k in range(3):
+            for k in range(res.n_struts):
                 if (g, k) not in have:
                     out.append(f"gear {g} {STRUT_LABELS[STRUTS[k]]}")
     return out
@@ -776,7 +776,8 @@ def _main(argv=None) -> int:
             res_label, ref_label = "result " + res_label, "reference " + ref_label
         crush_ref = True
         rows = crush_rows(res, StrutReference(
-            {measure_number(g + 1, k): float(ref.crush_length[g, k]) for g in range(ref.n_gears) for k in range(3)},
+            {measure_number(g + 1, k, ref.n_struts): float(ref.crush_length[g, k])
+             for g in range(ref.n_gears) for k in range(ref.n_struts)},
             ref_label))
         sset = h5_series(res, ref, a.channels)
         warnings += _load_case_warnings(res, None, ref=ref)
@@ -791,7 +792,7 @@ def _main(argv=None) -> int:
     else:
         if a.map:
             p.error("--map needs --timeseries")
-        sref = read_strut_csv(ref_path, res.n_gears, a.load_case, a.column)
+        sref = read_strut_csv(ref_path, res.n_gears, a.load_case, a.column, res.n_struts)
         rows = crush_rows(res, sref)
         ref_label = sref.label
         crush_ref = True
@@ -837,7 +838,7 @@ def _main(argv=None) -> int:
         strict_fail += [f"reference channel {c!r} not compared" for c in sset.unmatched]
     not_checked = _not_checked_struts(res, rows, sset.series, crush_ref)
     if not_checked and (rows or sset.series):
-        n_all = 3 * res.n_gears
+        n_all = res.n_struts * res.n_gears
         what = "crush length" if crush_ref else "stroke, force or length history"
         print(f"Struts NOT checked ({len(not_checked)} of {n_all}, no reference {what}): {', '.join(not_checked)}")
         if crush_ref:

@@ -165,8 +165,8 @@ def _col_names(name: str, units: str, shape: tuple, labels: tuple | None = None)
     trail = shape[1:]
     if not trail:
         return [name + suf]
-    if len(trail) == 2 and trail[1] == 3:
-        return [f"gear{g + 1}_{STRUTS[k]}_{name}{suf}" for g in range(trail[0]) for k in range(3)]
+    if len(trail) == 2 and trail[1] == len(STRUTS):
+        return [f"gear{g + 1}_{STRUTS[k]}_{name}{suf}" for g in range(trail[0]) for k in range(trail[1])]
     if len(trail) == 1:
         if labels is not None and len(labels) == trail[0]:
             if tuple(labels) == STRUTS:
@@ -284,7 +284,7 @@ def study_runs_table(tree: Node) -> list[tuple[str, list]]:
                 if k == "crush_length":
                     a = np.asarray(leaf.value)
                     for g in range(a.shape[0]):
-                        for s in range(3):
+                        for s in range(a.shape[1]):
                             row[f"gear{g + 1}_{STRUTS[s]}_crush_length_m"] = a[g, s]
                 else:
                     v = leaf.value
@@ -394,8 +394,8 @@ def write_xdmf(path: str, res) -> list[str]:
     nbody = 3 * k
     force = np.full((n, ncell), np.nan)
     stroke = np.full((n, ncell), np.nan)
-    force[:, nbody:] = (res.strut_force / 1e3).reshape(n, 3 * g)
-    stroke[:, nbody:] = (res.stroke * 1e3).reshape(n, 3 * g)
+    force[:, nbody:] = (res.strut_force / 1e3).reshape(n, -1)
+    stroke[:, nbody:] = (res.stroke * 1e3).reshape(n, -1)
     foot = res.footpad_position * np.array([1.0, -1.0, -1.0])
     heavy = os.path.splitext(path)[0] + "_mesh.h5"
     hname = os.path.basename(heavy)

@@ -40,8 +40,8 @@ def write_summary_csv(path: str, res: Result) -> str:
         w.writerow(["measure", "gear", "strut", "crush_mm", "crushed_positive_mm", "crushed_negative_mm",
                     "stroke_margin_mm", "bottomed_out", "peak_strut_force_kN", "crush_work_J"])
         for i in range(res.n_gears):
-            for k in range(3):
-                w.writerow([measure_number(i + 1, k), i + 1, STRUTS[k],
+            for k in range(res.n_struts):
+                w.writerow([measure_number(i + 1, k, res.n_struts), i + 1, STRUTS[k],
                             f"{res.crush_length[i, k] * 1e3:.6f}", f"{res.crushed_positive[i, k] * 1e3:.6f}",
                             f"{res.crushed_negative[i, k] * 1e3:.6f}", f"{res.stroke_margin[i, k] * 1e3:.6f}",
                             int(res.bottomed_out[i, k]), f"{res.peak_strut_force[i, k] / 1e3:.6f}",

@@ -227,16 +227,17 @@ def fig_force_stroke(res: Result, opts: PlotOptions | None = None):
     sense), one panel per strut, the start and end marked; the area is the work of the strut."""
     plt = _plt()
     g = res.n_gears
-    fig, axs = plt.subplots(g, 3, figsize=(10, 2.3 * g + 1.2), squeeze=False)
+    ns = res.n_struts
+    fig, axs = plt.subplots(g, ns, figsize=(10, 2.3 * g + 1.2), squeeze=False)
     for i in range(g):
-        for k in range(3):
+        for k in range(ns):
             ax = axs[i, k]
             x = res.stroke[:, i, k] * MM
             y = res.strut_force[:, i, k] * KN
             ax.plot(x, y, color=STRUT_COLORS[k], lw=1.0)
             ax.plot(x[0], y[0], "o", color="k", ms=3, mfc="none")
             ax.plot(x[-1], y[-1], "o", color="k", ms=3)
-            ax.set_title(f"No. {measure_number(i + 1, k)}: gear {i + 1} {STRUT_LABELS[STRUTS[k]]}, "
+            ax.set_title(f"No. {measure_number(i + 1, k, ns)}: gear {i + 1} {STRUT_LABELS[STRUTS[k]]}, "
                          f"work {res.crush_work[i, k] / 1e3:.1f} kJ", fontsize=7)
             ax.tick_params(labelsize=6)
             ax.grid(True, alpha=0.3)
@@ -263,12 +264,12 @@ def fig_crush_lengths(res: Result, opts: PlotOptions | None = None):
     """Final crush length of every strut as bars (paper Fig. 8), capacities and crushed lengths
     marked, and reference values (the paper's Table 3 for its load cases, or a reference CSV)."""
     plt = _plt()
-    g = res.n_gears
-    fig, ax = plt.subplots(figsize=(max(8, 0.6 * 3 * g + 2), 5.5))
+    g, ns = res.n_gears, res.n_struts
+    fig, ax = plt.subplots(figsize=(max(8, 0.6 * ns * g + 2), 5.5))
     cap = res.strut_capacity()
-    x = np.arange(1, 3 * g + 1)
+    x = np.arange(1, ns * g + 1)
     net = res.crush_length.reshape(-1) * MM
-    colors = [STRUT_COLORS[k] for _ in range(g) for k in range(3)]
+    colors = [STRUT_COLORS[k] for _ in range(g) for k in range(ns)]
     bars = ax.bar(x, net, color=colors, edgecolor="k", lw=0.5, zorder=2)
     low = -res.crushed_negative.reshape(-1) * MM
     for b, v, lo in zip(bars, net, low):
@@ -297,12 +298,12 @@ def fig_crush_lengths(res: Result, opts: PlotOptions | None = None):
                        label=lab)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_xticks(x)
-    ax.set_xticklabels([f"{measure_number(i + 1, k)}\nG{i + 1}{'PLR'[k]}" for i in range(g) for k in range(3)],
+    ax.set_xticklabels([f"{measure_number(i + 1, k, ns)}\nG{i + 1}{'PLR'[k]}" for i in range(g) for k in range(ns)],
                        fontsize=7)
     ax.set_xlabel("measure (Table 3): G = gear, P primary, L secondary left, R secondary right")
     ax.set_ylabel("crush length [mm]\n(primary shortening, secondary lengthening +)")
     from matplotlib.patches import Patch
-    handles = [Patch(color=STRUT_COLORS[k], label=STRUT_LABELS[STRUTS[k]]) for k in range(3)]
+    handles = [Patch(color=STRUT_COLORS[k], label=STRUT_LABELS[STRUTS[k]]) for k in range(ns)]
     h2, _ = ax.get_legend_handles_labels()
     ax.legend(handles=handles + h2, fontsize=7, ncol=6, loc="upper center", bbox_to_anchor=(0.5, -0.17))
     ax.grid(True, axis="y", alpha=0.3, zorder=0)

@@ -19,12 +19,12 @@ def crush_table_lines(res: Result) -> list[str]:
     units = f"{'':>3} {'':>4}  {'':<16}{'[mm]':>8}{'[mm]':>8}{'[mm]':>8}{'[mm]':>12}{'[mm]':>8}{'[kN]':>8}{'[kJ]':>8}"
     lines = [head, units, "-" * len(head)]
     for i in range(res.n_gears):
-        for k in range(3):
+        for k in range(res.n_struts):
             c_pos, c_neg = cap[i, k]
             capt = f"+{c_pos * MM:.0f}" + (f"/-{c_neg * MM:.0f}" if np.isfinite(c_neg) else "")
             flag = " BOTTOMED" if res.bottomed_out[i, k] else ""
             lines.append(
-                f"{measure_number(i + 1, k):>3} {i + 1:>4}  {STRUT_LABELS[STRUTS[k]]:<16}"
+                f"{measure_number(i + 1, k, res.n_struts):>3} {i + 1:>4}  {STRUT_LABELS[STRUTS[k]]:<16}"
                 f"{res.crush_length[i, k] * MM:8.1f}{res.crushed_positive[i, k] * MM:8.1f}"
                 f"{res.crushed_negative[i, k] * MM:8.1f}{capt:>12}{res.stroke_margin[i, k] * MM:8.1f}"
                 f"{res.peak_strut_force[i, k] / 1e3:8.1f}{res.crush_work[i, k] / 1e3:8.2f}{flag}")
@@ -72,7 +72,7 @@ def verdict(res: Result, min_stroke_margin: float = 0.0, max_overload: float | N
     m = float(np.min(res.stroke_margin))
     i, k = np.unravel_index(int(np.argmin(res.stroke_margin)), res.stroke_margin.shape)
     crit(m >= min_stroke_margin, f"every stroke margin >= {min_stroke_margin * MM:.1f} mm (smallest {m * MM:.1f} mm, "
-         f"No. {measure_number(i + 1, k)} gear {i + 1} {STRUT_LABELS[STRUTS[k]]}"
+         f"No. {measure_number(i + 1, k, res.n_struts)} gear {i + 1} {STRUT_LABELS[STRUTS[k]]}"
          + (f"; {int(np.sum(res.bottomed_out))} bottomed out)" if np.any(res.bottomed_out) else ")"))
     if max_overload is not None:
         crit(res.peak_overload <= max_overload, f"peak overload <= {max_overload:g} g "

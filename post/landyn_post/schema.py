@@ -6,6 +6,8 @@ units, shapes, the strut and component labels, the channel names used by ``landy
 
 Shapes are as h5py reads them (C order): Fortran ``x(3, n)`` is ``(n, 3)``, gear arrays
 ``(3, n_gears, n)`` are ``(n, n_gears, 3)``, summary arrays ``(3, n_gears)`` are ``(n_gears, 3)``.
+In DATASETS, "n" is the number of samples, "g" of gears and "s" of struts per gear; the file says
+them (``/timeseries/time``, ``/summary/crush_length``), nothing here assumes them.
 
 Typical use::
 
@@ -136,13 +138,13 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
             "-z = upward deceleration in the z-down frame)", _XYZ),
         _ts("overload_peak", "/timeseries/body/overload_peak", "g", ("n",),
             "largest |overload| over every integration step since the previous sample (this one included)"),
-        _ts("strut_length", "/timeseries/gears/strut_length", "m", ("n", "g", 3),
+        _ts("strut_length", "/timeseries/gears/strut_length", "m", ("n", "g", "s"),
             "strut length between its joints; last axis primary, secondary left, secondary right", STRUTS),
-        _ts("stroke", "/timeseries/gears/stroke", "m", ("n", "g", 3),
+        _ts("stroke", "/timeseries/gears/stroke", "m", ("n", "g", "s"),
             "stroke: primary shortening positive, secondaries lengthening positive (Table 3 sense)", STRUTS),
-        _ts("strut_force", "/timeseries/gears/strut_force", "N", ("n", "g", 3),
+        _ts("strut_force", "/timeseries/gears/strut_force", "N", ("n", "g", "s"),
             "axial buffer force, compression positive", STRUTS),
-        _ts("strut_force_peak", "/timeseries/gears/strut_force_peak", "N", ("n", "g", 3),
+        _ts("strut_force_peak", "/timeseries/gears/strut_force_peak", "N", ("n", "g", "s"),
             "largest |axial force| over every integration step since the previous sample", STRUTS),
         _ts("footpad_position", "/timeseries/gears/footpad_position", "m", ("n", "g", 3),
             "footpad ball joint d_i, global frame, z down", _XYZ),
@@ -169,21 +171,21 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
     + [_ts("energy/" + e, "/timeseries/energy/" + e, "J", ("n",), "energy audit: " + e.replace("_", " "))
        for e in ENERGY_NAMES]
     + [
-        DatasetSpec("crush_length", "/summary/crush_length", "m", ("g", 3), "real",
+        DatasetSpec("crush_length", "/summary/crush_length", "m", ("g", "s"), "real",
                     "signed net crush per gear and strut (Table 3 sense)", STRUTS),
-        DatasetSpec("crushed_positive", "/summary/crushed_positive", "m", ("g", 3), "real",
+        DatasetSpec("crushed_positive", "/summary/crushed_positive", "m", ("g", "s"), "real",
                     "crushed length toward + (primary shortening, secondary lengthening)", STRUTS),
-        DatasetSpec("crushed_negative", "/summary/crushed_negative", "m", ("g", 3), "real",
+        DatasetSpec("crushed_negative", "/summary/crushed_negative", "m", ("g", "s"), "real",
                     "crushed length toward - (secondary shortening)", STRUTS),
-        DatasetSpec("stroke_final", "/summary/stroke_final", "m", ("g", 3), "real", "stroke at the end", STRUTS),
-        DatasetSpec("stroke_margin", "/summary/stroke_margin", "m", ("g", 3), "real",
+        DatasetSpec("stroke_final", "/summary/stroke_final", "m", ("g", "s"), "real", "stroke at the end", STRUTS),
+        DatasetSpec("stroke_margin", "/summary/stroke_margin", "m", ("g", "s"), "real",
                     "stroke capacity minus crushed length, worst direction (negative: bottomed out)", STRUTS),
-        DatasetSpec("bottomed_out", "/summary/bottomed_out", "-", ("g", 3), "int",
+        DatasetSpec("bottomed_out", "/summary/bottomed_out", "-", ("g", "s"), "int",
                     "1 where a stroke exceeded its capacity", STRUTS),
-        DatasetSpec("crush_work", "/summary/crush_work", "J", ("g", 3), "real", "honeycomb crush work", STRUTS),
-        DatasetSpec("mode_switches", "/summary/mode_switches", "-", ("g", 3), "int",
+        DatasetSpec("crush_work", "/summary/crush_work", "J", ("g", "s"), "real", "honeycomb crush work", STRUTS),
+        DatasetSpec("mode_switches", "/summary/mode_switches", "-", ("g", "s"), "int",
                     "crush-mode changes (locked, crushing +/-, free) per strut", STRUTS),
-        DatasetSpec("peak_strut_force", "/summary/peak_strut_force", "N", ("g", 3), "real",
+        DatasetSpec("peak_strut_force", "/summary/peak_strut_force", "N", ("g", "s"), "real",
                     "largest |axial force| at the output samples", STRUTS),
         DatasetSpec("peak_overload", "/summary/peak_overload", "g", (), "real",
                     "largest |overload| at the mass centre (every step)"),
@@ -271,14 +273,15 @@ def units_token(units: str) -> str:
     return units.replace("/", "_per_").replace("^", "").replace(" ", "_")
 
 
-def measure_number(gear: int, strut: int) -> int:
-    """Table 3 measure number (1-based) of gear (1-based) and strut index (0 primary, 1 left, 2 right)."""
-    return 3 * (gear - 1) + strut + 1
+def measure_number(gear: int, strut: int, n_struts: int = len(STRUTS)) -> int:
+    """Table 3 measure number (1-based) of gear (1-based) and strut index (0 primary, 1 left, 2 right)
+    on a lander with n_struts struts per gear."""
+    return n_struts * (gear - 1) + strut + 1
 
 
-def measure_gear_strut(measure: int) -> tuple[int, int]:
-    """(gear 1-based, strut index 0..2) of a Table 3 measure number."""
-    return (measure - 1) // 3 + 1, (measure - 1) % 3
+def measure_gear_strut(measure: int, n_struts: int = len(STRUTS)) -> tuple[int, int]:
+    """(gear 1-based, strut index 0..n_struts-1) of a Table 3 measure number."""
+    return (measure - 1) // n_struts + 1, (measure - 1) % n_struts
 
 
 def strut_index(name: str) -> int:
@@ -361,6 +364,11 @@ class Result:
     def n_gears(self) -> int:
         return int(self.data["crush_length"].shape[0])
 
+    @property
+    def n_struts(self) -> int:
+        """Struts per gear: the last axis of the strut arrays (shape "s" in DATASETS)."""
+        return int(self.data["crush_length"].shape[1])
+
     @staticmethod
     def units(key: str) -> str:
         return _BY_KEY[key].units
@@ -413,7 +421,7 @@ class Result:
             raise LandynFileError(f"{self.path}: {what} not found in /meta/resolved_input ({exc})") from None
 
     def strut_capacity(self) -> np.ndarray:
-        """Stroke capacity per gear and strut, shape (n_gears, 3, 2): [..., 0] toward +
+        """Stroke capacity per gear and strut, shape (n_gears, n_struts, 2): [..., 0] toward +
         (primary shortening, secondary lengthening), [..., 1] toward - (secondary shortening,
         as a positive length; NaN for the primary, which has none).
 
@@ -421,7 +429,7 @@ class Result:
         stroke_lengthening / stroke_shortening); if that cannot be read, the + capacity falls back
         to crushed_positive + stroke_margin from /summary (exact where the + side governs).
         """
-        cap = np.full((self.n_gears, 3, 2), np.nan)
+        cap = np.full((self.n_gears, self.n_struts, 2), np.nan)
         try:
             d = self.deck
             n_st = int(d.get("primary_strut", "n_stages"))
@@ -496,7 +504,7 @@ class Result:
                 raise LandynPostError(f"channel {text!r}: gear must be an integer") from None
             if not 1 <= gear <= self.n_gears:
                 raise LandynPostError(f"channel {text!r}: gear {gear} not in 1..{self.n_gears}")
-        if s.shape[-1] == 3:
+        if s.shape and s.shape[-1] in (3, "s"):
             if s.components == STRUTS:
                 if "strut" not in sel:
                     raise LandynPostError(f"channel {text!r}: {name} needs strut=primary|secondary_left|secondary_right")
@@ -562,8 +570,9 @@ class Result:
         for g in range(1, self.n_gears + 1) if gears is None else gears:
             for d in wanted:
                 if d.path.startswith("/timeseries/gears/"):
-                    if d.shape[-1] == 3:
-                        out += [self._make_channel(d.key, g, i) for i in range(3)]
+                    if d.shape[-1] in (3, "s"):
+                        k = self.n_struts if d.shape[-1] == "s" else 3
+                        out += [self._make_channel(d.key, g, i) for i in range(k)]
                     else:
                         out.append(self._make_channel(d.key, g, None))
         if include_body:
@@ -668,13 +677,13 @@ def _minor(version: str) -> int:
 
 def _check_shapes(path: str, data: dict[str, object]) -> None:
     n = np.shape(data["time"])[0] if np.ndim(data["time"]) == 1 else -1
-    g = np.shape(data["crush_length"])[0] if np.ndim(data["crush_length"]) == 2 else -1
-    if n < 1 or g < 1:
+    g, ns = np.shape(data["crush_length"]) if np.ndim(data["crush_length"]) == 2 else (-1, -1)
+    if n < 1 or g < 1 or ns < 1:
         raise LandynFileError(f"{path}: /timeseries/time or /summary/crush_length has an unexpected shape")
     for d in DATASETS:
         if d.kind == "text" or data[d.key] is None:
             continue
-        want = tuple(n if s == "n" else g if s == "g" else s for s in d.shape)
+        want = tuple({"n": n, "g": g, "s": ns}.get(s, s) for s in d.shape)
         got = np.shape(data[d.key])
         if got != want:
             raise LandynFileError(f"{path}: {d.path} has shape {got}, expected {want} "

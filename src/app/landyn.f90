@@ -1,4 +1,4 @@
-!> landyn: runs one touchdown simulation of a legged lander.
+!> The landyn program runs one touchdown simulation of a legged lander.
 !!
 !!   landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]
 !!
@@ -17,10 +17,31 @@ program landyn
   use landyn_health, only: health_t, check_health, check_input_health, write_health, health_fail
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
-  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
-                        write_input_errors
+  use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
+  use landyn_cli, only: get_arg, command_line, positional_arg_problem, write_input_errors
+  use landyn_app_support, only: app_t
   implicit none
 
+  !> --help text
+  character(len=120), parameter :: help_text(*) = [character(len=120) :: &
+      'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]', &
+      '', &
+      'Simulates the touchdown of a legged planetary lander (Wang et al., Aerospace 2023, 10, 811).', &
+      'Without a deck, runs the built-in default: the paper''s 16 t lunar lander, load case LC-1.', &
+      '', &
+      '  DECK.nml        namelist input deck (see docs/input/); groups not given keep their defaults', &
+      '  -o, --output F  result file (HDF5, docs/output.md); default: the deck''s base name + .h5', &
+      '                  in the current directory, or &output file', &
+      '  --check         validate the deck and print the fully resolved input; run nothing', &
+      '  -q, --quiet     no progress messages on stderr', &
+      '  -V, --version   print the version', &
+      '  -h, --help      print this help', &
+      '', &
+      'Exit status: 0 success (a tip-over is a result), 1 usage error, 2 invalid input,', &
+      '3 simulation failed (diverged), 4 result file not written (or refused: docs/files.md),', &
+      '6 run-health check failed: result physically meaningless (docs/health.md).']
+
+  type(app_t) :: app
   type(landyn_input_t) :: inp
   type(input_errors_t) :: errors
   type(sim_result_t) :: res
@@ -30,6 +51,9 @@ program landyn
   integer :: i, n, stat, progress
   character(len=msg_len) :: msg
 
+  app%name = 'landyn'
+  app%usage_line = trim(help_text(1))
+  app%help = help_text
   deck = ''
   problem = ''
   out_file = ''
@@ -40,25 +64,17 @@ program landyn
   do while (i < n)
     i = i + 1
     arg = get_arg(i)
+    call app%info_option(arg)
     select case (arg)
-    case ('-h', '--help')
-      call usage(output_unit)
-      call terminate(0)
-    case ('-V', '--version')
-      call write_version(output_unit, 'landyn')
-      call terminate(0)
     case ('--check')
       check_only = .true.
     case ('-q', '--quiet')
       quiet = .true.
     case ('-o', '--output')
-      if (i == n) call die_usage('option '//arg//' needs a file name')
-      i = i + 1
-      out_file = get_arg(i)
-      if (len(out_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
+      out_file = app%option_value(i, n, arg)
     case default
       problem = positional_arg_problem(arg, deck, 'deck')
-      if (len(problem) > 0) call die_usage(problem)
+      if (len(problem) > 0) call app%die_usage(problem)
       deck = arg
     end select
   end do
@@ -70,25 +86,21 @@ program landyn
     inp = default_input()
     call resolve_input(inp, errors)
     call validate_input(inp, errors)
-    stat = merge(0, 1, errors%count() == 0)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == 0)
   end if
   if (stat /= 0 .or. errors%count() > 0) then
     call write_input_errors(error_unit, 'landyn', errors)
-    call terminate(2)
+    call terminate(EXIT_INPUT)
   end if
   if (check_only) then
     call write_resolved_input(output_unit, inp)
-    call terminate(0)
+    call terminate(EXIT_OK)
   end if
   if (len(out_file) == 0) out_file = trim(inp%output%file)
 
   ! ---- the result file may be written (docs/files.md): checked before the run
   problem = output_file_problem(out_file, 'result file', [character(len=len(deck)) :: deck], .true.)
-  if (len(problem) > 0) then
-    write (error_unit, '(a)') 'landyn: '//problem
-    write (error_unit, '(a)') 'landyn: nothing was run and no file was written'
-    call terminate(4)
-  end if
+  if (len(problem) > 0) call app%die_files(problem)
   if (file_kind(out_file) == kind_regular .and. .not. quiet) &
     write (error_unit, '(a)') 'landyn: '//out_file//' exists and will be replaced'
 
@@ -98,7 +110,7 @@ program landyn
     call write_health(error_unit, 'landyn: ', health)
     write (error_unit, '(a)') 'landyn: a run-health check of the input failed: the run would be physically '// &
       'meaningless; nothing was run and no file was written (exit status 6)'
-    call terminate(6)
+    call terminate(EXIT_HEALTH)
   end if
 
   ! ---- run
@@ -115,7 +127,7 @@ program landyn
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: simulation failed: '//trim(msg)
     write (error_unit, '(a)') 'landyn: no result file was written'
-    call terminate(3)
+    call terminate(EXIT_DIVERGED)
   end if
 
   ! ---- result file
@@ -124,7 +136,7 @@ program landyn
   call write_result_file(out_file, inp, res, cmd, stat, msg, health)
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
-    call terminate(4)
+    call terminate(EXIT_FILE)
   end if
   call write_summary_table(output_unit, inp, res)
   call write_health(output_unit, '', health)
@@ -133,36 +145,7 @@ program landyn
     call write_health(error_unit, 'landyn: ', health)
     write (error_unit, '(a)') 'landyn: a run-health check failed: the result is physically meaningless '// &
       '(exit status 6; /summary/health in '//out_file//')'
-    call terminate(6)
+    call terminate(EXIT_HEALTH)
   end if
-
-contains
-
-  subroutine usage(u)
-    integer, intent(in) :: u               !! output unit
-    write (u, '(a)') 'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]', &
-      '', &
-      'Simulates the touchdown of a legged planetary lander (Wang et al., Aerospace 2023, 10, 811).', &
-      'Without a deck, runs the built-in default: the paper''s 16 t lunar lander, load case LC-1.', &
-      '', &
-      '  DECK.nml        namelist input deck (see docs/input/); groups not given keep their defaults', &
-      '  -o, --output F  result file (HDF5, docs/output.md); default: the deck''s base name + .h5', &
-      '                  in the current directory, or &output file', &
-      '  --check         validate the deck and print the fully resolved input; run nothing', &
-      '  -q, --quiet     no progress messages on stderr', &
-      '  -V, --version   print the version', &
-      '  -h, --help      print this help', &
-      '', &
-      'Exit status: 0 success (a tip-over is a result), 1 usage error, 2 invalid input,', &
-      '3 simulation failed (diverged), 4 result file not written (or refused: docs/files.md),', &
-      '6 run-health check failed: result physically meaningless (docs/health.md).'
-  end subroutine usage
-
-  subroutine die_usage(text)
-    character(len=*), intent(in) :: text   !! what is wrong
-    call write_usage_error(error_unit, 'landyn', text, &
-                           'usage: landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]')
-    call terminate(1)
-  end subroutine die_usage
 
 end program landyn

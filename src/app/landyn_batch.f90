@@ -1,4 +1,4 @@
-!> landyn_batch: campaigns of LANDYN runs (grids, Monte Carlo dispersions, case lists) on
+!> The landyn_batch program runs campaigns of LANDYN runs (grids, Monte Carlo dispersions, case lists) on
 !! one or many MPI ranks, and the serial pieces for Slurm job arrays. See docs/campaign.md.
 !!
 !!   mpirun -np N landyn_batch DECK [--resume] [--force] [--stop-after N] [-o FILE] [--dedicated-master] [-q]
@@ -12,8 +12,10 @@
 !! file; docs/files.md); 5 stopped early (--stop-after) or merged summary incomplete.
 program landyn_batch
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem
-  use landyn_campaign_tasks, only: exit_ok, check_campaign, list_cases, run_case_range, merge_summaries
+  use landyn_cli, only: get_arg, command_line, positional_arg_problem
+  use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_app_support, only: app_t
+  use landyn_campaign_tasks, only: check_campaign, list_cases, run_case_range, merge_summaries
   use landyn_campaign_parallel, only: batch_options_t, run_campaign
   use landyn_process, only: terminate
   use landyn_input, only: input_errors_t
@@ -21,11 +23,48 @@ program landyn_batch
   use landyn_files, only: output_file_problem
   implicit none
 
+  !> --help text
+  character(len=120), parameter :: help_text(*) = [character(len=120) :: &
+      'usage: mpirun -np N landyn_batch DECK [--resume | --force] [--stop-after N] [-o FILE]', &
+      '                                      [--dedicated-master] [-q]', &
+      '       landyn_batch DECK --case K[:L] [-o FILE] [-q]', &
+      '       landyn_batch --merge OUT IN...', &
+      '       landyn_batch DECK --check | --list-cases', &
+      '', &
+      'Runs a LANDYN campaign (grid, Monte Carlo dispersion or case list; docs/campaign.md): every case', &
+      'is the campaign''s base run deck with the case''s inputs, run exactly as landyn runs it.', &
+      'Rank 0 hands out the cases; all rows go to one HDF5 summary file.', &
+      '', &
+      '  DECK                campaign deck (&campaign, &parameter, &criteria)', &
+      '  -o, --output F      summary file (default: &campaign summary_file, or DECK''s base name + .h5);', &
+      '                      with --case: the file of the cases'' rows; with --merge: see below', &
+      '  --resume            continue the campaign of the summary file and its journal, skipping', &
+      '                      finished cases; the result equals an uninterrupted run', &
+      '  --force             overwrite an existing summary file and journal', &
+      '  --stop-after N      stop after N rows are written, as if killed (to test --resume)', &
+      '  --dedicated-master  rank 0 only hands out cases (default: it runs cases too up to 16 ranks)', &
+      '  --case K[:L]        without MPI: run cases K..L and write their rows to their own file', &
+      '                      (default <summary>.case<K>.h5); for Slurm job arrays', &
+      '  --merge OUT IN...   without MPI: combine summary files of one campaign into OUT', &
+      '  --check             validate the deck and describe the campaign; run nothing', &
+      '  --list-cases        print every case''s inputs as CSV; run nothing', &
+      '  -q, --quiet         no progress messages on stderr', &
+      '  -V, --version       print the version', &
+      '  -h, --help          print this help', &
+      '', &
+      'Exit status: 0 success (failed cases are results), 1 usage error, 2 invalid campaign or files of', &
+      'another campaign, 4 a file not written (or refused: docs/files.md), 5 stopped early (--stop-after)', &
+      'or merged summary incomplete.']
+
+  type(app_t) :: app
   type(batch_options_t) :: opts
   character(len=:), allocatable :: deck, arg, out_file, task, range_text, problem
   character(len=1024), allocatable :: inputs(:)
   integer :: i, n, code, k1, k2, ios, p
 
+  app%name = 'landyn_batch'
+  app%usage_line = 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... (landyn_batch --help)'
+  app%help = help_text
   deck = ''
   problem = ''
   out_file = ''
@@ -38,13 +77,8 @@ program landyn_batch
   do while (i < n)
     i = i + 1
     arg = get_arg(i)
+    call app%info_option(arg)
     select case (arg)
-    case ('-h', '--help')
-      call usage(output_unit)
-      call terminate(0)
-    case ('-V', '--version')
-      call write_version(output_unit, 'landyn_batch')
-      call terminate(0)
     case ('--resume')
       opts%resume = .true.
     case ('--force')
@@ -58,44 +92,41 @@ program landyn_batch
     case ('--list-cases')
       call set_task('list')
     case ('--stop-after')
-      if (i == n) call die_usage('option --stop-after needs a number of cases')
+      if (i == n) call app%die_usage('option --stop-after needs a number of cases')
       i = i + 1
       arg = get_arg(i)
       read (arg, *, iostat=ios) opts%stop_after
-      if (ios /= 0 .or. opts%stop_after < 1) call die_usage('--stop-after needs a positive number, got '//arg)
+      if (ios /= 0 .or. opts%stop_after < 1) call app%die_usage('--stop-after needs a positive number, got '//arg)
     case ('-o', '--output')
-      if (i == n) call die_usage('option '//arg//' needs a file name')
-      i = i + 1
-      out_file = get_arg(i)
-      if (len(out_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
+      out_file = app%option_value(i, n, arg)
     case ('--case')
-      if (i == n) call die_usage('option --case needs a case id K or a range K:L')
+      if (i == n) call app%die_usage('option --case needs a case id K or a range K:L')
       call set_task('case')
       i = i + 1
       range_text = get_arg(i)
     case ('--merge')
       call set_task('merge')
-      if (n - i < 2) call die_usage('--merge needs an output file and at least one input file')
+      if (n - i < 2) call app%die_usage('--merge needs an output file and at least one input file')
       out_file = get_arg(i + 1)
-      if (len(out_file) == 0) call die_usage('--merge needs a non-empty output file name')
+      if (len(out_file) == 0) call app%die_usage('--merge needs a non-empty output file name')
       allocate (inputs(n - i - 1))
       do p = 1, size(inputs)
         inputs(p) = get_arg(i + 1 + p)
-        if (len(get_arg(i + 1 + p)) > len(inputs(p))) call die_usage('file name too long: '//get_arg(i + 1 + p))
+        if (len(get_arg(i + 1 + p)) > len(inputs(p))) call app%die_usage('file name too long: '//get_arg(i + 1 + p))
       end do
       i = n
     case default
       problem = positional_arg_problem(arg, deck, 'deck')
-      if (len(problem) > 0) call die_usage(problem)
+      if (len(problem) > 0) call app%die_usage(problem)
       deck = arg
     end select
   end do
 
-  code = exit_ok
+  code = EXIT_OK
   call check_output_file()
   select case (task)
   case ('merge')
-    if (len(deck) > 0) call die_usage('--merge takes no deck: landyn_batch --merge OUT IN...')
+    if (len(deck) > 0) call app%die_usage('--merge takes no deck: landyn_batch --merge OUT IN...')
     call merge_summaries(out_file, inputs, opts%command_line, output_unit, error_unit, code)
   case ('check')
     call need_deck()
@@ -114,35 +145,32 @@ program landyn_batch
       if (ios == 0) read (range_text(p + 1:), *, iostat=ios) k2
     end if
     if (ios /= 0 .or. verify(range_text, '0123456789:') /= 0) &
-      call die_usage('--case needs a case id K or a range K:L, got '//range_text)
+      call app%die_usage('--case needs a case id K or a range K:L, got '//range_text)
     call run_case_range(deck, k1, k2, out_file, opts%quiet, opts%command_line, output_unit, error_unit, code)
   case default
     call need_deck()
     opts%summary_file = out_file
-    if (opts%resume .and. opts%force) call die_usage('--resume and --force exclude each other')
+    if (opts%resume .and. opts%force) call app%die_usage('--resume and --force exclude each other')
     call run_campaign(deck, opts, output_unit, error_unit, code)
   end select
 
   select case (code)
-  case (0)
+  case (EXIT_OK)
     continue
-  case (1)
-    call terminate(1)
-  case (2)
-    call terminate(2)
-  case (4)
-    call terminate(4)
-  case (5)
-    call terminate(5)   ! not an error: the summary is incomplete (--stop-after, or --merge with cases missing)
+  case (EXIT_USAGE, EXIT_INPUT, EXIT_FILE)
+    call terminate(code)
+  case (EXIT_INCOMPLETE)
+    call terminate(code)   ! not an error: the summary is incomplete (--stop-after, or --merge with cases missing)
   case default
-    call terminate(3)
+    call terminate(EXIT_DIVERGED)
   end select
 
 contains
 
+  !> Select the task; two different task options are a usage error.
   subroutine set_task(t)
     character(len=*), intent(in) :: t      !! task name
-    if (task /= 'campaign' .and. task /= t) call die_usage('--check, --list-cases, --case and --merge exclude '// &
+    if (task /= 'campaign' .and. task /= t) call app%die_usage('--check, --list-cases, --case and --merge exclude '// &
                                                           'each other')
     task = t
   end subroutine set_task
@@ -181,61 +209,18 @@ contains
       if (len_trim(files(k)) > 0 .and. trim(files(k)) == path) then
         write (error_unit, '(a)') 'landyn_batch: output file '''//path//''' is an input of this run; refusing '// &
           'to overwrite it'
-        call terminate(4)
+        call terminate(EXIT_FILE)
       end if
     end do
     why = output_file_problem(path, 'output file', files, .true.)
-    if (len(why) > 0) then
-      write (error_unit, '(a)') 'landyn_batch: '//why
-      write (error_unit, '(a)') 'landyn_batch: nothing was run and no file was written'
-      call terminate(4)
-    end if
+    if (len(why) > 0) call app%die_files(why)
   end subroutine check_output_file
 
+  !> A usage error unless a campaign deck was given.
   subroutine need_deck()
-    if (len(deck) == 0) call die_usage('no campaign deck given')
+    if (len(deck) == 0) call app%die_usage('no campaign deck given')
   end subroutine need_deck
 
-  subroutine usage(u)
-    integer, intent(in) :: u               !! output unit
-    write (u, '(a)') &
-      'usage: mpirun -np N landyn_batch DECK [--resume | --force] [--stop-after N] [-o FILE]', &
-      '                                      [--dedicated-master] [-q]', &
-      '       landyn_batch DECK --case K[:L] [-o FILE] [-q]', &
-      '       landyn_batch --merge OUT IN...', &
-      '       landyn_batch DECK --check | --list-cases', &
-      '', &
-      'Runs a LANDYN campaign (grid, Monte Carlo dispersion or case list; docs/campaign.md): every case', &
-      'is the campaign''s base run deck with the case''s inputs, run exactly as landyn runs it.', &
-      'Rank 0 hands out the cases; all rows go to one HDF5 summary file.', &
-      '', &
-      '  DECK                campaign deck (&campaign, &parameter, &criteria)', &
-      '  -o, --output F      summary file (default: &campaign summary_file, or DECK''s base name + .h5);', &
-      '                      with --case: the file of the cases'' rows; with --merge: see below', &
-      '  --resume            continue the campaign of the summary file and its journal, skipping', &
-      '                      finished cases; the result equals an uninterrupted run', &
-      '  --force             overwrite an existing summary file and journal', &
-      '  --stop-after N      stop after N rows are written, as if killed (to test --resume)', &
-      '  --dedicated-master  rank 0 only hands out cases (default: it runs cases too up to 16 ranks)', &
-      '  --case K[:L]        without MPI: run cases K..L and write their rows to their own file', &
-      '                      (default <summary>.case<K>.h5); for Slurm job arrays', &
-      '  --merge OUT IN...   without MPI: combine summary files of one campaign into OUT', &
-      '  --check             validate the deck and describe the campaign; run nothing', &
-      '  --list-cases        print every case''s inputs as CSV; run nothing', &
-      '  -q, --quiet         no progress messages on stderr', &
-      '  -V, --version       print the version', &
-      '  -h, --help          print this help', &
-      '', &
-      'Exit status: 0 success (failed cases are results), 1 usage error, 2 invalid campaign or files of', &
-      'another campaign, 4 a file not written (or refused: docs/files.md), 5 stopped early (--stop-after)', &
-      'or merged summary incomplete.'
-  end subroutine usage
 
-  subroutine die_usage(text)
-    character(len=*), intent(in) :: text   !! what is wrong
-    call write_usage_error(error_unit, 'landyn_batch', text, &
-                           'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... (landyn_batch --help)')
-    call terminate(1)
-  end subroutine die_usage
 
 end program landyn_batch

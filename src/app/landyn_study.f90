@@ -1,4 +1,4 @@
-!> landyn_study: runs a sensitivity study (the paper's section 4: contact laws, friction laws,
+!> The landyn_study program runs a sensitivity study (the paper's section 4: contact laws, friction laws,
 !! tube friction) and writes one HDF5 file and one CSV table of crush lengths.
 !!
 !!   landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]
@@ -11,182 +11,18 @@ program landyn_study_main
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
-  use landyn_study, only: study_t, read_study, prepare_study, run_study, write_study_csv, write_study_h5, &
-                          status_failed, status_unhealthy
+  use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, strut_names
+  use landyn_study_output, only: write_study_csv, write_study_h5
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
-  use landyn_cli, only: get_arg, command_line, write_version, write_usage_error, positional_arg_problem, &
-                        write_input_errors
+  use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
+  use landyn_cli, only: get_arg, command_line, positional_arg_problem, write_input_errors
+  use landyn_app_support, only: app_t
   implicit none
 
-  type(study_t) :: study
-  type(input_errors_t) :: errors
-  character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd, problem
-  logical :: check_only, quiet
-  integer :: i, n, stat, run_stat, c, v, progress
-  character(len=msg_len) :: msg
-  character(len=4096), allocatable :: inputs(:)
-
-  deck = ''
-  problem = ''
-  h5_file = ''
-  csv_file = ''
-  check_only = .false.
-  quiet = .false.
-  n = command_argument_count()
-  i = 0
-  do while (i < n)
-    i = i + 1
-    arg = get_arg(i)
-    select case (arg)
-    case ('-h', '--help')
-      call usage(output_unit)
-      call terminate(0)
-    case ('-V', '--version')
-      call write_version(output_unit, 'landyn_study')
-      call terminate(0)
-    case ('--check')
-      check_only = .true.
-    case ('-q', '--quiet')
-      quiet = .true.
-    case ('-o', '--output')
-      if (i == n) call die_usage('option '//arg//' needs a file name')
-      i = i + 1
-      h5_file = get_arg(i)
-      if (len(h5_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
-    case ('--csv')
-      if (i == n) call die_usage('option '//arg//' needs a file name')
-      i = i + 1
-      csv_file = get_arg(i)
-      if (len(csv_file) == 0) call die_usage('option '//arg//' needs a non-empty file name')
-    case default
-      problem = positional_arg_problem(arg, deck, 'study deck')
-      if (len(problem) > 0) call die_usage(problem)
-      deck = arg
-    end select
-  end do
-  if (len(deck) == 0) call die_usage('no study deck given')
-
-  ! ---- the study deck and every run's input, all checked before anything runs
-  call read_study(deck, study, errors, stat)
-  if (len(h5_file) > 0) study%output = h5_file   ! kept run files are named after the result file
-  ! prepared also after errors in the study deck, to report every problem at once
-  if (stat /= 2 .and. study%n_cases > 0 .and. study%n_variants > 0) call prepare_study(study, errors, i)
-  if (stat /= 0 .or. errors%count() > 0) then
-    call write_input_errors(error_unit, 'landyn_study', errors)
-    call terminate(2)
-  end if
-  if (len(h5_file) == 0) h5_file = trim(study%output)
-  if (len(csv_file) == 0) csv_file = trim(study%csv)
-  if (check_only) then
-    write (output_unit, '(a)') 'landyn_study: '//trim(study%title)
-    do v = 1, study%n_variants
-      do c = 1, study%n_cases
-        write (output_unit, '(a)') '  '//trim(study%variant(v)%label)//' on '//trim(study%case_label(c))//' ('// &
-          trim(study%case_deck(c))//'): contact '''//trim(study%inp(c, v)%contact%law)//''', friction '''// &
-          trim(study%inp(c, v)%friction%law)//''', tube friction '//merge('on ', 'off', &
-          study%inp(c, v)%primary%tube_friction)
-      end do
-    end do
-    write (output_unit, '(a)') '  results would go to '//h5_file//' and '//csv_file
-    call terminate(0)
-  end if
-
-  ! ---- the output files may be written (docs/files.md): checked before anything runs
-  if (h5_file == csv_file) call die_files('the result file and the table are the same file ('//h5_file//')')
-  allocate (inputs(study%n_cases + 2))
-  inputs(1) = deck
-  do c = 1, study%n_cases
-    inputs(c + 1) = study%case_deck(c)
-  end do
-  inputs(study%n_cases + 2) = csv_file
-  problem = output_file_problem(h5_file, 'result file', inputs, .true.)
-  if (len(problem) > 0) call die_files(problem)
-  inputs(study%n_cases + 2) = h5_file
-  problem = output_file_problem(csv_file, 'table', inputs, .false.)
-  if (len(problem) > 0) call die_files(problem)
-  if (study%keep_results) then
-    inputs(study%n_cases + 2) = ''
-    do v = 1, study%n_variants
-      do c = 1, study%n_cases
-        problem = output_file_problem(trim(study%inp(c, v)%output%file), 'run result file', inputs, .true.)
-        if (len(problem) > 0) call die_files(problem)
-      end do
-    end do
-  end if
-  if (.not. quiet) then
-    if (file_kind(h5_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//h5_file//' will be replaced'
-    if (file_kind(csv_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//csv_file//' will be replaced'
-  end if
-
-  ! ---- run
-  progress = error_unit
-  if (quiet) progress = -1
-  cmd = command_line()
-  msg = ''
-  call run_study(study, progress, cmd, run_stat, msg)
-  if (run_stat == 4) then
-    write (error_unit, '(a)') 'landyn_study: '//trim(msg)
-    call terminate(4)
-  end if
-
-  ! ---- files
-  call write_study_h5(study, h5_file, cmd, stat, msg)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'landyn_study: cannot write the result file: '//trim(msg)
-    call terminate(4)
-  end if
-  call write_study_csv(study, csv_file, stat, msg)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'landyn_study: cannot write the table: '//trim(msg)
-    call terminate(4)
-  end if
-  call write_table(output_unit)
-  write (output_unit, '(a)') 'Results written to '//h5_file//' and '//csv_file
-  if (run_stat == status_failed) then
-    write (error_unit, '(a)') 'landyn_study: some runs failed (status 3 in the result file)'
-    call terminate(3)
-  end if
-  if (run_stat == status_unhealthy) then
-    write (error_unit, '(a)') 'landyn_study: a run-health check failed for some runs: their results are '// &
-      'physically meaningless (status 6 in the result file; docs/health.md)'
-    call terminate(6)
-  end if
-  call terminate(0)
-
-contains
-
-  !> The crush-length table on a unit (mm), as in the CSV.
-  subroutine write_table(u)
-    integer, intent(in) :: u               !! output unit
-    integer :: m, vv
-    character(len=*), parameter :: sn(3) = [character(len=15) :: 'primary', 'secondary left', 'secondary right']
-    write (u, '(a)') ''
-    write (u, '(a)') 'Crush lengths [mm]: '//trim(study%title)
-    write (u, '(a)', advance='no') '  opt  case        gear strut          '
-    do vv = 1, study%n_variants
-      write (u, '(1x,a14)', advance='no') adjustr(study%variant(vv)%label(1:min(14, len_trim(study%variant(vv)%label))))
-    end do
-    write (u, '(a)') ''
-    do m = 1, study%n_measures
-      write (u, '(2x,i3,2x,a12,i4,1x,a15)', advance='no') m, study%case_label(study%measure(1, m)), &
-        study%measure(2, m), sn(study%measure(3, m))
-      do vv = 1, study%n_variants
-        associate (r => study%run(study%measure(1, m), vv))
-          if (r%status == 0) then
-            write (u, '(f15.1)', advance='no') 1000.0_wp*r%crush(study%measure(3, m), study%measure(2, m))
-          else
-            write (u, '(a15)', advance='no') 'failed'
-          end if
-        end associate
-      end do
-      write (u, '(a)') ''
-    end do
-  end subroutine write_table
-
-  subroutine usage(u)
-    integer, intent(in) :: u               !! output unit
-    write (u, '(a)') 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]', &
+  !> --help text
+  character(len=120), parameter :: help_text(*) = [character(len=120) :: &
+      'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet] [--help] [--version]', &
       '', &
       'Runs a sensitivity study: each &variant of the study deck (contact, friction or tube-friction', &
       'laws, or any other input) on each load-case deck of &study base_deck, and writes the crush', &
@@ -203,21 +39,166 @@ contains
       '', &
       'Exit status: 0 success, 1 usage error, 2 invalid input (nothing run), 3 some runs failed,', &
       '4 a file cannot be written (or is refused: docs/files.md), 6 a run-health check failed for', &
-      'some runs (docs/health.md).'
-  end subroutine usage
+      'some runs (docs/health.md).']
 
-  subroutine die_files(text)
-    character(len=*), intent(in) :: text   !! what is wrong
-    write (error_unit, '(a)') 'landyn_study: '//text
-    write (error_unit, '(a)') 'landyn_study: nothing was run and no file was written'
-    call terminate(4)
-  end subroutine die_files
+  type(app_t) :: app
+  type(study_t) :: study
+  type(input_errors_t) :: errors
+  character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd, problem
+  logical :: check_only, quiet
+  integer :: i, n, stat, run_stat, c, v, progress
+  character(len=msg_len) :: msg
+  character(len=4096), allocatable :: inputs(:)
 
-  subroutine die_usage(text)
-    character(len=*), intent(in) :: text   !! what is wrong
-    call write_usage_error(error_unit, 'landyn_study', text, &
-                           'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]')
-    call terminate(1)
-  end subroutine die_usage
+  app%name = 'landyn_study'
+  app%usage_line = 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]'
+  app%help = help_text
+  deck = ''
+  problem = ''
+  h5_file = ''
+  csv_file = ''
+  check_only = .false.
+  quiet = .false.
+  n = command_argument_count()
+  i = 0
+  do while (i < n)
+    i = i + 1
+    arg = get_arg(i)
+    call app%info_option(arg)
+    select case (arg)
+    case ('--check')
+      check_only = .true.
+    case ('-q', '--quiet')
+      quiet = .true.
+    case ('-o', '--output')
+      h5_file = app%option_value(i, n, arg)
+    case ('--csv')
+      csv_file = app%option_value(i, n, arg)
+    case default
+      problem = positional_arg_problem(arg, deck, 'study deck')
+      if (len(problem) > 0) call app%die_usage(problem)
+      deck = arg
+    end select
+  end do
+  if (len(deck) == 0) call app%die_usage('no study deck given')
+
+  ! ---- the study deck and every run's input, all checked before anything runs
+  call read_study(deck, study, errors, stat)
+  if (len(h5_file) > 0) study%output = h5_file   ! kept run files are named after the result file
+  ! prepared also after errors in the study deck, to report every problem at once
+  if (stat /= STAT_INPUT .and. study%n_cases > 0 .and. study%n_variants > 0) call prepare_study(study, errors, i)
+  if (stat /= STAT_OK .or. errors%count() > 0) then
+    call write_input_errors(error_unit, 'landyn_study', errors)
+    call terminate(EXIT_INPUT)
+  end if
+  if (len(h5_file) == 0) h5_file = trim(study%output)
+  if (len(csv_file) == 0) csv_file = trim(study%csv)
+  if (check_only) then
+    write (output_unit, '(a)') 'landyn_study: '//trim(study%title)
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        write (output_unit, '(a)') '  '//trim(study%variant(v)%label)//' on '//trim(study%case_label(c))//' ('// &
+          trim(study%case_deck(c))//'): contact '''//trim(study%inp(c, v)%contact%law)//''', friction '''// &
+          trim(study%inp(c, v)%friction%law)//''', tube friction '//merge('on ', 'off', &
+          study%inp(c, v)%primary%tube_friction)
+      end do
+    end do
+    write (output_unit, '(a)') '  results would go to '//h5_file//' and '//csv_file
+    call terminate(EXIT_OK)
+  end if
+
+  ! ---- the output files may be written (docs/files.md): checked before anything runs
+  if (h5_file == csv_file) call app%die_files('the result file and the table are the same file ('//h5_file//')')
+  allocate (inputs(study%n_cases + 2))
+  inputs(1) = deck
+  do c = 1, study%n_cases
+    inputs(c + 1) = study%case_deck(c)
+  end do
+  inputs(study%n_cases + 2) = csv_file
+  problem = output_file_problem(h5_file, 'result file', inputs, .true.)
+  if (len(problem) > 0) call app%die_files(problem)
+  inputs(study%n_cases + 2) = h5_file
+  problem = output_file_problem(csv_file, 'table', inputs, .false.)
+  if (len(problem) > 0) call app%die_files(problem)
+  if (study%keep_results) then
+    inputs(study%n_cases + 2) = ''
+    do v = 1, study%n_variants
+      do c = 1, study%n_cases
+        problem = output_file_problem(trim(study%inp(c, v)%output%file), 'run result file', inputs, .true.)
+        if (len(problem) > 0) call app%die_files(problem)
+      end do
+    end do
+  end if
+  if (.not. quiet) then
+    if (file_kind(h5_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//h5_file//' will be replaced'
+    if (file_kind(csv_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//csv_file//' will be replaced'
+  end if
+
+  ! ---- run
+  progress = error_unit
+  if (quiet) progress = -1
+  cmd = command_line()
+  msg = ''
+  call run_study(study, progress, cmd, run_stat, msg)
+  if (run_stat == STAT_FILE) then
+    write (error_unit, '(a)') 'landyn_study: '//trim(msg)
+    call terminate(EXIT_FILE)
+  end if
+
+  ! ---- files
+  call write_study_h5(study, h5_file, cmd, stat, msg)
+  if (stat /= STAT_OK) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the result file: '//trim(msg)
+    call terminate(EXIT_FILE)
+  end if
+  call write_study_csv(study, csv_file, stat, msg)
+  if (stat /= STAT_OK) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the table: '//trim(msg)
+    call terminate(EXIT_FILE)
+  end if
+  call write_table(output_unit)
+  write (output_unit, '(a)') 'Results written to '//h5_file//' and '//csv_file
+  if (run_stat == status_failed) then
+    write (error_unit, '(a)') 'landyn_study: some runs failed (status 3 in the result file)'
+    call terminate(EXIT_DIVERGED)
+  end if
+  if (run_stat == status_unhealthy) then
+    write (error_unit, '(a)') 'landyn_study: a run-health check failed for some runs: their results are '// &
+      'physically meaningless (status 6 in the result file; docs/health.md)'
+    call terminate(EXIT_HEALTH)
+  end if
+  call terminate(EXIT_OK)
+
+contains
+
+  !> The crush-length table on a unit (mm), as in the CSV.
+  subroutine write_table(u)
+    integer, intent(in) :: u               !! output unit
+    integer :: m, vv
+    write (u, '(a)') ''
+    write (u, '(a)') 'Crush lengths [mm]: '//trim(study%title)
+    write (u, '(a)', advance='no') '  opt  case        gear strut          '
+    do vv = 1, study%n_variants
+      write (u, '(1x,a14)', advance='no') adjustr(study%variant(vv)%label(1:min(14, len_trim(study%variant(vv)%label))))
+    end do
+    write (u, '(a)') ''
+    do m = 1, study%n_measures
+      write (u, '(2x,i3,2x,a12,i4,1x,a15)', advance='no') m, study%case_label(study%measure(1, m)), &
+        study%measure(2, m), strut_names(study%measure(3, m))
+      do vv = 1, study%n_variants
+        associate (r => study%run(study%measure(1, m), vv))
+          if (r%status == status_ok) then
+            write (u, '(f15.1)', advance='no') 1000.0_wp*r%crush(study%measure(3, m), study%measure(2, m))
+          else
+            write (u, '(a15)', advance='no') 'failed'
+          end if
+        end associate
+      end do
+      write (u, '(a)') ''
+    end do
+  end subroutine write_table
+
+
+
 
 end program landyn_study_main

@@ -11,6 +11,7 @@ module landyn_campaign_case
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears, deg2rad
+  use landyn_status, only: EXIT_OK, EXIT_INPUT, EXIT_DIVERGED
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t, run_simulation
@@ -22,16 +23,15 @@ module landyn_campaign_case
   implicit none
   private
 
-  public :: case_row_t, run_case, new_row, evaluate_criteria, history_file_name
+  public :: case_row_t, run_case, new_row
   public :: row_int_count, row_real_count, pack_row, unpack_row, rows_equal
-  public :: status_not_run, status_ok, status_invalid_input, status_failed
-  public :: fail_tipped_over, fail_stroke_margin, fail_overload, fail_clearance, fail_not_at_rest, fail_run
-  public :: n_criteria, criterion_bit, criterion_name, failed_criteria_names, failure_counts
+  public :: status_ok, status_failed
+  public :: n_criteria, criterion_name, failed_criteria_names, failure_counts
 
   integer, parameter :: status_not_run = -1        !! row not filled [-]
-  integer, parameter :: status_ok = 0              !! the simulation ran to its end (a tip-over is a result) [-]
-  integer, parameter :: status_invalid_input = 2   !! the case's input is invalid (as landyn's exit status 2) [-]
-  integer, parameter :: status_failed = 3          !! the simulation failed, e.g. diverged (as landyn's exit status 3) [-]
+  integer, parameter :: status_ok = EXIT_OK                 !! the simulation ran to its end (a tip-over is a result) [-]
+  integer, parameter :: status_invalid_input = EXIT_INPUT   !! the case's input is invalid (as landyn's exit status) [-]
+  integer, parameter :: status_failed = EXIT_DIVERGED       !! the simulation failed, e.g. diverged (as landyn's exit status) [-]
 
   ! Bits of failed_criteria.
   integer, parameter :: fail_tipped_over = 1       !! tipped over [-]
@@ -221,6 +221,7 @@ contains
 
   contains
 
+    !> Evaluate the success criteria and clean the message of the row.
     subroutine finish_row()
       call evaluate_criteria(row, camp%crit)
       row%message = sanitize(row%message)

@@ -45,11 +45,12 @@ module landyn_campaign_parallel
   use landyn_campaign_deck, only: campaign_t, build_campaign, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, pack_row, unpack_row, row_int_count, row_real_count, &
                                   status_ok
-  use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, journal_open, &
-                                   journal_append, journal_flush, journal_read, results_t, results_init, results_add, &
-                                   results_rows, results_missing
-  use landyn_campaign_tasks, only: exit_ok, exit_usage, exit_invalid, exit_write, exit_incomplete, load_or_report, &
-                                   report_probability, report_row
+  use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
+                                   results_init, results_add, results_rows, results_missing, &
+                                   results_take_rows
+  use landyn_campaign_journal, only: journal_open, journal_append, journal_flush, journal_read
+  use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_campaign_tasks, only: load_or_report, report_probability, report_row
   implicit none
   private
 
@@ -105,6 +106,7 @@ module landyn_campaign_parallel
     integer(c_long) :: nsec = 0_c_long  !! nanoseconds [ns]
   end type timespec_t
 
+  !> POSIX nanosleep(2), for the master's short waits.
   interface
     !> POSIX nanosleep(2)
     function c_nanosleep(req, rem) bind(c, name='nanosleep') result(r)
@@ -118,7 +120,7 @@ module landyn_campaign_parallel
 contains
 
   !> Run the campaign of `deck` on all ranks of MPI_COMM_WORLD (initialises and finalises MPI).
-  !! `code` is the exit code on rank 0 and exit_ok on the other ranks.
+  !! `code` is the exit code on rank 0 and EXIT_OK on the other ranks.
   subroutine run_campaign(deck, opts, out_u, err_u, code)
     character(len=*), intent(in) :: deck          !! campaign deck [-]
     type(batch_options_t), intent(in) :: opts     !! options [-]
@@ -139,11 +141,11 @@ contains
     call MPI_Init()
     call MPI_Comm_rank(MPI_COMM_WORLD, rank)
     call MPI_Comm_size(MPI_COMM_WORLD, nranks)
-    code = exit_ok
+    code = EXIT_OK
     ju = -1
     if (rank == 0) then
       call load_or_report(deck, camp, err_u, code)
-      if (code == exit_ok) then
+      if (code == EXIT_OK) then
         summary = opts%summary_file
         if (len(summary) == 0) summary = camp%summary_file
         journal = summary//'.journal'
@@ -152,9 +154,9 @@ contains
       end if
     end if
     call MPI_Bcast(code, 1, MPI_INTEGER, 0, MPI_COMM_WORLD)
-    if (code /= exit_ok) then
+    if (code /= EXIT_OK) then
       call MPI_Finalize()
-      if (rank /= 0) code = exit_ok
+      if (rank /= 0) code = EXIT_OK
       return
     end if
 
@@ -174,7 +176,7 @@ contains
       if (st /= 0) then
         write (err_u, '(a,i0,a)') 'landyn_batch: rank ', rank, ': the campaign read on rank 0 does not build here: '// &
           errors%message(1)
-        call MPI_Abort(MPI_COMM_WORLD, exit_invalid)
+        call MPI_Abort(MPI_COMM_WORLD, EXIT_INPUT)
       end if
     end if
     call use_summary_file(camp, opts%summary_file)   ! history files follow -o (issue 10)
@@ -196,35 +198,32 @@ contains
 
     if (rank == 0) call finish(code)
     call MPI_Finalize()
-    if (rank /= 0) code = exit_ok
+    if (rank /= 0) code = EXIT_OK
 
   contains
 
+    !> Write the final summary file, delete the journal and report the campaign.
     subroutine finish(code_)
       integer, intent(out) :: code_   !! exit code [-]
       type(case_row_t), allocatable :: rows(:)
       character(len=msg_len) :: msg
       integer :: st2
-      code_ = exit_ok
+      code_ = EXIT_OK
       close (ju)
       if (stopped) then
         write (err_u, '(a)') 'landyn_batch: stopped after '//int_text(n_session)//' case(s) (--stop-after); '// &
           int_text(table%n_have)//' of '//int_text(camp%n_cases)//' cases are in '//journal// &
           '; continue with --resume'
-        code_ = exit_incomplete
+        code_ = EXIT_INCOMPLETE
         return
       end if
-      if (table%n_have == table%n_cases) then
-        call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
-      else
-        rows = results_rows(table)
-      end if
+      call results_take_rows(table, rows)
       msg = ''
       call write_summary(summary, meta, rows, opts%command_line, st2, msg)
       if (st2 /= 0) then
         write (err_u, '(a)') 'landyn_batch: cannot write the summary file: '//trim(msg)
         write (err_u, '(a)') 'landyn_batch: the rows are kept in '//journal//'; fix the problem and run with --resume'
-        code_ = exit_write
+        code_ = EXIT_FILE
         return
       end if
       call delete_file(journal, st2, msg)
@@ -256,7 +255,7 @@ contains
     character(len=msg_len) :: msg
     logical :: ex_s, ex_j, added
     integer :: st, k, n_s, n_j, n_bad, n_out
-    code = exit_ok
+    code = EXIT_OK
     ju = -1
     call results_init(table, camp%n_cases)
     inquire (file=summary, exist=ex_s)
@@ -271,7 +270,7 @@ contains
           write (err_u, '(a)') 'landyn_batch: '//journal//' exists; run with --resume to continue that campaign, '// &
             'or --force to start it afresh'
         end if
-        code = exit_usage
+        code = EXIT_USAGE
         return
       end if
       call delete_file(summary, st, msg)
@@ -285,39 +284,25 @@ contains
         call read_summary(summary, m, rows, st, msg)
         if (st /= 0) then
           write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
-          code = exit_invalid
+          code = EXIT_INPUT
           return
         end if
         if (m%fingerprint /= camp%fingerprint) then
           write (err_u, '(a)') 'landyn_batch: --resume: '//summary//' belongs to another campaign (fingerprint '// &
             m%fingerprint//'; this deck: '//camp%fingerprint//'); give another summary_file or use --force'
-          code = exit_invalid
+          code = EXIT_INPUT
           return
         end if
-        do k = 1, size(rows)
-          call results_add(table, rows(k), added)
-          if (added) then
-            n_s = n_s + 1
-          else
-            n_out = n_out + 1
-          end if
-        end do
+        call add_rows(n_s)
       end if
       if (ex_j) then
         call journal_read(journal, meta, rows, n_bad, st, msg)
         if (st /= 0) then
           write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
-          code = exit_invalid
+          code = EXIT_INPUT
           return
         end if
-        do k = 1, size(rows)
-          call results_add(table, rows(k), added)
-          if (added) then
-            n_j = n_j + 1
-          else
-            n_out = n_out + 1
-          end if
-        end do
+        call add_rows(n_j)
       end if
       if (.not. opts%quiet) then
         if (ex_s .or. ex_j) then
@@ -336,8 +321,24 @@ contains
     call journal_open(journal, meta, ju, st, msg)
     if (st /= 0) then
       write (err_u, '(a)') 'landyn_batch: '//trim(msg)
-      code = exit_write
+      code = EXIT_FILE
     end if
+
+  contains
+
+    !> Put `rows` into the table: n_added counts the rows taken, n_out those of cases beyond the deck's.
+    subroutine add_rows(n_added)
+      integer, intent(inout) :: n_added   !! rows taken so far [-]
+      do k = 1, size(rows)
+        call results_add(table, rows(k), added)
+        if (added) then
+          n_added = n_added + 1
+        else
+          n_out = n_out + 1
+        end if
+      end do
+    end subroutine add_rows
+
   end subroutine prepare_output
 
   !> Rank 0: hand out cases, run some itself, record every row.
@@ -513,6 +514,7 @@ contains
       prof(p_record) = prof(p_record) + (t_flush - t_)
     end subroutine flush_journal
 
+    !> Report a journal operation that failed.
     subroutine journal_problem(st, msg)
       integer, intent(in) :: st             !! status of the journal operation [-]
       character(len=*), intent(in) :: msg   !! its message [-]
@@ -692,6 +694,7 @@ contains
 
   contains
 
+    !> A fraction as a percentage text.
     function pct(x) result(t)
       real(wp), intent(in) :: x            !! fraction [-]
       character(len=:), allocatable :: t  !! percentage text [-]
@@ -700,6 +703,7 @@ contains
       t = trim(adjustl(b))//' %'
     end function pct
 
+    !> One time account as text.
     function acct(p) result(t)
       real(wp), intent(in) :: p(n_prof)    !! one account [s, -]
       character(len=:), allocatable :: t  !! text [-]
@@ -709,6 +713,7 @@ contains
           int_text(nint(p(p_rows)))//' book_cpu='//g(p(p_book_cpu))
     end function acct
 
+    !> A time as text.
     function g(x) result(t)
       real(wp), intent(in) :: x            !! time [s]
       character(len=:), allocatable :: t  !! text [-]

@@ -1,39 +1,31 @@
 !> Campaign results on disk: the summary file (HDF5, one row per case; docs/campaign.md), the
-!! journal (one text line per finished case, flushed at once, so a killed campaign loses only
-!! the cases in flight), and the success probability with its Wilson score interval.
+!! table of rows of a campaign, and the success probability with its Wilson score interval.
+!! The journal (one text line per finished case) is in landyn_campaign_journal.
 !!
 !! The summary file is always written whole, under <file>.partial and renamed, so a file named
 !! <file> is always complete and valid; while a campaign runs it is rewritten every
 !! checkpoint_interval seconds and at the end. `--resume` reads the rows of both the summary
 !! file and the journal.
 !!
-!! Journal lines: a header `LANDYN campaign journal v1 fingerprint=<16 hex> n_par=<n> n_gears=<n>`,
-!! then per case `R`, the row's integers (i11 each), its reals as IEEE bit patterns (z16 each),
-!! the text part (message, end reason, history file, lengths among the integers) and ` $`.
-!! A line that does not parse (a torn last line) is ignored.
-!!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_store
-  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp, ip, msg_len
-  use landyn_version, only: landyn_version_string, landyn_git_revision
-  use landyn_output, only: iso_timestamp
+  use landyn_version, only: landyn_git_revision
+  use landyn_strings, only: nonempty, int_text
+  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_provenance, only: write_meta
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_open_read, h5_close, h5_write, &
                        h5_write_attr, h5_read, h5_read_attr, h5_exists
-  use landyn_campaign_nml, only: int_text, real_text_short
   use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
-  use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row, status_ok, &
-                                  n_criteria, criterion_name, failed_criteria_names, failure_counts
+  use landyn_campaign_case, only: case_row_t, status_ok, criterion_name, failed_criteria_names, failure_counts
   implicit none
   private
 
   public :: summary_meta_t, meta_from_campaign, write_summary, read_summary
-  public :: journal_open, journal_append, journal_flush, journal_read, journal_line
   public :: success_probability, wilson_interval, schema_version
-  public :: results_t, results_init, results_add, results_rows, results_missing
+  public :: results_t, results_init, results_add, results_rows, results_missing, results_take_rows
 
   character(len=*), parameter :: schema_version = 'landyn-campaign-1.0'  !! layout of docs/campaign.md
-  character(len=*), parameter :: journal_magic = 'LANDYN campaign journal v1'
   real(wp), parameter :: z95 = 1.959963984540054_wp   !! two-sided 95 % normal quantile [-]
   integer, parameter :: text_len = 2048               !! longest stored string of a row [-]
 
@@ -108,6 +100,18 @@ contains
       rows(k) = res%rows(i)
     end do
   end function results_rows
+
+  !> The rows present, in case-id order, taken from the table: moved without a copy when every
+  !! case has its row (the table's rows are gone afterwards; n_have and the flags stay).
+  subroutine results_take_rows(res, rows)
+    type(results_t), intent(inout) :: res                  !! table [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    if (res%n_have == res%n_cases) then
+      call move_alloc(res%rows, rows)
+    else
+      rows = results_rows(res)
+    end if
+  end subroutine results_take_rows
 
   !> Ids of the cases without a row.
   subroutine results_missing(res, ids)
@@ -229,6 +233,7 @@ contains
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_summary
 
+  !> The contents of a summary file: attributes, /meta, /campaign, /parameters, /criteria, /cases, /probability.
   subroutine write_contents(f, meta, rows, command_line, stat, errmsg)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
@@ -253,8 +258,6 @@ contains
     call success_probability(rows, meta%crit%failed_runs, n_eval, n_succ, n_excl, p, lo, hi)
 
     ! ---- root attributes
-    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string//' landyn_batch', stat, errmsg)
-    if (stat /= 0) return
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'title', nonempty(meta%title), stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'mode', meta%mode, stat, errmsg); if (stat /= 0) return
@@ -266,14 +269,9 @@ contains
     call h5_write_attr(f, '/', 'p_success_ci95_low', lo, stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'p_success_ci95_high', hi, stat, errmsg); if (stat /= 0) return
 
-    ! ---- /meta
-    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/git_revision', meta%git_revision, '-', stat, errmsg, &
-                  description='git revision of the code that ran the cases'); if (stat /= 0) return
-    call h5_write(f, '/meta/writer_git_revision', landyn_git_revision, '-', stat, errmsg, &
-                  description='git revision of the code that wrote this file'); if (stat /= 0) return
-    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/command_line', nonempty(command_line), '-', stat, errmsg); if (stat /= 0) return
+    ! ---- root attribute producer, /meta
+    call write_meta(f, 'landyn_batch', command_line, stat, errmsg, run_git_revision=meta%git_revision)
+    if (stat /= 0) return
 
     ! ---- /campaign
     call h5_write(f, '/campaign/deck_name', nonempty(meta%deck_name), '-', stat, errmsg); if (stat /= 0) return
@@ -395,6 +393,7 @@ contains
 
   contains
 
+    !> A text column of the rows as a fixed-length string array.
     function text_column(which) result(col)
       integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file, 4 failed criteria [-]
       character(len=:), allocatable :: col(:)      !! column [-]
@@ -429,16 +428,7 @@ contains
 
   end subroutine write_contents
 
-  pure function nonempty(s) result(r)
-    character(len=*), intent(in) :: s    !! text [-]
-    character(len=:), allocatable :: r   !! s, or '(none)' when blank [-]
-    if (len_trim(s) > 0) then
-      r = s
-    else
-      r = '(none)'
-    end if
-  end function nonempty
-
+  !> '' for the '(none)' that nonempty stores for blank text, else `s`.
   pure function from_nonempty(s) result(r)
     character(len=*), intent(in) :: s    !! stored text [-]
     character(len=:), allocatable :: r   !! '' for '(none)' [-]
@@ -465,6 +455,7 @@ contains
     call h5_close(f, st2, m2)
   end subroutine read_summary
 
+  !> Meta data and rows of an open summary file.
   subroutine read_contents(f, meta, rows, stat, errmsg)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(out) :: meta            !! meta data [-]
@@ -481,7 +472,7 @@ contains
 
     call h5_read_attr(f, '/', 'schema_version', schema, stat, errmsg); if (stat /= 0) return
     if (schema /= schema_version) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = trim(f%path)//': not a LANDYN campaign summary of schema '//schema_version//' (schema '//schema//')'
       return
     end if
@@ -517,7 +508,7 @@ contains
     call h5_read(f, '/parameters/description', meta%par_desc, stat, errmsg); if (stat /= 0) return
     if (size(meta%par_label) /= meta%n_par .or. size(meta%par_units) /= meta%n_par .or. &
         size(meta%par_desc) /= meta%n_par) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = trim(f%path)//': /parameters/* have different lengths'
       return
     end if
@@ -545,13 +536,20 @@ contains
       rows(i)%case_id = iv(i)
       allocate (rows(i)%inputs(meta%n_par), rows(i)%crush(3, ng), rows(i)%margin(3, ng))
     end do
-    call get_int('/cases/status', 1); if (stat /= 0) return
-    call get_int('/cases/success', 2); if (stat /= 0) return
-    call get_int('/cases/tipped_over', 3); if (stat /= 0) return
-    call get_int('/cases/at_rest', 4); if (stat /= 0) return
-    call get_int('/cases/bottomed_out', 5); if (stat /= 0) return
-    call get_int('/cases/failed_criteria', 6); if (stat /= 0) return
-    call get_int('/cases/n_steps', 7); if (stat /= 0) return
+    call int_column('/cases/status'); if (stat /= 0) return
+    rows%status = iv
+    call int_column('/cases/success'); if (stat /= 0) return
+    rows%success = iv
+    call int_column('/cases/tipped_over'); if (stat /= 0) return
+    rows%tipped_over = iv
+    call int_column('/cases/at_rest'); if (stat /= 0) return
+    rows%at_rest = iv
+    call int_column('/cases/bottomed_out'); if (stat /= 0) return
+    rows%bottomed_out = iv
+    call int_column('/cases/failed_criteria'); if (stat /= 0) return
+    rows%failed_criteria = iv
+    call int_column('/cases/n_steps'); if (stat /= 0) return
+    rows%n_steps = iv
     call h5_read(f, '/cases/error_message', sv, stat, errmsg); if (stat /= 0) return
     if (.not. sized(size(sv), '/cases/error_message')) return
     do i = 1, n
@@ -584,18 +582,28 @@ contains
     do i = 1, n
       rows(i)%margin = a3(:, :, i)
     end do
-    call get_real('/cases/min_stroke_margin', 1); if (stat /= 0) return
-    call get_real('/cases/peak_overload', 2); if (stat /= 0) return
-    call get_real('/cases/peak_penetration', 3); if (stat /= 0) return
-    call get_real('/cases/max_slide_distance', 4); if (stat /= 0) return
-    call get_real('/cases/final_tilt', 5); if (stat /= 0) return
-    call get_real('/cases/max_tilt', 6); if (stat /= 0) return
-    call get_real('/cases/min_body_clearance', 7); if (stat /= 0) return
-    call get_real('/cases/final_time', 8); if (stat /= 0) return
-    call get_real('/cases/wall_time', 9); if (stat /= 0) return
+    call real_column('/cases/min_stroke_margin'); if (stat /= 0) return
+    rows%min_margin = rv
+    call real_column('/cases/peak_overload'); if (stat /= 0) return
+    rows%peak_overload = rv
+    call real_column('/cases/peak_penetration'); if (stat /= 0) return
+    rows%peak_penetration = rv
+    call real_column('/cases/max_slide_distance'); if (stat /= 0) return
+    rows%max_slide = rv
+    call real_column('/cases/final_tilt'); if (stat /= 0) return
+    rows%final_tilt = rv
+    call real_column('/cases/max_tilt'); if (stat /= 0) return
+    rows%max_tilt = rv
+    call real_column('/cases/min_body_clearance'); if (stat /= 0) return
+    rows%min_clearance = rv
+    call real_column('/cases/final_time'); if (stat /= 0) return
+    rows%final_time = rv
+    call real_column('/cases/wall_time'); if (stat /= 0) return
+    rows%wall_time = rv
 
   contains
 
+    !> True when a column has `expected` (default n) entries; else stat and errmsg are set.
     logical function sized(m, what, expected)
       integer, intent(in) :: m                   !! size found [-]
       character(len=*), intent(in) :: what       !! dataset [-]
@@ -605,292 +613,29 @@ contains
       if (present(expected)) e = expected
       sized = m == e
       if (.not. sized) then
-        stat = 1
+        stat = STAT_FAILED
         errmsg = trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(e)
       end if
     end function sized
 
-    subroutine get_int(path, which)
+    !> iv = the integer column `path`, of n entries.
+    subroutine int_column(path)
       character(len=*), intent(in) :: path   !! dataset [-]
-      integer, intent(in) :: which           !! row component [-]
-      integer :: k
       call h5_read(f, path, iv, stat, errmsg)
-      if (stat /= 0) return
-      if (.not. sized(size(iv), path)) return
-      do k = 1, n
-        select case (which)
-        case (1)
-          rows(k)%status = iv(k)
-        case (2)
-          rows(k)%success = iv(k)
-        case (3)
-          rows(k)%tipped_over = iv(k)
-        case (4)
-          rows(k)%at_rest = iv(k)
-        case (5)
-          rows(k)%bottomed_out = iv(k)
-        case (6)
-          rows(k)%failed_criteria = iv(k)
-        case default
-          rows(k)%n_steps = iv(k)
-        end select
-      end do
-    end subroutine get_int
+      if (stat == STAT_OK) then
+        if (.not. sized(size(iv), path)) return
+      end if
+    end subroutine int_column
 
-    subroutine get_real(path, which)
+    !> rv = the real column `path`, of n entries.
+    subroutine real_column(path)
       character(len=*), intent(in) :: path   !! dataset [-]
-      integer, intent(in) :: which           !! row component [-]
-      integer :: k
       call h5_read(f, path, rv, stat, errmsg)
-      if (stat /= 0) return
-      if (.not. sized(size(rv), path)) return
-      do k = 1, n
-        select case (which)
-        case (1)
-          rows(k)%min_margin = rv(k)
-        case (2)
-          rows(k)%peak_overload = rv(k)
-        case (3)
-          rows(k)%peak_penetration = rv(k)
-        case (4)
-          rows(k)%max_slide = rv(k)
-        case (5)
-          rows(k)%final_tilt = rv(k)
-        case (6)
-          rows(k)%max_tilt = rv(k)
-        case (7)
-          rows(k)%min_clearance = rv(k)
-        case (8)
-          rows(k)%final_time = rv(k)
-        case default
-          rows(k)%wall_time = rv(k)
-        end select
-      end do
-    end subroutine get_real
+      if (stat == STAT_OK) then
+        if (.not. sized(size(rv), path)) return
+      end if
+    end subroutine real_column
 
   end subroutine read_contents
-
-  ! ================================================================ journal
-
-  !> Open the journal for appending: create it with its header, or check the header of an
-  !! existing one against `meta`. stat = 1 on a different campaign or an unwritable file.
-  subroutine journal_open(path, meta, unit, stat, errmsg)
-    character(len=*), intent(in) :: path        !! journal file [-]
-    type(summary_meta_t), intent(in) :: meta    !! campaign meta data [-]
-    integer, intent(out) :: unit                !! open unit [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
-    logical :: exists
-    character(len=256) :: iomsg
-    iomsg = ''
-    inquire (file=path, exist=exists)
-    if (exists) then
-      call end_with_newline(path, stat, iomsg)
-      if (stat == 0) open (newunit=unit, file=path, status='old', action='write', position='append', &
-                           form='formatted', iostat=stat, iomsg=iomsg)
-    else
-      open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=stat, iomsg=iomsg)
-      if (stat == 0) then
-        write (unit, '(a)', iostat=stat, iomsg=iomsg) journal_header(meta)
-        if (stat == 0) flush (unit)
-      end if
-    end if
-    if (stat /= 0) errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
-  end subroutine journal_open
-
-  !> Append a line end to a file whose last line is unterminated (a torn journal line), so
-  !! that new lines start on a line of their own.
-  subroutine end_with_newline(path, stat, iomsg)
-    character(len=*), intent(in) :: path        !! file [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: iomsg    !! message on failure [-]
-    integer :: u, nbytes
-    character(len=1) :: last
-    open (newunit=u, file=path, access='stream', form='unformatted', action='readwrite', status='old', &
-          iostat=stat, iomsg=iomsg)
-    if (stat /= 0) return
-    inquire (unit=u, size=nbytes)
-    if (nbytes > 0) then
-      read (u, pos=nbytes, iostat=stat, iomsg=iomsg) last
-      if (stat == 0 .and. last /= new_line('a')) write (u, pos=nbytes + 1, iostat=stat, iomsg=iomsg) new_line('a')
-    end if
-    close (u)
-  end subroutine end_with_newline
-
-  function journal_header(meta) result(s)
-    type(summary_meta_t), intent(in) :: meta  !! meta data [-]
-    character(len=:), allocatable :: s        !! header line [-]
-    s = journal_magic//' fingerprint='//meta%fingerprint//' n_par='//int_text(meta%n_par)//' n_gears='// &
-        int_text(meta%n_gears)
-  end function journal_header
-
-  !> Append one row to the journal and flush it (unless `flush_now` is .false.: the caller then
-  !! flushes with journal_flush before it waits or computes, so that a kill loses only rows
-  !! received in the last moments).
-  subroutine journal_append(unit, row, stat, errmsg, flush_now)
-    integer, intent(in) :: unit                 !! journal unit [-]
-    type(case_row_t), intent(in) :: row         !! row [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
-    logical, intent(in), optional :: flush_now  !! flush at once (default .true.) [-]
-    integer :: ibuf(row_int_count)
-    real(wp), allocatable :: rbuf(:)
-    character(len=:), allocatable :: text
-    character(len=256) :: iomsg
-    iomsg = ''
-    call pack_row(row, ibuf, rbuf, text)
-    write (unit, '(a)', iostat=stat, iomsg=iomsg) journal_line(ibuf, rbuf, text)
-    if (present(flush_now)) then
-      if (stat == 0 .and. flush_now) flush (unit, iostat=stat, iomsg=iomsg)
-    else
-      if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
-    end if
-    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
-  end subroutine journal_append
-
-  !> The journal line of a packed row: 'R', the integers as (1x,i11), the reals' bit patterns
-  !! as (1x,z16.16), then ' ', the text and ' $'; made without formatted output, which cost
-  !! rank 0 most of its time per row (the text is the same, byte for byte).
-  pure function journal_line(ibuf, rbuf, text) result(line)
-    integer, intent(in) :: ibuf(:)         !! integer part [-]
-    real(wp), intent(in) :: rbuf(:)        !! real part [mixed units]
-    character(len=*), intent(in) :: text   !! text part [-]
-    character(len=:), allocatable :: line  !! journal line without its end [-]
-    character(len=16), parameter :: hex = '0123456789ABCDEF'
-    integer :: k, j, p
-    integer(int64) :: v
-    logical :: negative
-    allocate (character(len=1 + 12*size(ibuf) + 17*size(rbuf) + 1 + len(text) + 2) :: line)
-    line(:) = ' '
-    line(1:1) = 'R'
-    p = 1
-    do k = 1, size(ibuf)   ! (1x,i11): right-justified, '-' before the digits
-      v = abs(int(ibuf(k), int64))
-      negative = ibuf(k) < 0
-      j = p + 12
-      do
-        line(j:j) = achar(iachar('0') + int(mod(v, 10_int64)))
-        v = v/10_int64
-        j = j - 1
-        if (v == 0_int64) exit
-      end do
-      if (negative) line(j:j) = '-'
-      p = p + 12
-    end do
-    do k = 1, size(rbuf)   ! (1x,z16.16): the 64 bits, most significant hexadecimal digit first
-      v = transfer(rbuf(k), 0_int64)
-      do j = p + 17, p + 2, -1
-        line(j:j) = hex(int(iand(v, 15_int64)) + 1:int(iand(v, 15_int64)) + 1)
-        v = ishft(v, -4)
-      end do
-      p = p + 17
-    end do
-    line(p + 2:) = text//' $'
-  end function journal_line
-
-  !> Flush the journal's lines to the operating system.
-  subroutine journal_flush(unit, stat, errmsg)
-    integer, intent(in) :: unit                 !! journal unit [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
-    character(len=256) :: iomsg
-    iomsg = ''
-    flush (unit, iostat=stat, iomsg=iomsg)
-    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
-  end subroutine journal_flush
-
-  !> Rows of a journal (in file order). stat = 1 when the file is not a journal of the campaign
-  !! `meta` describes; n_bad counts lines that did not parse (a torn last line).
-  subroutine journal_read(path, meta, rows, n_bad, stat, errmsg)
-    character(len=*), intent(in) :: path                   !! journal file [-]
-    type(summary_meta_t), intent(in) :: meta               !! campaign meta data [-]
-    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
-    integer, intent(out) :: n_bad                          !! unparsable lines [-]
-    integer, intent(out) :: stat                           !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg              !! message on failure [-]
-    integer :: u, ios, nr, nfix, k, k2, st, n
-    character(len=:), allocatable :: line
-    character(len=32) :: fmt
-    character(len=1) :: tag
-    integer :: ibuf(row_int_count)
-    integer(int64), allocatable :: hex(:)
-    real(wp), allocatable :: rbuf(:)
-    type(case_row_t) :: row
-    type(case_row_t), allocatable :: tmp(:)
-    character(len=256) :: iomsg
-
-    n_bad = 0
-    allocate (rows(0))
-    iomsg = ''
-    open (newunit=u, file=path, status='old', action='read', form='formatted', iostat=stat, iomsg=iomsg)
-    if (stat /= 0) then
-      errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
-      return
-    end if
-    call read_line(u, line, ios)
-    if (ios /= 0 .or. line /= journal_header(meta)) then
-      stat = 1
-      if (ios == 0 .and. index(line, journal_magic) == 1) then
-        errmsg = path//' is the journal of a different campaign ('//trim(line(len(journal_magic) + 2:))// &
-                 '; this campaign has fingerprint='//meta%fingerprint//')'
-      else
-        errmsg = path//' is not a LANDYN campaign journal'
-      end if
-      close (u)
-      return
-    end if
-    nr = row_real_count(meta%n_par, meta%n_gears)
-    allocate (hex(nr), rbuf(nr))
-    nfix = 1 + 12*row_int_count + 17*nr
-    write (fmt, '(a,i0,a,i0,a)') '(a1,', row_int_count, '(1x,i11),', max(nr, 1), '(1x,z16))'
-    n = 0
-    do
-      call read_line(u, line, ios)
-      if (ios /= 0) exit
-      st = 1
-      if (len(line) >= nfix + 3) then
-        read (line(1:nfix), fmt, iostat=ios) tag, ibuf, hex
-        if (ios == 0 .and. tag == 'R') then
-          k = sum(ibuf(9:11))
-          if (ibuf(9) >= 0 .and. ibuf(10) >= 0 .and. ibuf(11) >= 0 .and. len(line) == nfix + 1 + k + 2) then
-            if (line(nfix + 2 + k:) == ' $') then
-              rbuf = [(transfer(hex(k2), 1.0_wp), k2=1, nr)]
-              call unpack_row(ibuf, rbuf, line(nfix + 2:nfix + 1 + k), meta%n_par, meta%n_gears, row, st)
-            end if
-          end if
-        end if
-      end if
-      if (st /= 0) then
-        n_bad = n_bad + 1
-        cycle
-      end if
-      if (n == size(rows)) then
-        allocate (tmp(max(16, 2*n)))
-        tmp(1:n) = rows(1:n)
-        call move_alloc(tmp, rows)
-      end if
-      n = n + 1
-      rows(n) = row
-    end do
-    close (u)
-    rows = rows(1:n)
-    stat = 0
-  end subroutine journal_read
-
-  !> One whole line of a formatted sequential file, any length.
-  subroutine read_line(u, line, ios)
-    integer, intent(in) :: u                              !! open unit [-]
-    character(len=:), allocatable, intent(out) :: line    !! the line without its end [-]
-    integer, intent(out) :: ios                           !! 0 ok, < 0 end of file, > 0 error [-]
-    character(len=4096) :: buf
-    integer :: nread
-    line = ''
-    do
-      read (u, '(a)', advance='no', iostat=ios, size=nread) buf
-      line = line//buf(1:nread)
-      if (ios /= 0) exit
-    end do
-    if (is_iostat_eor(ios)) ios = 0
-  end subroutine read_line
 
 end module landyn_campaign_store

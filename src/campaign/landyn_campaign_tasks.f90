@@ -8,42 +8,36 @@
 module landyn_campaign_tasks
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
+  use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_nml, only: int_text, real_text_short, lower_case
   use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, n_criteria, criterion_name, &
                                   failed_criteria_names, failure_counts
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
-                                   results_init, results_add, results_rows, results_missing, success_probability
+                                   results_init, results_add, results_missing, results_take_rows, success_probability
   implicit none
   private
 
-  public :: exit_ok, exit_usage, exit_invalid, exit_write, exit_incomplete
-  public :: load_or_report, check_campaign, list_cases, run_case_range, merge_summaries, part_file_name
+  public :: load_or_report, check_campaign, list_cases, run_case_range, merge_summaries
   public :: report_probability, report_row
-
-  integer, parameter :: exit_ok = 0          !! success [-]
-  integer, parameter :: exit_usage = 1       !! bad command line [-]
-  integer, parameter :: exit_invalid = 2     !! invalid deck, or files of different campaigns [-]
-  integer, parameter :: exit_write = 4       !! a file could not be written [-]
-  integer, parameter :: exit_incomplete = 5  !! written, but cases are missing (or stopped early) [-]
 
 contains
 
-  !> Load a campaign deck; on problems write every message to err_u and return exit_invalid.
+  !> Load a campaign deck; on problems write every message to err_u and return EXIT_INPUT.
   subroutine load_or_report(deck, camp, err_u, code)
     character(len=*), intent(in) :: deck      !! campaign deck [-]
     type(campaign_t), intent(out) :: camp     !! campaign [-]
     integer, intent(in) :: err_u              !! unit for messages [-]
-    integer, intent(out) :: code              !! exit_ok or exit_invalid [-]
+    integer, intent(out) :: code              !! EXIT_OK or EXIT_INPUT [-]
     type(input_errors_t) :: errors
     integer :: st
-    code = exit_ok
+    code = EXIT_OK
     call load_campaign(deck, camp, errors, st)
     if (st /= 0 .or. errors%count() > 0) then
       call errors%write(err_u)
       write (err_u, '(a,i0,a)') 'landyn_batch: ', errors%count(), &
         ' error(s) in the campaign; nothing was run and no file was written'
-      code = exit_invalid
+      code = EXIT_INPUT
     end if
   end subroutine load_or_report
 
@@ -56,7 +50,7 @@ contains
     type(campaign_t) :: camp
     integer :: j
     call load_or_report(deck, camp, err_u, code)
-    if (code /= exit_ok) return
+    if (code /= EXIT_OK) return
     write (out_u, '(a)') 'campaign '//deck//': '//trim(camp%mode)//', '//int_text(camp%n_cases)//' cases, base deck '// &
       camp%base_path//' ('//int_text(camp%n_gears)//' gears)'
     do j = 1, camp%n_par
@@ -77,7 +71,7 @@ contains
     integer :: id, j, st
     character(len=32) :: buf
     call load_or_report(deck, camp, err_u, code)
-    if (code /= exit_ok) return
+    if (code /= EXIT_OK) return
     line = 'case_id'
     do j = 1, camp%n_par
       line = line//','//camp%par(j)%name
@@ -133,14 +127,13 @@ contains
     type(case_row_t), allocatable :: rows(:)
     type(summary_meta_t) :: meta
     character(len=:), allocatable :: path
-    character(len=msg_len) :: msg
-    integer :: id, st
+    integer :: id
     call load_or_report(deck, camp, err_u, code)
-    if (code /= exit_ok) return
+    if (code /= EXIT_OK) return
     if (k1 < 1 .or. k2 > camp%n_cases .or. k1 > k2) then
       write (err_u, '(a)') 'landyn_batch: --case '//int_text(k1)//':'//int_text(k2)// &
         ' is out of range; the campaign has cases 1 .. '//int_text(camp%n_cases)
-      code = exit_usage
+      code = EXIT_USAGE
       return
     end if
     path = out_file
@@ -153,15 +146,28 @@ contains
       call report_row(rows(id - k1 + 1), camp%n_cases, out_u)
     end do
     meta = meta_from_campaign(camp)
+    call write_rows(path, meta, rows, command_line, err_u, code)
+    if (code /= EXIT_OK) return
+    write (out_u, '(a)') 'Rows written to '//path
+  end subroutine run_case_range
+
+  !> Write the summary file `path` with `rows`; on failure say so on err_u and set code = EXIT_FILE.
+  subroutine write_rows(path, meta, rows, command_line, err_u, code)
+    character(len=*), intent(in) :: path          !! summary file [-]
+    type(summary_meta_t), intent(in) :: meta      !! campaign meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows in case-id order [-]
+    character(len=*), intent(in) :: command_line  !! command that writes the file [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    integer, intent(inout) :: code                !! EXIT_FILE on failure, else unchanged [-]
+    integer :: st
+    character(len=msg_len) :: msg
     msg = ''
     call write_summary(path, meta, rows, command_line, st, msg)
     if (st /= 0) then
       write (err_u, '(a)') 'landyn_batch: cannot write '//path//': '//trim(msg)
-      code = exit_write
-      return
+      code = EXIT_FILE
     end if
-    write (out_u, '(a)') 'Rows written to '//path
-  end subroutine run_case_range
+  end subroutine write_rows
 
   !> One line about a finished case.
   subroutine report_row(row, n_cases, u)
@@ -227,7 +233,7 @@ contains
     integer, allocatable :: missing(:)
     integer :: i, k, st, ndup
     logical :: added
-    code = exit_ok
+    code = EXIT_OK
     ndup = 0
     do i = 1, size(inputs)
       msg = ''
@@ -238,7 +244,7 @@ contains
       end if
       if (st /= 0) then
         write (err_u, '(a)') 'landyn_batch: --merge: '//trim(msg)
-        code = exit_invalid
+        code = EXIT_INPUT
         return
       end if
       if (i == 1) then
@@ -246,7 +252,7 @@ contains
       else if (m%fingerprint /= meta%fingerprint) then
         write (err_u, '(a)') 'landyn_batch: --merge: '//trim(inputs(i))//' belongs to another campaign '// &
           '(fingerprint '//m%fingerprint//') than '//trim(inputs(1))//' ('//meta%fingerprint//')'
-        code = exit_invalid
+        code = EXIT_INPUT
         return
       else
         meta%n_cases = max(meta%n_cases, m%n_cases)   ! a Monte Carlo campaign may have been extended
@@ -261,7 +267,7 @@ contains
             if (.not. rows_equal(table%rows(rows(k)%case_id), rows(k))) then
               write (err_u, '(a)') 'landyn_batch: --merge: case '//int_text(rows(k)%case_id)//' of '// &
                 trim(inputs(i))//' differs from the same case in an earlier file'
-              code = exit_invalid
+              code = EXIT_INPUT
               return
             end if
             ndup = ndup + 1
@@ -274,18 +280,9 @@ contains
       end do
     end do
     if (allocated(rows)) deallocate (rows)
-    if (table%n_have == table%n_cases) then
-      call move_alloc(table%rows, rows)   ! complete: the table holds the rows in case-id order; no copy
-    else
-      rows = results_rows(table)
-    end if
-    msg = ''
-    call write_summary(out_file, meta, rows, command_line, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: cannot write '//out_file//': '//trim(msg)
-      code = exit_write
-      return
-    end if
+    call results_take_rows(table, rows)
+    call write_rows(out_file, meta, rows, command_line, err_u, code)
+    if (code /= EXIT_OK) return
     write (out_u, '(a)') 'Merged '//int_text(size(inputs))//' file(s), '//int_text(size(rows))//' of '// &
       int_text(meta%n_cases)//' cases ('//int_text(ndup)//' duplicate rows dropped) into '//out_file
     call report_probability(rows, meta%crit%failed_runs, out_u)
@@ -293,11 +290,12 @@ contains
     if (size(missing) > 0) then
       write (err_u, '(a)') 'landyn_batch: --merge: '//int_text(size(missing))//' case(s) missing, e.g. '// &
         ids_text(missing(1:min(20, size(missing))))
-      code = exit_incomplete
+      code = EXIT_INCOMPLETE
     end if
 
   contains
 
+    !> Enlarge the table to n cases, keeping its rows.
     subroutine grow(t, n)
       type(results_t), intent(inout) :: t   !! table [-]
       integer, intent(in) :: n              !! new case count [-]
@@ -312,6 +310,7 @@ contains
 
   end subroutine merge_summaries
 
+  !> Case ids as comma-separated text.
   pure function ids_text(v) result(s)
     integer, intent(in) :: v(:)         !! ids [-]
     character(len=:), allocatable :: s  !! 'a, b, c' [-]

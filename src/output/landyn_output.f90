@@ -2,10 +2,10 @@
 !! The file is written under a temporary name (<file>.partial) and renamed only when complete,
 !! so a run that fails or is killed leaves nothing that looks like a result.
 module landyn_output
-  use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
-  use landyn_version, only: landyn_version_string, landyn_git_revision, landyn_build_type, landyn_fflags
+  use landyn_strings, only: nonempty
+  use landyn_provenance, only: write_meta
   use landyn_input, only: resolved_input_text
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
   use landyn_health, only: health_t, check_names, n_checks
@@ -14,21 +14,11 @@ module landyn_output
   implicit none
   private
 
-  public :: write_result_file, schema_version, iso_timestamp
+  public :: write_result_file, schema_version
 
   character(len=*), parameter :: schema_version = '1.2'  !! version of docs/output.md
 
 contains
-
-  !> Current date and time as ISO 8601 with the UTC offset.
-  function iso_timestamp() result(ts)
-    character(len=25) :: ts   !! e.g. 2026-11-22T10:15:00+00:00
-    character(len=8) :: d
-    character(len=10) :: t
-    character(len=5) :: z
-    call date_and_time(d, t, z)
-    ts = d(1:4)//'-'//d(5:6)//'-'//d(7:8)//'T'//t(1:2)//':'//t(3:4)//':'//t(5:6)//z(1:3)//':'//z(4:5)
-  end function iso_timestamp
 
   !> Writes the result file `path` (via `path`.partial and a rename).
   !! With `health`, the run-health checks go to /summary/health (docs/output.md).
@@ -49,6 +39,7 @@ contains
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_result_file
 
+  !> Root attributes, /meta (write_meta and the run's deck), /timeseries and /summary of a run.
   subroutine write_all(f, inp, res, command_line, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file
     type(landyn_input_t), intent(in) :: inp        !! resolved input
@@ -61,21 +52,8 @@ contains
 
     ! ---- root attributes and /meta (provenance)
     call h5_write_attr(f, '/', 'title', trim(inp%simulation%title), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string, stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg, &
-                  description='LANDYN version'); if (stat /= 0) return
-    call h5_write(f, '/meta/git_revision', landyn_git_revision, '-', stat, errmsg, &
-                  description='git describe of the source tree at build time'); if (stat /= 0) return
-    call h5_write(f, '/meta/build_type', landyn_build_type, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/compiler', compiler_version(), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/compiler_flags', landyn_fflags, '-', stat, errmsg, &
-                  description='flags of LANDYN sources as configured'); if (stat /= 0) return
-    call h5_write(f, '/meta/compiler_options', compiler_options(), '-', stat, errmsg, &
-                  description='compiler_options() of the module that writes this file'); if (stat /= 0) return
-    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg, description='time the file was written')
-    if (stat /= 0) return
-    call h5_write(f, '/meta/command_line', trim(command_line), '-', stat, errmsg); if (stat /= 0) return
+    call write_meta(f, '', command_line, stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/meta/deck_name', nonempty(inp%deck_name, '(built-in default)'), '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/meta/deck_text', nonempty(inp%deck_text, '(none: built-in default input)'), '-', stat, errmsg, &
                   description='the input deck as given'); if (stat /= 0) return
@@ -265,6 +243,7 @@ contains
     call h5_write(f, '/summary/peak_joint_load/quantity_names', quantity_names, '-', stat, errmsg)
   end subroutine write_interface_loads
 
+  !> The run-health checks under /summary/health (docs/health.md).
   subroutine write_health_group(f, h, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file
     type(health_t), intent(in) :: h                !! run-health checks
@@ -285,16 +264,5 @@ contains
     call h5_write(f, '/summary/health/messages', m, '-', stat, errmsg, &
       description='one line per check that did not pass; none when all passed')
   end subroutine write_health_group
-
-  pure function nonempty(s, fallback) result(r)
-    character(len=*), intent(in) :: s          !! text
-    character(len=*), intent(in) :: fallback   !! used when s is empty
-    character(len=:), allocatable :: r         !! s or fallback
-    if (len_trim(s) > 0) then
-      r = s
-    else
-      r = fallback
-    end if
-  end function nonempty
 
 end module landyn_output

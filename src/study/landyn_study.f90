@@ -27,35 +27,38 @@
 !!
 !! Library code: returns stat/errmsg; progress goes to a unit the caller passes.
 module landyn_study
-  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears
   use landyn_config, only: landyn_input_t, path_len
   use landyn_input, only: input_errors_t, read_input_file, apply_input_text, resolve_input, validate_input
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_health, only: health_t, check_health, health_fail
-  use landyn_output, only: write_result_file, iso_timestamp
-  use landyn_version, only: landyn_version_string, landyn_git_revision
+  use landyn_output, only: write_result_file
+  use landyn_strings, only: int_text, lower_case
+  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH
   use landyn_files, only: read_whole_file
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
-  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr, rename_file, delete_file
   implicit none
   private
 
   public :: study_t, variant_t, run_record_t
-  public :: read_study, prepare_study, run_study, write_study_csv, write_study_h5
-  public :: max_cases, max_sets, max_measures, label_len, set_len
-  public :: status_ok, status_input, status_failed, status_unhealthy
+  public :: read_study, prepare_study, run_study, group_name
+  public :: label_len, set_len, strut_names
+  public :: status_ok, status_failed, status_unhealthy
 
   integer, parameter :: max_cases = 8        !! load cases per study
   integer, parameter :: max_sets = 32        !! `set` / `common` entries per group
   integer, parameter :: max_measures = 96    !! table rows
   integer, parameter :: label_len = 64       !! length of labels
   integer, parameter :: set_len = 512        !! length of one `set` entry
-  integer, parameter :: status_ok = 0        !! run completed (a tip-over is a result)
-  integer, parameter :: status_input = 2     !! invalid input: not run
-  integer, parameter :: status_failed = 3    !! the simulation failed (diverged)
-  integer, parameter :: status_unhealthy = 6 !! completed, but a run-health check failed (docs/health.md)
+  ! Run statuses, as landyn's exit statuses
+  integer, parameter :: status_ok = EXIT_OK              !! run completed (a tip-over is a result)
+  integer, parameter :: status_input = EXIT_INPUT        !! invalid input: not run
+  integer, parameter :: status_failed = EXIT_DIVERGED    !! the simulation failed (diverged)
+  integer, parameter :: status_unhealthy = EXIT_HEALTH   !! completed, but a run-health check failed (docs/health.md)
+  !> Names of the struts of a gear, in the order of the result file's strut axis (Table 3); their
+  !! number bounds measure_strut. The crush lengths themselves take their shape from the results.
   character(len=*), parameter :: strut_names(3) = [character(len=15) :: 'primary', 'secondary left', &
                                                    'secondary right']
 
@@ -71,7 +74,7 @@ module landyn_study
     character(len=msg_len) :: message = ''           !! diagnosis when status /= status_ok [-]
     character(len=64) :: end_reason = ''             !! how the run ended [-]
     integer :: n_gears = 0                           !! number of gears [-]
-    real(wp) :: crush(3, max_gears) = 0.0_wp         !! signed net crush per strut and gear (Table 3 sense) [m]
+    real(wp), allocatable :: crush(:, :)             !! (n_struts, n_gears) signed net crush (Table 3 sense) [m]
     real(wp) :: energy_residual = 0.0_wp             !! energy audit residual / input energy [-]
     real(wp) :: peak_overload = 0.0_wp               !! [g]
     real(wp) :: max_tilt = 0.0_wp                    !! [deg]
@@ -105,13 +108,13 @@ contains
 
   ! ================================================================ reading
 
-  !> Read a study deck. Problems are appended to `errors`; stat = 0 ok, 1 errors in the deck,
-  !! 2 the file cannot be read.
+  !> Read a study deck. Problems are appended to `errors`; stat = STAT_OK, STAT_FAILED (errors in
+  !! the deck) or STAT_INPUT (the file cannot be read).
   subroutine read_study(path, sd, errors, stat)
     character(len=*), intent(in) :: path            !! study deck [-]
     type(study_t), intent(out) :: sd                !! the study (not yet prepared)
     type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
-    integer, intent(out) :: stat                    !! 0 ok, 1 deck errors, 2 unreadable [-]
+    integer, intent(out) :: stat                    !! STAT_OK, STAT_FAILED (deck errors), STAT_INPUT (unreadable) [-]
     character(len=256) :: title
     character(len=path_len) :: base_deck(max_cases), output, csv
     character(len=label_len) :: case_label(max_cases), label
@@ -119,8 +122,8 @@ contains
     integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
     logical :: keep_results
     namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
-      measure_strut, keep_results
-    namelist /variant/ label, set
+      measure_strut, keep_results  !! the &study group of a study deck (docs/study.md)
+    namelist /variant/ label, set  !! one &variant group of a study deck
     integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study, s0, s1, g
     integer, allocatable :: bad(:)
     character(len=msg_len) :: msg
@@ -130,12 +133,12 @@ contains
     logical :: terminated
 
     n0 = errors%count()
-    stat = 0
+    stat = STAT_OK
     sd%deck_name = trim(path)
     call read_whole_file(path, text, ios, rmsg)
     if (ios /= 0) then
       call errors%add(path//': cannot read the study deck: '//rmsg)
-      stat = 2
+      stat = STAT_INPUT
       return
     end if
     sd%deck_text = text
@@ -165,7 +168,7 @@ contains
                                   short(work(s0:s1))//''' (groups start with &name and end with /)')
       if (g == 0) exit
       p = g
-      gname = lower(work(p + 1:q - 1))
+      gname = lower_case(work(p + 1:q - 1))
       if (.not. terminated .and. (gname == 'study' .or. gname == 'variant')) &
         call errors%add(path//':'//int_text(line_of(work, p))//': &'//gname//": group is not terminated by '/'")
       select case (gname)
@@ -270,8 +273,9 @@ contains
       if (any(sd%variant(1:i - 1)%label == sd%variant(i)%label)) &
         call errors%add(trim(path)//': &variant label '''//trim(sd%variant(i)%label)//''' is given twice')
     end do
-    stat = merge(0, 1, errors%count() == n0)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   contains
+    !> `t` shortened for a message.
     pure function short(t) result(r)
       character(len=*), intent(in) :: t     !! text [-]
       character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]
@@ -286,22 +290,22 @@ contains
   end subroutine read_study
 
   !> Read, override, resolve and validate the input of every run (case x variant) before anything
-  !! is run, so that a study with an invalid variant runs nothing. stat = 0 when all are valid.
+  !! is run, so that a study with an invalid variant runs nothing. stat = STAT_OK when all are valid.
   subroutine prepare_study(study, errors, stat)
     type(study_t), intent(inout) :: study           !! study read by read_study
     type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
-    integer, intent(out) :: stat                    !! 0 ok, 1 invalid input, 2 a deck is unreadable [-]
+    integer, intent(out) :: stat                    !! STAT_OK, STAT_FAILED (invalid input), STAT_INPUT (a deck is unreadable) [-]
     integer :: c, v, n0, st, m, n_gears
     n0 = errors%count()
-    stat = 0
+    stat = STAT_OK
     if (allocated(study%inp)) deallocate (study%inp)
     if (allocated(study%run)) deallocate (study%run)
     allocate (study%inp(study%n_cases, study%n_variants), study%run(study%n_cases, study%n_variants))
     do v = 1, study%n_variants
       do c = 1, study%n_cases
         call read_input_file(trim(study%case_deck(c)), study%inp(c, v), errors, st)
-        if (st == 2) then
-          stat = 2
+        if (st == STAT_INPUT) then
+          stat = STAT_INPUT
           cycle
         end if
         call apply_entries(study%common, trim(study%deck_name)//' (&study common', study%inp(c, v))
@@ -314,8 +318,8 @@ contains
         if (study%keep_results) study%inp(c, v)%output%file = run_file_name(study, c, v)
       end do
     end do
-    if (stat == 0 .and. errors%count() > n0) stat = 1
-    if (stat /= 0) return
+    if (stat == STAT_OK .and. errors%count() > n0) stat = STAT_FAILED
+    if (stat /= STAT_OK) return
     ! table rows against the landers' gears
     n_gears = minval(study%inp(:, 1)%gears%n_gears)
     if (study%default_measures .and. study%n_cases /= 2) then
@@ -327,7 +331,7 @@ contains
         call errors%add(trim(study%deck_name)//': &study: measure option '//int_text(m)//' names gear '// &
                         int_text(study%measure(2, m))//' but load case '//trim(study%case_label(c))//' has '// &
                         int_text(study%inp(c, 1)%gears%n_gears)//' gears')
-        stat = 1
+        stat = STAT_FAILED
       end if
     end do
 
@@ -362,19 +366,19 @@ contains
   ! ================================================================ running
 
   !> Run every prepared (case, variant). `progress_unit` < 0 silences the progress lines.
-  !! stat = 0 when every run completed, status_failed when some failed (their records say why),
-  !! 4 when a kept result file could not be written.
+  !! stat = STAT_OK when every run completed, status_failed when some failed (their records say why),
+  !! STAT_FILE when a kept result file could not be written.
   subroutine run_study(study, progress_unit, command_line, stat, errmsg)
     type(study_t), intent(inout) :: study        !! prepared study; runs are filled in
     integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none [-]
     character(len=*), intent(in) :: command_line !! command line (stored in kept result files) [-]
-    integer, intent(out) :: stat                 !! 0, status_failed or 4 [-]
+    integer, intent(out) :: stat                 !! STAT_OK, status_failed, status_unhealthy or STAT_FILE [-]
     character(len=*), intent(inout) :: errmsg    !! message of a file failure
     type(sim_result_t) :: res
     type(health_t) :: health
     integer :: c, v, k, n, st
     character(len=msg_len) :: msg
-    stat = 0
+    stat = STAT_OK
     k = 0
     n = study%n_cases*study%n_variants
     do v = 1, study%n_variants
@@ -393,7 +397,7 @@ contains
           if (st /= 0) then
             r%status = status_failed
             r%message = msg
-            r%crush = ieee_value(1.0_wp, ieee_quiet_nan)
+            r%crush = reshape([ieee_value(1.0_wp, ieee_quiet_nan)], [1, 1])
             stat = status_failed
           else
             call check_health(study%inp(c, v), res, health)
@@ -401,11 +405,10 @@ contains
             if (health%status() == health_fail) then
               r%status = status_unhealthy
               r%message = 'run-health check failed: '//health%messages
-              if (stat == 0) stat = status_unhealthy
+              if (stat == STAT_OK) stat = status_unhealthy
             end if
             r%n_gears = res%n_gears
-            r%crush = 0.0_wp
-            r%crush(:, 1:res%n_gears) = res%crush_net
+            r%crush = res%crush_net
             r%energy_residual = res%energy_residual
             r%peak_overload = res%peak_overload
             r%max_tilt = res%max_tilt
@@ -417,7 +420,7 @@ contains
               call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, st, msg, &
                                      health)
               if (st /= 0) then
-                stat = 4
+                stat = STAT_FILE
                 errmsg = 'cannot write '//trim(study%inp(c, v)%output%file)//': '//trim(msg)
                 return
               end if
@@ -426,7 +429,8 @@ contains
           if (progress_unit >= 0) then
             if (r%status == status_unhealthy) write (progress_unit, '(a)') '  '//trim(r%message)
             if (r%status /= status_failed) then
-              write (progress_unit, '(a,3f8.1,a,f7.3,a,f7.2,a)') '  gear 1 crush [mm]', 1000.0_wp*r%crush(:, 1), &
+              write (progress_unit, '(a,'//int_text(size(r%crush, 1))//'f8.1,a,f7.3,a,f7.2,a)') &
+                '  gear 1 crush [mm]', 1000.0_wp*r%crush(:, 1), &
                 ', energy residual', 100.0_wp*r%energy_residual, ' %, ', r%wall_time, ' s, '//trim(r%end_reason)
             else
               write (progress_unit, '(a)') '  FAILED: '//trim(r%message)
@@ -437,189 +441,6 @@ contains
       end do
     end do
   end subroutine run_study
-
-  ! ================================================================ writing
-
-  !> Crush length of table row m for variant v [m] (NaN when that run did not complete).
-  pure function table_value(study, m, v) result(x)
-    type(study_t), intent(in) :: study  !! study with results
-    integer, intent(in) :: m            !! table row [-]
-    integer, intent(in) :: v            !! variant [-]
-    real(wp) :: x                       !! crush length [m]
-    associate (r => study%run(study%measure(1, m), v))
-      if (r%status == status_ok) then
-        x = r%crush(study%measure(3, m), study%measure(2, m))
-      else
-        x = r%crush(1, 1)   ! NaN, set by run_study
-      end if
-    end associate
-  end function table_value
-
-  !> Write the crush-length table (rows = measure options, one column per variant in mm, then the
-  !! deviation of each further variant from the first in %) as CSV, through <path>.partial.
-  subroutine write_study_csv(study, path, stat, errmsg)
-    type(study_t), intent(in) :: study          !! study with results
-    character(len=*), intent(in) :: path        !! CSV file [-]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! message on failure
-    integer :: u, m, v, ios, st2
-    character(len=msg_len) :: msg, m2
-    character(len=:), allocatable :: line, tmp
-    real(wp) :: x, x0
-
-    tmp = trim(path)//'.partial'
-    open (newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
-    if (ios /= 0) then
-      stat = 4
-      errmsg = 'cannot write '//trim(path)//': '//trim(msg)
-      return
-    end if
-    line = 'load_case,option,gear,strut'
-    do v = 1, study%n_variants
-      line = line//','//csv_text(trim(study%variant(v)%label)//' [mm]')
-    end do
-    do v = 2, study%n_variants
-      line = line//','//csv_text(trim(study%variant(v)%label)//' dev [%]')
-    end do
-    write (u, '(a)', iostat=ios) line
-    do m = 1, study%n_measures
-      line = csv_text(trim(study%case_label(study%measure(1, m))))//','//int_text(m)//','// &
-             int_text(study%measure(2, m))//','//trim(strut_names(study%measure(3, m)))
-      do v = 1, study%n_variants
-        line = line//','//real_text(1000.0_wp*table_value(study, m, v), 2)
-      end do
-      x0 = table_value(study, m, 1)
-      do v = 2, study%n_variants
-        x = table_value(study, m, v)
-        if (abs(x0) > 0.0_wp) then
-          line = line//','//real_text(100.0_wp*(x - x0)/abs(x0), 2)
-        else
-          line = line//',nan'
-        end if
-      end do
-      if (ios == 0) write (u, '(a)', iostat=ios) line
-    end do
-    close (u)
-    if (ios /= 0) then
-      stat = 4
-      errmsg = 'cannot write '//trim(path)
-      call delete_file(tmp, st2, m2)
-      return
-    end if
-    call rename_file(tmp, trim(path), stat, errmsg)
-    if (stat /= 0) then
-      call delete_file(tmp, st2, m2)
-      stat = 4
-    end if
-  end subroutine write_study_csv
-
-  !> Write the study's HDF5 file (docs/study.md), through <path>.partial.
-  subroutine write_study_h5(study, path, command_line, stat, errmsg)
-    type(study_t), intent(in) :: study           !! study with results
-    character(len=*), intent(in) :: path         !! HDF5 file [-]
-    character(len=*), intent(in) :: command_line !! command line [-]
-    integer, intent(out) :: stat                 !! 0 on success, 4 on failure
-    character(len=*), intent(inout) :: errmsg    !! message on failure
-    type(h5_file_t) :: f
-    call h5_create_partial(f, path, stat, errmsg)
-    if (stat /= 0) then
-      stat = 4
-      return
-    end if
-    call write_h5_all(f, study, command_line, stat, errmsg)
-    call h5_commit_partial(f, path, stat, errmsg)
-    if (stat /= 0) stat = 4
-  end subroutine write_study_h5
-
-  subroutine write_h5_all(f, study, command_line, stat, errmsg)
-    type(h5_file_t), intent(inout) :: f          !! open file
-    type(study_t), intent(in) :: study           !! study with results
-    character(len=*), intent(in) :: command_line !! command line [-]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message on failure
-    integer :: c, v, m, nc, nv, nm
-    character(len=label_len) :: labels(study%n_variants), info(study%n_measures), struts(study%n_measures)
-    character(len=4*set_len) :: ovr(study%n_variants)
-    real(wp) :: tab(study%n_variants, study%n_measures), resid(study%n_variants, study%n_cases)
-    integer :: st(study%n_variants, study%n_cases)
-    character(len=:), allocatable :: g, gc
-
-    nc = study%n_cases
-    nv = study%n_variants
-    nm = study%n_measures
-    call h5_write_attr(f, '/', 'title', trim(study%title), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'producer', 'LANDYN '//landyn_version_string//' landyn_study', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/git_revision', landyn_git_revision, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/command_line', trim(command_line), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/study_deck', study%deck_name, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/study_deck_text', nonempty(study%deck_text), '-', stat, errmsg, &
-                  description='the study deck as given'); if (stat /= 0) return
-    call h5_write(f, '/study/case_label', study%case_label(1:nc), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/study/case_deck', study%case_deck(1:nc), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/study/common', nonempty(study%common), '-', stat, errmsg, &
-                  description='deck text applied to every run before the variant'); if (stat /= 0) return
-    do v = 1, nv
-      labels(v) = study%variant(v)%label
-      ovr(v) = study%variant(v)%overrides
-    end do
-    call h5_write(f, '/study/variant_label', labels, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/study/variant_overrides', ovr, '-', stat, errmsg, &
-                  description='deck text each variant applies on top of the load-case deck'); if (stat /= 0) return
-
-    ! ---- the table of the paper (rows = measure options, columns = variants)
-    do m = 1, nm
-      info(m) = study%case_label(study%measure(1, m))
-      struts(m) = strut_names(study%measure(3, m))
-      do v = 1, nv
-        tab(v, m) = table_value(study, m, v)
-      end do
-    end do
-    call h5_write(f, '/table/crush_length', tab, 'm', stat, errmsg, description='shape (n_options, n_variants): '// &
-                  'signed net crush of each measure option (Table 3 sense) for each variant; NaN: run failed')
-    if (stat /= 0) return
-    call h5_write(f, '/table/load_case', info, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/table/gear', study%measure(2, 1:nm), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/table/strut', struts, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/table/variant', labels, '-', stat, errmsg); if (stat /= 0) return
-
-    ! ---- per variant and load case
-    do c = 1, nc
-      do v = 1, nv
-        resid(v, c) = study%run(c, v)%energy_residual
-        st(v, c) = study%run(c, v)%status
-      end do
-    end do
-    call h5_write(f, '/summary/status', st, '-', stat, errmsg, description='shape (n_cases, n_variants): '// &
-                  '0 completed, 3 simulation failed'); if (stat /= 0) return
-    call h5_write(f, '/summary/energy_residual', resid, '-', stat, errmsg, &
-                  description='shape (n_cases, n_variants)'); if (stat /= 0) return
-    do v = 1, nv
-      g = '/variants/'//int_text(v, 3)
-      call h5_write(f, g//'/label', trim(study%variant(v)%label), '-', stat, errmsg); if (stat /= 0) return
-      call h5_write(f, g//'/overrides', nonempty(study%variant(v)%overrides), '-', stat, errmsg); if (stat /= 0) return
-      do c = 1, nc
-        gc = g//'/'//group_name(study%case_label(c))
-        associate (r => study%run(c, v))
-          call h5_write(f, gc//'/status', r%status, '-', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/message', nonempty(trim(r%message)), '-', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/end_reason', nonempty(trim(r%end_reason)), '-', stat, errmsg); if (stat /= 0) return
-          if (r%status == status_ok) then
-            call h5_write(f, gc//'/crush_length', r%crush(:, 1:r%n_gears), 'm', stat, errmsg, &
-                          description='/summary/crush_length of the run: shape (n_gears, 3)'); if (stat /= 0) return
-          end if
-          call h5_write(f, gc//'/energy_residual', r%energy_residual, '-', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/peak_overload', r%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/max_tilt', r%max_tilt, 'deg', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/tipped_over', r%tipped_over, '-', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/final_time', r%t_final, 's', stat, errmsg); if (stat /= 0) return
-          call h5_write(f, gc//'/wall_time', r%wall_time, 's', stat, errmsg); if (stat /= 0) return
-        end associate
-      end do
-    end do
-  end subroutine write_h5_all
 
   ! ================================================================ helpers
 
@@ -642,13 +463,14 @@ contains
       do m = 1, n
         study%measure(:, m) = [mc(m), mg(m), ms(m)]
         if (mc(m) < 1 .or. mc(m) > study%n_cases .or. mg(m) < 1 .or. mg(m) > max_gears .or. &
-            ms(m) < 1 .or. ms(m) > 3) &
+            ms(m) < 1 .or. ms(m) > size(strut_names)) &
           call errors%add(trim(path)//': &study: measure option '//int_text(m)//' = (case '//int_text(mc(m))// &
                           ', gear '//int_text(mg(m))//', strut '//int_text(ms(m))//') is invalid; valid: case 1..'// &
-                          int_text(study%n_cases)//', gear 1..n_gears, strut 1..3 (primary, left, right)')
+                          int_text(study%n_cases)//', gear 1..n_gears, strut 1..'// &
+                          int_text(size(strut_names))//' (primary, left, right)')
       end do
       if (any(mc(1:n) < 1 .or. mc(1:n) > study%n_cases .or. mg(1:n) < 1 .or. mg(1:n) > max_gears .or. &
-              ms(1:n) < 1 .or. ms(1:n) > 3)) study%n_measures = 0   ! reported; no table row may use them
+              ms(1:n) < 1 .or. ms(1:n) > size(strut_names))) study%n_measures = 0   ! reported; no table row may use them
     else if (study%n_cases == 2) then
       study%n_measures = 9
       study%measure(:, 1:9) = paper
@@ -656,7 +478,7 @@ contains
       m = 0
       do c = 1, study%n_cases
         do gi = 1, n_gears
-          do k = 1, 3
+          do k = 1, size(strut_names)
             m = m + 1
             study%measure(:, m) = [c, gi, k]
           end do
@@ -695,8 +517,6 @@ contains
     end do
   end subroutine join_sets
 
-
-
   !> File name of a kept result: <output base>_<variant number>_<case label>.h5.
   function run_file_name(study, c, v) result(name)
     type(study_t), intent(in) :: study     !! study [-]
@@ -729,7 +549,7 @@ contains
     character(len=label_len) :: label      !! label [-]
     character(len=:), allocatable :: b
     b = base_name(deck)
-    if (len(b) == 3 .and. lower(b(1:2)) == 'lc') then
+    if (len(b) == 3 .and. lower_case(b(1:2)) == 'lc') then
       label = 'LC-'//b(3:3)
     else
       label = b
@@ -747,78 +567,5 @@ contains
     end do
     if (len(g) == 0) g = '_'
   end function group_name
-
-  !> CSV field: quoted when it holds a comma or a quote.
-  pure function csv_text(s) result(t)
-    character(len=*), intent(in) :: s      !! text [-]
-    character(len=:), allocatable :: t     !! CSV field [-]
-    integer :: i
-    if (scan(s, ',"') == 0) then
-      t = s
-      return
-    end if
-    t = '"'
-    do i = 1, len(s)
-      if (s(i:i) == '"') then
-        t = t//'""'
-      else
-        t = t//s(i:i)
-      end if
-    end do
-    t = t//'"'
-  end function csv_text
-
-  pure function real_text(x, d) result(s)
-    real(wp), intent(in) :: x              !! value [any unit]
-    integer, intent(in) :: d               !! decimals [-]
-    character(len=:), allocatable :: s     !! text, 'nan' for NaN [-]
-    character(len=40) :: buf
-    character(len=16) :: fmt
-    if (ieee_is_nan(x)) then
-      s = 'nan'
-      return
-    end if
-    write (fmt, '(a,i0,a)') '(f0.', d, ')'
-    write (buf, fmt) x
-    s = trim(adjustl(buf))
-    if (s(1:1) == '.') s = '0'//s
-    if (len(s) > 1) then
-      if (s(1:2) == '-.') s = '-0'//s(2:)
-    end if
-  end function real_text
-
-  pure function int_text(i, width) result(s)
-    integer, intent(in) :: i               !! value [-]
-    integer, intent(in), optional :: width !! zero-padded width [-]
-    character(len=:), allocatable :: s     !! text [-]
-    character(len=16) :: buf
-    if (present(width)) then
-      write (buf, '(i0.'//achar(iachar('0') + min(max(width, 1), 9))//')') i
-    else
-      write (buf, '(i0)') i
-    end if
-    s = trim(buf)
-  end function int_text
-
-  pure function nonempty(s) result(r)
-    character(len=*), intent(in) :: s      !! text [-]
-    character(len=:), allocatable :: r     !! s, or '(none)' when blank [-]
-    if (len_trim(s) > 0) then
-      r = s
-    else
-      r = '(none)'
-    end if
-  end function nonempty
-
-  pure function lower(s) result(t)
-    character(len=*), intent(in) :: s      !! text [-]
-    character(len=len(s)) :: t             !! s in lower case [-]
-    integer :: i, c
-    t = s
-    do i = 1, len(s)
-      c = iachar(s(i:i))
-      if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-    end do
-  end function lower
 
 end module landyn_study

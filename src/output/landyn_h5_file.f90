@@ -1,0 +1,238 @@
+!> Opening, closing and publishing HDF5 files, groups, and the plain-file operations (rename,
+!! delete) used to publish a file written under a temporary name (see landyn_h5).
+module landyn_h5_file
+  use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
+  use landyn_kinds, only: msg_len
+  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_h5_base, only: no_id, h5_file_t, h5_is_open, h5_exists, init_library, make_lcpl, &
+    release, check_writable, fail, fail_file
+  use hdf5, only: hid_t, h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, h5gcreate_f, h5gopen_f, &
+    H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F
+  implicit none
+  private
+
+  public :: h5_create, h5_open_read, h5_close, h5_create_group
+  public :: rename_file, delete_file, h5_create_partial, h5_commit_partial
+
+  !> The C library's rename(3) and remove(3).
+  interface
+    !> C library rename(3): 0 on success.
+    function c_rename(old_name, new_name) bind(C, name='rename') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: old_name(*)  !! null-terminated source name
+      character(kind=c_char), intent(in) :: new_name(*)  !! null-terminated target name
+      integer(c_int) :: rc                               !! 0 on success, -1 on failure
+    end function c_rename
+
+    !> C library remove(3): 0 on success.
+    function c_remove(file_name) bind(C, name='remove') result(rc)
+      import :: c_char, c_int
+      character(kind=c_char), intent(in) :: file_name(*) !! null-terminated file name
+      integer(c_int) :: rc                               !! 0 on success, -1 on failure
+    end function c_remove
+  end interface
+
+contains
+
+  ! ============================================================== files
+
+  !> Create (truncate) an HDF5 file for writing.
+  subroutine h5_create(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! must not be open
+    character(len=*), intent(in) :: path       !! file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    integer :: hdferr
+
+    stat = STAT_OK
+    if (h5_is_open(file)) then
+      call fail_file(stat, errmsg, 'h5_create', 'the handle is still open on file', file%path)
+      return
+    end if
+    call init_library(hdferr)
+    if (hdferr < 0) then
+      call fail_file(stat, errmsg, 'h5_create', 'cannot initialise the HDF5 library for file', path)
+      return
+    end if
+    call h5fcreate_f(trim(path), H5F_ACC_TRUNC_F, file%id, hdferr)
+    if (hdferr < 0) then
+      file%id = no_id
+      call fail_file(stat, errmsg, 'h5_create', 'cannot create file', path, &
+        ' (does its directory exist and is it writable?)')
+      return
+    end if
+    file%path = trim(path)
+    file%writable = .true.
+  end subroutine h5_create
+
+  !> Open an existing HDF5 file read-only.
+  subroutine h5_open_read(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! must not be open
+    character(len=*), intent(in) :: path       !! file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    integer :: hdferr
+    logical :: exists, is_hdf5
+
+    stat = STAT_OK
+    if (h5_is_open(file)) then
+      call fail_file(stat, errmsg, 'h5_open_read', 'the handle is still open on file', file%path)
+      return
+    end if
+    inquire(file=trim(path), exist=exists)
+    if (.not. exists) then
+      call fail_file(stat, errmsg, 'h5_open_read', 'no such file', path)
+      return
+    end if
+    call init_library(hdferr)
+    if (hdferr < 0) then
+      call fail_file(stat, errmsg, 'h5_open_read', 'cannot initialise the HDF5 library for file', path)
+      return
+    end if
+    call h5fis_hdf5_f(trim(path), is_hdf5, hdferr)
+    if (hdferr < 0 .or. .not. is_hdf5) then
+      call fail_file(stat, errmsg, 'h5_open_read', 'not an HDF5 file (or not readable):', path)
+      return
+    end if
+    call h5fopen_f(trim(path), H5F_ACC_RDONLY_F, file%id, hdferr)
+    if (hdferr < 0) then
+      file%id = no_id
+      call fail_file(stat, errmsg, 'h5_open_read', 'cannot open HDF5 file', path)
+      return
+    end if
+    file%path = trim(path)
+    file%writable = .false.
+  end subroutine h5_open_read
+
+  !> Close a file (flushing it). Closing a handle that is not open does nothing and succeeds.
+  subroutine h5_close(file, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! not open afterwards, whatever the outcome
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    integer :: hdferr
+
+    stat = STAT_OK
+    if (.not. h5_is_open(file)) return
+    call h5fclose_f(file%id, hdferr)
+    file%id = no_id
+    file%writable = .false.
+    if (hdferr < 0) call fail_file(stat, errmsg, 'h5_close', 'cannot close file', file%path, ' (data may be lost)')
+  end subroutine h5_close
+
+  !> Create a group and any missing intermediate groups. An existing group is not an error.
+  subroutine h5_create_group(file, path, stat, errmsg)
+    type(h5_file_t), intent(in) :: file        !! file open for writing
+    character(len=*), intent(in) :: path       !! group path, e.g. '/gears/gear_1'
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    character(len=*), parameter :: op = 'h5_create_group'
+    integer(hid_t) :: lcpl, gid
+    integer :: hdferr
+    logical :: ok
+
+    call check_writable(file, op, path, stat, errmsg)
+    if (stat /= 0) return
+    lcpl = no_id
+    gid = no_id
+    steps: block
+      if (h5_exists(file, path)) then
+        call h5gopen_f(file%id, trim(path), gid, hdferr)
+        if (hdferr < 0) call fail(stat, errmsg, op, 'an object that is not a group exists at', path, file)
+        exit steps
+      end if
+      call make_lcpl(lcpl, hdferr)
+      if (hdferr < 0) then
+        call fail(stat, errmsg, op, 'cannot make a link-creation property list for', path, file)
+        exit steps
+      end if
+      call h5gcreate_f(file%id, trim(path), gid, hdferr, lcpl_id=lcpl)
+      if (hdferr < 0) call fail(stat, errmsg, op, 'cannot create group', path, file)
+    end block steps
+    ok = .true.
+    call release(gid, ok)
+    call release(lcpl, ok)
+    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, op, 'cannot release HDF5 handles of', path, file)
+  end subroutine h5_create_group
+
+
+  ! ============================================================== plain files
+
+  !> Rename (move) a file with C rename(3): atomic within one file system, replaces an existing
+  !! `to`; fails across file systems. Use it to publish a result file written under a temporary
+  !! name in the same directory.
+  subroutine rename_file(from, to, stat, errmsg)
+    character(len=*), intent(in) :: from       !! existing file name
+    character(len=*), intent(in) :: to         !! new file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    logical :: exists
+
+    stat = STAT_OK
+    if (c_rename(trim(from)//c_null_char, trim(to)//c_null_char) == 0_c_int) return
+    stat = STAT_FAILED
+    inquire(file=from, exist=exists)
+    if (exists) then
+      errmsg = "rename_file: cannot rename '"//trim(from)//"' to '"//trim(to)// &
+        "' (target directory missing or not writable, or another file system?)"
+    else
+      errmsg = "rename_file: cannot rename '"//trim(from)//"' to '"//trim(to)//"': no such file"
+    end if
+  end subroutine rename_file
+
+  !> Delete a file with C remove(3). A file that does not exist is not an error.
+  subroutine delete_file(path, stat, errmsg)
+    character(len=*), intent(in) :: path                 !! file name
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout), optional :: errmsg  !! set on failure
+    logical :: exists
+
+    stat = STAT_OK
+    inquire(file=path, exist=exists)
+    if (.not. exists) return
+    if (c_remove(trim(path)//c_null_char) == 0_c_int) return
+    stat = STAT_FAILED
+    if (present(errmsg)) errmsg = "delete_file: cannot delete '"//trim(path)//"'"
+  end subroutine delete_file
+
+  ! ============================================================== files published whole
+
+  !> Create `path`.partial for writing. Write the contents, then call h5_commit_partial with
+  !! their status: the file appears under `path` only when it is complete, so a write that
+  !! fails or is killed leaves nothing that looks like a result.
+  subroutine h5_create_partial(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! must not be open; open on `path`.partial afterwards
+    character(len=*), intent(in) :: path       !! final file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    call h5_create(file, trim(path)//'.partial', stat, errmsg)
+  end subroutine h5_create_partial
+
+  !> Finish a file begun with h5_create_partial: with stat = 0 on entry (contents written), close
+  !! it and rename `path`.partial to `path`; otherwise (or when closing or renaming fails) close
+  !! it and delete `path`.partial, keeping the caller's stat and errmsg.
+  subroutine h5_commit_partial(file, path, stat, errmsg)
+    type(h5_file_t), intent(inout) :: file     !! opened by h5_create_partial; closed afterwards
+    character(len=*), intent(in) :: path       !! final file name, as given to h5_create_partial
+    integer, intent(inout) :: stat             !! in: status of writing the contents; out: 0 when published
+    character(len=*), intent(inout) :: errmsg  !! set on failure (kept when stat /= 0 on entry)
+    character(len=:), allocatable :: tmp
+    integer :: st2
+    character(len=msg_len) :: m2
+    tmp = trim(path)//'.partial'
+    if (stat /= 0) then
+      call h5_close(file, st2, m2)
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call h5_close(file, stat, errmsg)
+    if (stat /= 0) then
+      call delete_file(tmp, st2, m2)
+      return
+    end if
+    call rename_file(tmp, trim(path), stat, errmsg)
+    if (stat /= 0) call delete_file(tmp, st2, m2)
+  end subroutine h5_commit_partial
+
+  ! ============================================================== private helpers
+
+end module landyn_h5_file
