@@ -1,0 +1,54 @@
+!> MSC Adams IMPACT contact: K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot.
+!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
+module landyn_contact_adams_impact
+  use landyn_kinds, only: wp
+  use landyn_config, only: contact_cfg_t
+  use landyn_errors, only: input_errors_t
+  use landyn_contact_law, only: contact_law_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+                                check_damping_depth
+  use landyn_friction_law, only: adams_step
+  implicit none
+  private
+
+  public :: adams_impact_t, build
+
+  !> MSC Adams IMPACT: F = K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot (cubic damping ramp).
+  type, extends(hertz_spring_t) :: adams_impact_t
+    real(wp) :: damping = 1.0e4_wp                 !! C, full damping [N s/m]
+    real(wp) :: penetration = 1.0e-4_wp            !! d_max: penetration of full damping [m]
+  contains
+    procedure :: normal_force => adams_impact_normal_force
+  end type adams_impact_t
+
+contains
+
+  !> The adams_impact law from the &contact input (d_max = damping_depth > 0).
+  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(cfg, pre, errors, law)
+    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
+    character(len=*), intent(in) :: pre                               !! message prefix [-]
+    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
+    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
+    call check_damping_depth(cfg, pre, errors, needed=.true.)
+    if (.not. present(law)) return
+    call check_hertz_spring(cfg, pre, errors)
+    call check_damping(cfg, pre, errors)
+    allocate (law, source=adams_impact_t(name='adams_impact', stiffness=cfg%stiffness, exponent=cfg%exponent, &
+                                         damping=cfg%damping, penetration=cfg%damping_depth))
+  end subroutine build
+
+  pure function adams_impact_normal_force(self, delta, delta_dot, state) result(f)
+    class(adams_impact_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta              !! penetration [m]
+    real(wp), intent(in) :: delta_dot          !! penetration rate [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
+    real(wp) :: f                              !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
+    if (delta <= 0.0_wp) then
+      f = 0.0_wp
+      return
+    end if
+    f = self%damped_force(delta, adams_step(delta, 0.0_wp, 0.0_wp, self%penetration, self%damping), delta_dot)
+  end function adams_impact_normal_force
+
+end module landyn_contact_adams_impact
