@@ -11,7 +11,7 @@ module landyn_contact
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strings, only: lower_case
-  use landyn_contact_law, only: contact_law_t, contact_state_t, advance_contact_state
+  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, advance_contact_state
   ! ---- registered laws (1/3): their modules
   use landyn_contact_base, only: base_contact_t, base_contact, build_base => build
   use landyn_contact_adams_impact, only: build_adams_impact => build
@@ -57,63 +57,67 @@ contains
   !! stat = STAT_FAILED and errmsg set for an unknown name or invalid parameters (the first
   !! problem found; law is then unallocated).
   subroutine make_contact_law(cfg, law, stat, errmsg)
-    type(contact_cfg_t), intent(in) :: cfg                       !! resolved &contact input
-    class(contact_law_t), allocatable, intent(out) :: law        !! the law
+    type(contact_cfg_t), intent(in) :: cfg                      !! resolved &contact input
+    class(contact_law_t), allocatable, intent(out) :: law       !! the law
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
-    type(input_errors_t) :: errors
+    type(contact_build_t) :: b
     character(len=name_len) :: key
-    logical :: known
 
     stat = STAT_OK
     errmsg = ''
     key = lower_case(trim(adjustl(cfg%law)))
-    call build_law(key, cfg, '', errors, known, law)
-    if (.not. known) then
-      call errors%add("&contact law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//contact_law_names)
+    b%cfg = cfg
+    b%pre = ''
+    if (.not. built(key, b)) then
+      call b%errors%add("&contact law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//contact_law_names)
     end if
-    if (errors%count() > 0) then
+    if (b%errors%count() > 0) then
       stat = STAT_FAILED
-      errmsg = errors%message(1)
-      if (allocated(law)) deallocate (law)
+      errmsg = b%errors%message(1)
     else
+      call move_alloc(b%law, law)
       law%name = key
     end if
   end subroutine make_contact_law
 
-  !> The law-dependent checks of the &contact input (e.g. the damping_depth rule of the law), one
-  !! message per problem in the input validation's format. Nothing for an unknown law name (the
-  !! name itself is checked against contact_law_names by the input validation).
+  !> The law-dependent checks of the &contact input, one message per problem in the input
+  !! validation's format. Nothing for an unknown law name (the input validation checks the name
+  !! against contact_law_names).
   subroutine check_contact_law_input(cfg, pre, errors)
-    type(contact_cfg_t), intent(in) :: cfg         !! resolved &contact input
+    type(contact_cfg_t), intent(in) :: cfg        !! resolved &contact input
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    logical :: known
-    call build_law(lower_case(trim(adjustl(cfg%law))), cfg, pre, errors, known)
+    type(contact_build_t) :: b
+    integer :: i
+    b%cfg = cfg
+    b%pre = pre
+    b%check_only = .true.
+    if (.not. built(lower_case(trim(adjustl(cfg%law))), b)) return
+    do i = 1, b%errors%count()
+      call errors%add(b%errors%message(i))
+    end do
   end subroutine check_contact_law_input
 
-  !> Calls the builder of the law named key (lower case): the checks, and the law when present.
-  subroutine build_law(key, cfg, pre, errors, known, law)
-    character(len=*), intent(in) :: key                               !! law name, lower case [-]
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    logical, intent(out) :: known                                     !! key is a registered law [-]
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law
+  !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
+  function built(key, b) result(known)
+    character(len=*), intent(in) :: key            !! law name, lower case [-]
+    type(contact_build_t), intent(inout) :: b          !! the build: input, messages, law
+    logical :: known                               !! key is a registered law [-]
     known = .true.
     select case (key)
     ! ---- registered laws (3/3): their builders
-    case ('base'); call build_base(cfg, pre, errors, law)
-    case ('adams_impact'); call build_adams_impact(cfg, pre, errors, law)
-    case ('hertz'); call build_hertz(cfg, pre, errors, law)
-    case ('kelvin_voigt'); call build_kelvin_voigt(cfg, pre, errors, law)
-    case ('kelvin_voigt_step'); call build_kelvin_voigt_step(cfg, pre, errors, law)
-    case ('kelvin_voigt_bilinear'); call build_kelvin_voigt_bilinear(cfg, pre, errors, law)
-    case ('hunt_crossley'); call build_hunt_crossley(cfg, pre, errors, law)
-    case ('regolith'); call build_regolith(cfg, pre, errors, law)
+    case ('base'); call build_base(b)
+    case ('adams_impact'); call build_adams_impact(b)
+    case ('hertz'); call build_hertz(b)
+    case ('kelvin_voigt'); call build_kelvin_voigt(b)
+    case ('kelvin_voigt_step'); call build_kelvin_voigt_step(b)
+    case ('kelvin_voigt_bilinear'); call build_kelvin_voigt_bilinear(b)
+    case ('hunt_crossley'); call build_hunt_crossley(b)
+    case ('regolith'); call build_regolith(b)
     case default
       known = .false.
     end select
-  end subroutine build_law
+  end function built
 
 end module landyn_contact

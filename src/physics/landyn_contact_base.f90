@@ -2,9 +2,7 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_base
   use landyn_kinds, only: wp
-  use landyn_config, only: contact_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_contact_law, only: contact_law_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
   implicit none
   private
@@ -23,17 +21,14 @@ module landyn_contact_base
 contains
 
   !> The base law from the &contact input (damping_depth = D1; 0: no ramp, full damping at once).
-  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
-  subroutine build(cfg, pre, errors, law)
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_damping_depth(cfg, pre, errors, needed=.false.)
-    if (.not. present(law)) return
-    call check_hertz_spring(cfg, pre, errors)
-    call check_damping(cfg, pre, errors)
-    allocate (law, source=base_contact(cfg%stiffness, cfg%exponent, cfg%damping, cfg%damping_depth))
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.false.)
+    if (b%check_only) return
+    call check_hertz_spring(b)
+    call check_damping(b)
+    allocate (b%law, source=base_contact(b%cfg%stiffness, b%cfg%exponent, b%cfg%damping, b%cfg%damping_depth))
   end subroutine build
 
   !> Base law with the given parameters.

@@ -2,10 +2,9 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_hunt_crossley
   use landyn_kinds, only: wp
-  use landyn_config, only: contact_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_contact_law, only: contact_law_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping_depth
-  use landyn_law_checks, only: require_real, positive, nonnegative
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, &
+                                check_damping_depth
+  use landyn_law_checks, only: positive, nonnegative
   implicit none
   private
 
@@ -25,21 +24,19 @@ module landyn_contact_hunt_crossley
 contains
 
   !> The hunt_crossley law from the &contact input.
-  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
-  subroutine build(cfg, pre, errors, law)
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_damping_depth(cfg, pre, errors, needed=.false.)
-    if (.not. present(law)) return
-    call check_hertz_spring(cfg, pre, errors)
-    call require_real(errors, cfg%restitution >= 0.0_wp .and. cfg%restitution <= 1.0_wp, pre, 'contact', 'restitution', &
-                      cfg%restitution, '', '0 <= restitution <= 1')
-    call require_real(errors, nonnegative(cfg%hc_alpha), pre, 'contact', 'hc_alpha', cfg%hc_alpha, 's/m', 'hc_alpha >= 0 s/m')
-    call require_real(errors, positive(cfg%min_impact_speed), pre, 'contact', 'min_impact_speed', cfg%min_impact_speed, &
-                      'm/s', 'min_impact_speed > 0 m/s')
-    allocate (law, source=hunt_crossley(cfg%stiffness, cfg%exponent, cfg%restitution, cfg%hc_alpha, cfg%min_impact_speed))
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.false.)
+    if (b%check_only) return
+    call check_hertz_spring(b)
+    call b%require(b%cfg%restitution >= 0.0_wp .and. b%cfg%restitution <= 1.0_wp, 'restitution', &
+                   b%cfg%restitution, '', '0 <= restitution <= 1')
+    call b%require(nonnegative(b%cfg%hc_alpha), 'hc_alpha', b%cfg%hc_alpha, 's/m', 'hc_alpha >= 0 s/m')
+    call b%require(positive(b%cfg%min_impact_speed), 'min_impact_speed', b%cfg%min_impact_speed, &
+                   'm/s', 'min_impact_speed > 0 m/s')
+    allocate (b%law, source=hunt_crossley(b%cfg%stiffness, b%cfg%exponent, b%cfg%restitution, b%cfg%hc_alpha, &
+                                          b%cfg%min_impact_speed))
   end subroutine build
 
   !> hunt_crossley law with the given parameters (a fresh contact history).

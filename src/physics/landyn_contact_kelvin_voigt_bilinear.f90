@@ -2,11 +2,9 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt_bilinear
   use landyn_kinds, only: wp
-  use landyn_config, only: contact_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_contact_law, only: contact_law_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
-  use landyn_law_checks, only: require_real, nonnegative
+  use landyn_law_checks, only: nonnegative
   implicit none
   private
 
@@ -23,20 +21,17 @@ module landyn_contact_kelvin_voigt_bilinear
 contains
 
   !> The kelvin_voigt_bilinear law from the &contact input.
-  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
-  subroutine build(cfg, pre, errors, law)
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_damping_depth(cfg, pre, errors, needed=.false.)
-    if (.not. present(law)) return
-    call check_hertz_spring(cfg, pre, errors)
-    call check_damping(cfg, pre, errors)
-    call require_real(errors, nonnegative(cfg%damping2), pre, 'contact', 'damping2', cfg%damping2, 'N s^2/m^2', &
-                      'damping2 >= 0 N s^2/m^2')
-    allocate (law, source=kelvin_voigt_bilinear_t(name='kelvin_voigt_bilinear', stiffness=cfg%stiffness, &
-                                                  exponent=cfg%exponent, damping=cfg%damping, damping2=cfg%damping2))
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.false.)
+    if (b%check_only) return
+    call check_hertz_spring(b)
+    call check_damping(b)
+    call b%require(nonnegative(b%cfg%damping2), 'damping2', b%cfg%damping2, 'N s^2/m^2', &
+                   'damping2 >= 0 N s^2/m^2')
+    allocate (b%law, source=kelvin_voigt_bilinear_t(name='kelvin_voigt_bilinear', stiffness=b%cfg%stiffness, &
+                                                    exponent=b%cfg%exponent, damping=b%cfg%damping, damping2=b%cfg%damping2))
   end subroutine build
 
   pure function kelvin_voigt_bilinear_normal_force(self, delta, delta_dot, state) result(f)

@@ -2,9 +2,7 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt_step
   use landyn_kinds, only: wp
-  use landyn_config, only: contact_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_contact_law, only: contact_law_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
   implicit none
   private
@@ -22,18 +20,15 @@ module landyn_contact_kelvin_voigt_step
 contains
 
   !> The kelvin_voigt_step law from the &contact input (d = damping_depth > 0).
-  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
-  subroutine build(cfg, pre, errors, law)
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_damping_depth(cfg, pre, errors, needed=.true.)
-    if (.not. present(law)) return
-    call check_hertz_spring(cfg, pre, errors)
-    call check_damping(cfg, pre, errors)
-    allocate (law, source=kelvin_voigt_step_t(name='kelvin_voigt_step', stiffness=cfg%stiffness, exponent=cfg%exponent, &
-                                              damping=cfg%damping, step_depth=cfg%damping_depth))
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.true.)
+    if (b%check_only) return
+    call check_hertz_spring(b)
+    call check_damping(b)
+    allocate (b%law, source=kelvin_voigt_step_t(name='kelvin_voigt_step', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
+                                                damping=b%cfg%damping, step_depth=b%cfg%damping_depth))
   end subroutine build
 
   pure function kelvin_voigt_step_normal_force(self, delta, delta_dot, state) result(f)

@@ -25,12 +25,12 @@
 !! evaluation is a pure function of (delta, delta_dot, state) and the law. Without a state the
 !! history laws evaluate as on a fresh contact (no recorded impact, no deeper crater).
 !!
-!! Building from the input. Every law module has a builder
-!!   build(cfg, pre, errors, law)
-!! that appends its law-dependent checks of the &contact input to `errors` and, when `law` is
-!! present, also the range checks of the parameters it uses and allocates the law (the registry
-!! discards it when a check failed). Without `law` only the law-dependent checks run: that is the
-!! input validation (check_contact_law_input), so deck validation and factory share one rule.
+!! Building from the input. Every law module has a builder `build(b)`, b a contact_build_t
+!! holding the &contact input, the message prefix and the messages so far. It appends the
+!! law-dependent checks (e.g. its damping_depth rule) and, unless b%check_only, the range checks
+!! of the parameters it uses, and allocates b%law (the registry discards it when a check failed).
+!! With b%check_only that is the input validation (check_contact_law_input), so deck validation
+!! and factory share one rule.
 module landyn_contact_law
   use landyn_kinds, only: wp
   use landyn_config, only: contact_cfg_t, name_len
@@ -39,7 +39,7 @@ module landyn_contact_law
   implicit none
   private
 
-  public :: contact_law_t, contact_state_t, hertz_spring_t, advance_contact_state
+  public :: contact_law_t, contact_state_t, contact_build_t, hertz_spring_t, advance_contact_state
   public :: check_hertz_spring, check_damping, check_damping_depth
 
   !> Contact history of one footpad (used by laws with has_history only).
@@ -89,6 +89,18 @@ module landyn_contact_law
       real(wp) :: e                             !! stored elastic energy [J]
     end function elastic_energy_i
   end interface
+
+  !> What a contact law builder works on: the &contact input, the message prefix, the messages so far and
+  !! the law it builds. check_only: run only the law-dependent checks (the input validation).
+  type :: contact_build_t
+    type(contact_cfg_t) :: cfg                        !! resolved &contact input
+    character(len=:), allocatable :: pre          !! message prefix (deck name or '') [-]
+    type(input_errors_t) :: errors                !! problems found so far
+    logical :: check_only = .false.               !! only the law-dependent checks, build nothing [-]
+    class(contact_law_t), allocatable :: law          !! the law built (also when a check failed)
+  contains
+    procedure :: require => contact_require           !! append a message unless a requirement holds
+  end type contact_build_t
 
   !> Laws whose spring part is K delta^n (all but regolith).
   type, abstract, extends(contact_law_t) :: hertz_spring_t
@@ -170,40 +182,45 @@ contains
     f = max(0.0_wp, self%stiffness*delta**self%exponent + c*delta_dot)
   end function damped_force
 
+  !> Append "&contact: var = x unit is invalid; valid: requirement" unless ok.
+  subroutine contact_require(self, ok, var, x, unit, valid)
+    class(contact_build_t), intent(inout) :: self     !! the build
+    logical, intent(in) :: ok                      !! the requirement holds [-]
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    character(len=*), intent(in) :: valid          !! the requirement [-]
+    call require_real(self%errors, ok, self%pre, 'contact', var, x, unit, valid)
+  end subroutine contact_require
+
   ! ---------------------------------------------------------------- checks of the &contact input
 
   !> Range checks of the spring part K delta^n (stiffness, exponent).
-  subroutine check_hertz_spring(cfg, pre, errors)
-    type(contact_cfg_t), intent(in) :: cfg         !! resolved &contact input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, positive(cfg%stiffness), pre, 'contact', 'stiffness', cfg%stiffness, 'N/m^n', &
-                      'stiffness > 0')
-    call require_real(errors, positive(cfg%exponent), pre, 'contact', 'exponent', cfg%exponent, '', 'exponent > 0')
+  subroutine check_hertz_spring(b)
+    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
+    call b%require(positive(b%cfg%stiffness), 'stiffness', b%cfg%stiffness, 'N/m^n', &
+                   'stiffness > 0')
+    call b%require(positive(b%cfg%exponent), 'exponent', b%cfg%exponent, '', 'exponent > 0')
   end subroutine check_hertz_spring
 
   !> Range check of the (linear) damping coefficient.
-  subroutine check_damping(cfg, pre, errors)
-    type(contact_cfg_t), intent(in) :: cfg         !! resolved &contact input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, nonnegative(cfg%damping), pre, 'contact', 'damping', cfg%damping, 'N s/m', &
-                      'damping >= 0 N s/m')
+  subroutine check_damping(b)
+    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
+    call b%require(nonnegative(b%cfg%damping), 'damping', b%cfg%damping, 'N s/m', &
+                   'damping >= 0 N s/m')
   end subroutine check_damping
 
   !> The damping_depth rule of a law: > 0 where the law needs a ramp or band (needed = .true.),
   !! otherwise >= 0 (base: 0 means no ramp; laws that do not use it ignore the value).
-  subroutine check_damping_depth(cfg, pre, errors, needed)
-    type(contact_cfg_t), intent(in) :: cfg         !! resolved &contact input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+  subroutine check_damping_depth(b, needed)
+    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
     logical, intent(in) :: needed                  !! the law needs damping_depth > 0 [-]
     if (needed) then
-      call require_real(errors, positive(cfg%damping_depth), pre, 'contact', 'damping_depth', cfg%damping_depth, 'm', &
-                        'damping_depth > 0 m')
+      call b%require(positive(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, 'm', &
+                     'damping_depth > 0 m')
     else
-      call require_real(errors, nonnegative(cfg%damping_depth), pre, 'contact', 'damping_depth', cfg%damping_depth, &
-                        'm', 'damping_depth >= 0 m')
+      call b%require(nonnegative(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, &
+                     'm', 'damping_depth >= 0 m')
     end if
   end subroutine check_damping_depth
 

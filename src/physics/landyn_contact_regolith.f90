@@ -2,10 +2,8 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_regolith
   use landyn_kinds, only: wp
-  use landyn_config, only: contact_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_contact_law, only: contact_law_t, contact_state_t, check_damping, check_damping_depth
-  use landyn_law_checks, only: require_real, positive, nonnegative
+  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, check_damping, check_damping_depth
+  use landyn_law_checks, only: positive, nonnegative
   implicit none
   private
 
@@ -33,25 +31,22 @@ module landyn_contact_regolith
 contains
 
   !> The regolith law from the &contact input.
-  !! Without `law`: only the law-dependent checks (see landyn_contact_law).
-  subroutine build(cfg, pre, errors, law)
-    type(contact_cfg_t), intent(in) :: cfg                            !! resolved &contact input
-    character(len=*), intent(in) :: pre                               !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                     !! problems found are appended here
-    class(contact_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_damping_depth(cfg, pre, errors, needed=.false.)
-    if (.not. present(law)) return
-    call require_real(errors, positive(cfg%soil_stiffness), pre, 'contact', 'soil_stiffness', cfg%soil_stiffness, '', &
-                      'soil_stiffness > 0')
-    call require_real(errors, positive(cfg%soil_exponent), pre, 'contact', 'soil_exponent', cfg%soil_exponent, '', &
-                      'soil_exponent > 0')
-    call require_real(errors, nonnegative(cfg%soil_drag), pre, 'contact', 'soil_drag', cfg%soil_drag, 'kg/m', &
-                      'soil_drag >= 0 kg/m')
-    call require_real(errors, positive(cfg%soil_unload_stiffness), pre, 'contact', 'soil_unload_stiffness', &
-                      cfg%soil_unload_stiffness, 'N/m', 'soil_unload_stiffness > 0 N/m')
-    call check_damping(cfg, pre, errors)
-    allocate (law, source=regolith(cfg%soil_stiffness, cfg%soil_exponent, cfg%soil_drag, cfg%soil_unload_stiffness, &
-                                   cfg%damping))
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.false.)
+    if (b%check_only) return
+    call b%require(positive(b%cfg%soil_stiffness), 'soil_stiffness', b%cfg%soil_stiffness, '', &
+                   'soil_stiffness > 0')
+    call b%require(positive(b%cfg%soil_exponent), 'soil_exponent', b%cfg%soil_exponent, '', &
+                   'soil_exponent > 0')
+    call b%require(nonnegative(b%cfg%soil_drag), 'soil_drag', b%cfg%soil_drag, 'kg/m', &
+                   'soil_drag >= 0 kg/m')
+    call b%require(positive(b%cfg%soil_unload_stiffness), 'soil_unload_stiffness', &
+                   b%cfg%soil_unload_stiffness, 'N/m', 'soil_unload_stiffness > 0 N/m')
+    call check_damping(b)
+    allocate (b%law, source=regolith(b%cfg%soil_stiffness, b%cfg%soil_exponent, b%cfg%soil_drag, b%cfg%soil_unload_stiffness, &
+                                     b%cfg%damping))
   end subroutine build
 
   !> regolith law with the given parameters (undisturbed soil).

@@ -12,7 +12,8 @@ module landyn_friction
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strings, only: lower_case
-  use landyn_friction_law, only: friction_law_t, friction_state_t, adams_step, opposing_force, default_stribeck_speed
+  use landyn_friction_law, only: friction_law_t, friction_build_t, friction_state_t, adams_step, opposing_force, &
+                                 default_stribeck_speed
   ! ---- registered laws (1/3): their modules
   use landyn_friction_coulomb_step, only: coulomb_step_t, coulomb_step, build_coulomb_step => build
   use landyn_friction_coulomb, only: build_ty1, build_ty2, build_ty4
@@ -58,59 +59,62 @@ contains
     class(friction_law_t), allocatable, intent(out) :: law       !! the law
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
-    type(input_errors_t) :: errors
+    type(friction_build_t) :: b
     character(len=name_len) :: key
-    logical :: known
 
     stat = STAT_OK
     errmsg = ''
     key = lower_case(trim(adjustl(cfg%law)))
-    call build_law(key, cfg, '', errors, known, law)
-    if (.not. known) then
-      call errors%add("&friction law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//friction_law_names)
+    b%cfg = cfg
+    b%pre = ''
+    if (.not. built(key, b)) then
+      call b%errors%add("&friction law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//friction_law_names)
     end if
-    if (errors%count() > 0) then
+    if (b%errors%count() > 0) then
       stat = STAT_FAILED
-      errmsg = errors%message(1)
-      if (allocated(law)) deallocate (law)
+      errmsg = b%errors%message(1)
     else
+      call move_alloc(b%law, law)
       law%name = key
     end if
   end subroutine make_friction_law
 
-  !> The law-dependent checks of the &friction input (v_dynamic > v_static for coulomb_step,
-  !! mu_dynamic <= mu_static for ty4-ty6), one message per problem in the input validation's
-  !! format. Nothing for an unknown law name (checked against friction_law_names by the input
-  !! validation).
+  !> The law-dependent checks of the &friction input, one message per problem in the input
+  !! validation's format. Nothing for an unknown law name (the input validation checks the name
+  !! against friction_law_names).
   subroutine check_friction_law_input(cfg, pre, errors)
     type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    logical :: known
-    call build_law(lower_case(trim(adjustl(cfg%law))), cfg, pre, errors, known)
+    type(friction_build_t) :: b
+    integer :: i
+    b%cfg = cfg
+    b%pre = pre
+    b%check_only = .true.
+    if (.not. built(lower_case(trim(adjustl(cfg%law))), b)) return
+    do i = 1, b%errors%count()
+      call errors%add(b%errors%message(i))
+    end do
   end subroutine check_friction_law_input
 
-  !> Calls the builder of the law named key (lower case): the checks, and the law when present.
-  subroutine build_law(key, cfg, pre, errors, known, law)
-    character(len=*), intent(in) :: key                                !! law name, lower case [-]
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    logical, intent(out) :: known                                      !! key is a registered law [-]
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law
+  !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
+  function built(key, b) result(known)
+    character(len=*), intent(in) :: key            !! law name, lower case [-]
+    type(friction_build_t), intent(inout) :: b          !! the build: input, messages, law
+    logical :: known                               !! key is a registered law [-]
     known = .true.
     select case (key)
     ! ---- registered laws (3/3): their builders
-    case ('coulomb_step', 'adams_step'); call build_coulomb_step(cfg, pre, errors, law)
-    case ('ty1'); call build_ty1(cfg, pre, errors, law)
-    case ('ty2'); call build_ty2(cfg, pre, errors, law)
-    case ('ty3'); call build_ty3(cfg, pre, errors, law)
-    case ('ty4'); call build_ty4(cfg, pre, errors, law)
-    case ('ty5'); call build_ty5(cfg, pre, errors, law)
-    case ('ty6'); call build_ty6(cfg, pre, errors, law)
+    case ('coulomb_step', 'adams_step'); call build_coulomb_step(b)
+    case ('ty1'); call build_ty1(b)
+    case ('ty2'); call build_ty2(b)
+    case ('ty3'); call build_ty3(b)
+    case ('ty4'); call build_ty4(b)
+    case ('ty5'); call build_ty5(b)
+    case ('ty6'); call build_ty6(b)
     case default
       known = .false.
     end select
-  end subroutine build_law
+  end function built
 
 end module landyn_friction

@@ -2,9 +2,8 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_coulomb
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_friction_law, only: friction_law_t, viscous_opposing_force, check_common, check_stick, check_stiction_order
+  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, check_common, check_stick, &
+                                 check_stiction_order
   implicit none
   private
 
@@ -24,43 +23,34 @@ module landyn_friction_coulomb
 contains
 
   !> The ty1 law (static Coulomb: mu_s N, sticks up to mu_s N) from the &friction input.
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build_ty1(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    if (.not. present(law)) return
-    call check_common(cfg, pre, errors)
-    call check_stick(cfg, pre, errors)
-    allocate (law, source=coulomb(cfg%mu_static, cfg%mu_static, 0.0_wp, cfg%stick_stiffness, cfg%stick_damping))
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build_ty1(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    if (b%check_only) return
+    call check_common(b)
+    call check_stick(b)
+    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_static, 0.0_wp, b%cfg%stick_stiffness, b%cfg%stick_damping))
   end subroutine build_ty1
 
   !> The ty2 law (Coulomb + viscous: mu_s N + C_v |v|, sticks up to mu_s N) from the &friction input.
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build_ty2(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    if (.not. present(law)) return
-    call check_common(cfg, pre, errors)
-    call check_stick(cfg, pre, errors)
-    allocate (law, source=coulomb(cfg%mu_static, cfg%mu_static, cfg%viscous, cfg%stick_stiffness, cfg%stick_damping))
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build_ty2(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    if (b%check_only) return
+    call check_common(b)
+    call check_stick(b)
+    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_static, b%cfg%viscous, b%cfg%stick_stiffness, b%cfg%stick_damping))
   end subroutine build_ty2
 
   !> The ty4 law (slides with mu_d N, sticks up to mu_s N; mu_dynamic <= mu_static) from the &friction input.
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build_ty4(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call check_stiction_order(cfg, pre, errors)
-    if (.not. present(law)) return
-    call check_common(cfg, pre, errors)
-    call check_stick(cfg, pre, errors)
-    allocate (law, source=coulomb(cfg%mu_static, cfg%mu_dynamic, 0.0_wp, cfg%stick_stiffness, cfg%stick_damping))
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build_ty4(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    call check_stiction_order(b)
+    if (b%check_only) return
+    call check_common(b)
+    call check_stick(b)
+    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_dynamic, 0.0_wp, b%cfg%stick_stiffness, b%cfg%stick_damping))
   end subroutine build_ty4
 
   !> Coulomb law with stiction (name 'ty1'; the factory renames it ty2/ty4).

@@ -2,10 +2,7 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_coulomb_step
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_friction_law, only: friction_law_t, adams_step, opposing_force, check_common
-  use landyn_law_checks, only: require_real
+  use landyn_friction_law, only: friction_law_t, friction_build_t, adams_step, opposing_force, check_common
   use landyn_real_text, only: fmt_real
   implicit none
   private
@@ -31,17 +28,14 @@ module landyn_friction_coulomb_step
 contains
 
   !> The coulomb_step law from the &friction input (v_dynamic > v_static).
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    call require_real(errors, cfg%v_dynamic > cfg%v_static .and. cfg%v_dynamic <= huge(1.0_wp), pre, 'friction', &
-                      'v_dynamic', cfg%v_dynamic, 'm/s', 'v_dynamic > v_static = '//fmt_real(cfg%v_static)//' m/s')
-    if (.not. present(law)) return
-    call check_common(cfg, pre, errors)
-    allocate (law, source=coulomb_step(cfg%mu_static, cfg%mu_dynamic, cfg%v_static, cfg%v_dynamic))
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    call b%require(b%cfg%v_dynamic > b%cfg%v_static .and. b%cfg%v_dynamic <= huge(1.0_wp), &
+                   'v_dynamic', b%cfg%v_dynamic, 'm/s', 'v_dynamic > v_static = '//fmt_real(b%cfg%v_static)//' m/s')
+    if (b%check_only) return
+    call check_common(b)
+    allocate (b%law, source=coulomb_step(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, b%cfg%v_dynamic))
   end subroutine build
 
   !> coulomb_step law with the given parameters (0 < v_static <= v_dynamic expected).

@@ -38,12 +38,13 @@
 !! vanishes at zero slip, so a footpad on a slope creeps at the speed where mu(v) N equals the
 !! downhill load (documented in docs/input/friction.md); they need no state.
 !!
-!! Building from the input. Every law module has a builder build(cfg, pre, errors, law) (ty1,
-!! ty2, ty4 share a module: build_ty1, ...) that appends its law-dependent checks of the
-!! &friction input to `errors` and, when `law` is present, the range checks of the parameters it
-!! uses, and allocates the law (the registry landyn_friction discards it when a check failed).
-!! Without `law` only the law-dependent checks run: that is the input validation
-!! (check_friction_law_input), so deck validation and factory share one rule.
+!! Building from the input. Every law module has a builder `build(b)` (ty1, ty2, ty4 share one
+!! module: build_ty1, ...), b a friction_build_t holding the &friction input, the message prefix
+!! and the messages so far. It appends the law-dependent checks (v_dynamic > v_static, the
+!! stiction order mu_dynamic <= mu_static) and, unless b%check_only, the range checks of the
+!! parameters it uses, and allocates b%law (the registry discards it when a check failed). With
+!! b%check_only that is the input validation (check_friction_law_input), so deck validation and
+!! factory share one rule.
 module landyn_friction_law
   use landyn_kinds, only: wp
   use landyn_config, only: friction_cfg_t, name_len
@@ -54,7 +55,7 @@ module landyn_friction_law
   implicit none
   private
 
-  public :: friction_law_t, friction_state_t
+  public :: friction_law_t, friction_state_t, friction_build_t
   public :: adams_step, opposing_force, viscous_opposing_force, default_stribeck_speed
   public :: check_common, check_stick, check_stribeck, check_stiction_order
 
@@ -104,6 +105,18 @@ module landyn_friction_law
       real(wp) :: mu                             !! max coefficient [-]
     end function max_coefficient_i
   end interface
+
+  !> What a friction law builder works on: the &friction input, the message prefix, the messages so far and
+  !! the law it builds. check_only: run only the law-dependent checks (the input validation).
+  type :: friction_build_t
+    type(friction_cfg_t) :: cfg                        !! resolved &friction input
+    character(len=:), allocatable :: pre          !! message prefix (deck name or '') [-]
+    type(input_errors_t) :: errors                !! problems found so far
+    logical :: check_only = .false.               !! only the law-dependent checks, build nothing [-]
+    class(friction_law_t), allocatable :: law          !! the law built (also when a check failed)
+  contains
+    procedure :: require => friction_require           !! append a message unless a requirement holds
+  end type friction_build_t
 
 contains
 
@@ -225,54 +238,57 @@ contains
     end if
   end function adams_step
 
+  !> Append "&friction: var = x unit is invalid; valid: requirement" unless ok.
+  subroutine friction_require(self, ok, var, x, unit, valid)
+    class(friction_build_t), intent(inout) :: self     !! the build
+    logical, intent(in) :: ok                      !! the requirement holds [-]
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    character(len=*), intent(in) :: valid          !! the requirement [-]
+    call require_real(self%errors, ok, self%pre, 'friction', var, x, unit, valid)
+  end subroutine friction_require
+
   ! ---------------------------------------------------------------- checks of the &friction input
 
   !> Range checks every law makes (mu_static, mu_dynamic, v_static).
-  subroutine check_common(cfg, pre, errors)
-    type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, nonnegative(cfg%mu_static), pre, 'friction', 'mu_static', cfg%mu_static, '', &
-                      'mu_static >= 0')
-    call require_real(errors, nonnegative(cfg%mu_dynamic), pre, 'friction', 'mu_dynamic', cfg%mu_dynamic, '', &
-                      'mu_dynamic >= 0')
-    call require_real(errors, positive(cfg%v_static), pre, 'friction', 'v_static', cfg%v_static, 'm/s', &
-                      'v_static > 0 m/s')
+  subroutine check_common(b)
+    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
+    call b%require(nonnegative(b%cfg%mu_static), 'mu_static', b%cfg%mu_static, '', &
+                   'mu_static >= 0')
+    call b%require(nonnegative(b%cfg%mu_dynamic), 'mu_dynamic', b%cfg%mu_dynamic, '', &
+                   'mu_dynamic >= 0')
+    call b%require(positive(b%cfg%v_static), 'v_static', b%cfg%v_static, 'm/s', &
+                   'v_static > 0 m/s')
   end subroutine check_common
 
   !> Range checks of the stick spring-damper and the viscous term (laws with stiction).
-  subroutine check_stick(cfg, pre, errors)
-    type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, positive(cfg%stick_stiffness), pre, 'friction', 'stick_stiffness', cfg%stick_stiffness, &
-                      'N/m', 'stick_stiffness > 0 N/m')
-    call require_real(errors, nonnegative(cfg%stick_damping), pre, 'friction', 'stick_damping', cfg%stick_damping, &
-                      'N s/m', 'stick_damping >= 0 N s/m')
-    call require_real(errors, nonnegative(cfg%viscous), pre, 'friction', 'viscous', cfg%viscous, 'N s/m', &
-                      'viscous >= 0 N s/m')
+  subroutine check_stick(b)
+    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
+    call b%require(positive(b%cfg%stick_stiffness), 'stick_stiffness', b%cfg%stick_stiffness, &
+                   'N/m', 'stick_stiffness > 0 N/m')
+    call b%require(nonnegative(b%cfg%stick_damping), 'stick_damping', b%cfg%stick_damping, &
+                   'N s/m', 'stick_damping >= 0 N s/m')
+    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
+                   'viscous >= 0 N s/m')
   end subroutine check_stick
 
   !> Range checks of the Stribeck parameters (ty5, ty6; v_s: the resolved Stribeck speed).
-  subroutine check_stribeck(cfg, v_s, pre, errors)
-    type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
+  subroutine check_stribeck(b, v_s)
+    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
     real(wp), intent(in) :: v_s                    !! Stribeck speed, stribeck_speed or the law's default [m/s]
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, positive(v_s), pre, 'friction', 'stribeck_speed', v_s, 'm/s', 'stribeck_speed > 0 m/s')
-    call require_real(errors, positive(cfg%stribeck_exponent), pre, 'friction', 'stribeck_exponent', &
-                      cfg%stribeck_exponent, '', 'stribeck_exponent > 0')
-    call require_real(errors, nonnegative(cfg%stribeck_decay), pre, 'friction', 'stribeck_decay', cfg%stribeck_decay, '', &
-                      'stribeck_decay >= 0')
+    call b%require(positive(v_s), 'stribeck_speed', v_s, 'm/s', 'stribeck_speed > 0 m/s')
+    call b%require(positive(b%cfg%stribeck_exponent), 'stribeck_exponent', &
+                   b%cfg%stribeck_exponent, '', 'stribeck_exponent > 0')
+    call b%require(nonnegative(b%cfg%stribeck_decay), 'stribeck_decay', b%cfg%stribeck_decay, '', &
+                   'stribeck_decay >= 0')
   end subroutine check_stribeck
 
   !> The stiction rule of ty4, ty5, ty6: mu_dynamic <= mu_static.
-  subroutine check_stiction_order(cfg, pre, errors)
-    type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    call require_real(errors, cfg%mu_dynamic <= cfg%mu_static, pre, 'friction', 'mu_dynamic', cfg%mu_dynamic, '', &
-                      'mu_dynamic <= mu_static = '//fmt_real(cfg%mu_static)//' for law '//quote_text(trim(cfg%law))// &
+  subroutine check_stiction_order(b)
+    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
+    call b%require(b%cfg%mu_dynamic <= b%cfg%mu_static, 'mu_dynamic', b%cfg%mu_dynamic, '', &
+                   'mu_dynamic <= mu_static = '//fmt_real(b%cfg%mu_static)//' for law '//quote_text(trim(b%cfg%law))// &
                       ' (stiction)')
   end subroutine check_stiction_order
 

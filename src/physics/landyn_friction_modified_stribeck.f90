@@ -2,12 +2,10 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_modified_stribeck
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t
-  use landyn_errors, only: input_errors_t
   use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, viscous_opposing_force, default_stribeck_speed, check_common, &
-                                 check_stribeck, check_stiction_order
-  use landyn_law_checks, only: require_real, nonnegative
+  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, default_stribeck_speed, &
+                                 check_common, check_stribeck, check_stiction_order
+  use landyn_law_checks, only: nonnegative
   implicit none
   private
 
@@ -34,23 +32,20 @@ module landyn_friction_modified_stribeck
 contains
 
   !> The ty6 law from the &friction input (mu_dynamic <= mu_static).
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
-    call check_stiction_order(cfg, pre, errors)
-    if (.not. present(law)) return
-    v_s = cfg%stribeck_speed
+    call check_stiction_order(b)
+    if (b%check_only) return
+    v_s = b%cfg%stribeck_speed
     if (.not. is_set(v_s)) v_s = default_stribeck_speed('ty6')
-    call check_common(cfg, pre, errors)
-    call check_stribeck(cfg, v_s, pre, errors)
-    call require_real(errors, nonnegative(cfg%viscous), pre, 'friction', 'viscous', cfg%viscous, 'N s/m', &
-                      'viscous >= 0 N s/m')
-    allocate (law, source=modified_stribeck(cfg%mu_static, cfg%mu_dynamic, cfg%v_static, v_s, cfg%stribeck_decay, &
-                                            cfg%stribeck_exponent, cfg%viscous))
+    call check_common(b)
+    call check_stribeck(b, v_s)
+    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
+                   'viscous >= 0 N s/m')
+    allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
+                                              b%cfg%stribeck_exponent, b%cfg%viscous))
   end subroutine build
 
   !> ty6 law with the given parameters.

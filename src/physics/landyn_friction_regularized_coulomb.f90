@@ -2,9 +2,7 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_regularized_coulomb
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t
-  use landyn_errors, only: input_errors_t
-  use landyn_friction_law, only: friction_law_t, opposing_force, check_common
+  use landyn_friction_law, only: friction_law_t, friction_build_t, opposing_force, check_common
   implicit none
   private
 
@@ -23,15 +21,12 @@ module landyn_friction_regularized_coulomb
 contains
 
   !> The ty3 law from the &friction input.
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
-    if (.not. present(law)) return
-    call check_common(cfg, pre, errors)
-    allocate (law, source=regularized_coulomb(cfg%mu_static, cfg%v_static))
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    if (b%check_only) return
+    call check_common(b)
+    allocate (b%law, source=regularized_coulomb(b%cfg%mu_static, b%cfg%v_static))
   end subroutine build
 
   !> ty3 law with the given parameters.

@@ -2,11 +2,9 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_stribeck
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t
-  use landyn_errors, only: input_errors_t
   use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, viscous_opposing_force, default_stribeck_speed, check_common, &
-                                 check_stick, check_stribeck, check_stiction_order
+  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, default_stribeck_speed, &
+                                 check_common, check_stick, check_stribeck, check_stiction_order
   implicit none
   private
 
@@ -29,22 +27,19 @@ module landyn_friction_stribeck
 contains
 
   !> The ty5 law from the &friction input (mu_dynamic <= mu_static).
-  !! Without `law`: only the law-dependent checks (see landyn_friction_law).
-  subroutine build(cfg, pre, errors, law)
-    type(friction_cfg_t), intent(in) :: cfg                            !! resolved &friction input
-    character(len=*), intent(in) :: pre                                !! message prefix [-]
-    type(input_errors_t), intent(inout) :: errors                      !! problems found are appended here
-    class(friction_law_t), allocatable, intent(out), optional :: law   !! the law (also when a check failed)
+  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
+  subroutine build(b)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
-    call check_stiction_order(cfg, pre, errors)
-    if (.not. present(law)) return
-    v_s = cfg%stribeck_speed
+    call check_stiction_order(b)
+    if (b%check_only) return
+    v_s = b%cfg%stribeck_speed
     if (.not. is_set(v_s)) v_s = default_stribeck_speed('ty5')
-    call check_common(cfg, pre, errors)
-    call check_stribeck(cfg, v_s, pre, errors)
-    call check_stick(cfg, pre, errors)
-    allocate (law, source=stribeck(cfg%mu_static, cfg%mu_dynamic, v_s, cfg%stribeck_exponent, cfg%viscous, &
-                                   cfg%stick_stiffness, cfg%stick_damping))
+    call check_common(b)
+    call check_stribeck(b, v_s)
+    call check_stick(b)
+    allocate (b%law, source=stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, v_s, b%cfg%stribeck_exponent, b%cfg%viscous, &
+                                     b%cfg%stick_stiffness, b%cfg%stick_damping))
   end subroutine build
 
   !> ty5 law with the given parameters.
