@@ -1,26 +1,21 @@
 !> The contact law registry: the one place that lists the footpad-ground normal contact laws
 !! (&contact law), their factory and the input checks that depend on the law.
 !!
-!! Adding a law: write landyn_contact_<law>.f90 (a type extending contact_law_t or hertz_spring_t
-!! of landyn_contact_law, pure allocation-free deferred procedures, and a `build` subroutine with
-!! the interface of the others), then register it below: its `use` line, its name in
-!! `registered`, its `case` line in build_law (Fortran has no procedure-valued constants, so the
-!! name list, which must be a constant, and the dispatch are written side by side here).
+!! Adding a law: write landyn_contact_<law>.f90 (a type extending contact_law_t, hertz_spring_t
+!! or damped_hertz_t of landyn_contact_law with pure, allocation-free procedures, and a
+!! `build(b)` subroutine like the other laws'), then register it here: its name in `registered`
+!! (contact_law_names follows from it) and its `case` line in `built`. Fortran has no
+!! procedure-valued constants, so the constant name list and the dispatch are the two lines of a
+!! registration.
 module landyn_contact
   use landyn_config, only: contact_cfg_t, name_len
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_OK
   use landyn_strings, only: lower_case
   use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, advance_contact_state
-  ! ---- registered laws (1/3): their modules
-  use landyn_contact_base, only: base_contact_t, base_contact, build_base => build
-  use landyn_contact_adams_impact, only: build_adams_impact => build
-  use landyn_contact_hertz, only: build_hertz => build
-  use landyn_contact_kelvin_voigt, only: build_kelvin_voigt => build
-  use landyn_contact_kelvin_voigt_step, only: build_kelvin_voigt_step => build
-  use landyn_contact_kelvin_voigt_bilinear, only: build_kelvin_voigt_bilinear => build
-  use landyn_contact_hunt_crossley, only: hunt_crossley_t, hunt_crossley, build_hunt_crossley => build
-  use landyn_contact_regolith, only: regolith_t, regolith, build_regolith => build
+  use landyn_contact_base, only: base_contact_t, base_contact
+  use landyn_contact_hunt_crossley, only: hunt_crossley_t, hunt_crossley
+  use landyn_contact_regolith, only: regolith_t, regolith
   implicit none
   private
 
@@ -28,7 +23,7 @@ module landyn_contact
   public :: base_contact_t, base_contact, hunt_crossley_t, hunt_crossley, regolith_t, regolith
   public :: make_contact_law, check_contact_law_input, contact_law_names
 
-  ! ---- registered laws (2/3): their names, in the order of the documentation
+  ! ---- registered laws (1/2): their names, in the order of the documentation
   character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
     'base', &
     'adams_impact', &
@@ -63,19 +58,15 @@ contains
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(contact_build_t) :: b
     character(len=name_len) :: key
+    logical :: known
 
-    stat = STAT_OK
-    errmsg = ''
     key = lower_case(trim(adjustl(cfg%law)))
+    b%group = 'contact'
     b%cfg = cfg
     b%pre = ''
-    if (.not. built(key, b)) then
-      call b%errors%add("&contact law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//contact_law_names)
-    end if
-    if (b%errors%count() > 0) then
-      stat = STAT_FAILED
-      errmsg = b%errors%message(1)
-    else
+    known = built(key, b)
+    call b%outcome(known, cfg%law, contact_law_names, stat, errmsg)
+    if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = key
     end if
@@ -89,14 +80,11 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(contact_build_t) :: b
-    integer :: i
+    b%group = 'contact'
     b%cfg = cfg
     b%pre = pre
     b%check_only = .true.
-    if (.not. built(lower_case(trim(adjustl(cfg%law))), b)) return
-    do i = 1, b%errors%count()
-      call errors%add(b%errors%message(i))
-    end do
+    if (built(lower_case(trim(adjustl(cfg%law))), b)) call b%pass_on(errors)
   end subroutine check_contact_law_input
 
   !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
@@ -106,15 +94,15 @@ contains
     logical :: known                               !! key is a registered law [-]
     known = .true.
     select case (key)
-    ! ---- registered laws (3/3): their builders
-    case ('base'); call build_base(b)
-    case ('adams_impact'); call build_adams_impact(b)
-    case ('hertz'); call build_hertz(b)
-    case ('kelvin_voigt'); call build_kelvin_voigt(b)
-    case ('kelvin_voigt_step'); call build_kelvin_voigt_step(b)
-    case ('kelvin_voigt_bilinear'); call build_kelvin_voigt_bilinear(b)
-    case ('hunt_crossley'); call build_hunt_crossley(b)
-    case ('regolith'); call build_regolith(b)
+    ! ---- registered laws (2/2): their builders
+    case ('base'); block; use landyn_contact_base, only: build; call build(b); end block
+    case ('adams_impact'); block; use landyn_contact_adams_impact, only: build; call build(b); end block
+    case ('hertz'); block; use landyn_contact_hertz, only: build; call build(b); end block
+    case ('kelvin_voigt'); block; use landyn_contact_kelvin_voigt, only: build; call build(b); end block
+    case ('kelvin_voigt_step'); block; use landyn_contact_kelvin_voigt_step, only: build; call build(b); end block
+    case ('kelvin_voigt_bilinear'); block; use landyn_contact_kelvin_voigt_bilinear, only: build; call build(b); end block
+    case ('hunt_crossley'); block; use landyn_contact_hunt_crossley, only: build; call build(b); end block
+    case ('regolith'); block; use landyn_contact_regolith, only: build; call build(b); end block
     case default
       known = .false.
     end select

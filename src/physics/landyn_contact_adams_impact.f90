@@ -2,7 +2,7 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_adams_impact
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
   use landyn_friction_law, only: adams_step
   implicit none
@@ -11,11 +11,11 @@ module landyn_contact_adams_impact
   public :: adams_impact_t, build
 
   !> MSC Adams IMPACT: F = K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot (cubic damping ramp).
-  type, extends(hertz_spring_t) :: adams_impact_t
+  type, extends(damped_hertz_t) :: adams_impact_t
     real(wp) :: damping = 1.0e4_wp                 !! C, full damping [N s/m]
     real(wp) :: penetration = 1.0e-4_wp            !! d_max: penetration of full damping [m]
   contains
-    procedure :: normal_force => adams_impact_normal_force
+    procedure :: damping_coefficient => adams_impact_damping
   end type adams_impact_t
 
 contains
@@ -32,18 +32,12 @@ contains
                                            damping=b%cfg%damping, penetration=b%cfg%damping_depth))
   end subroutine build
 
-  pure function adams_impact_normal_force(self, delta, delta_dot, state) result(f)
+  !> STEP(delta, 0, 0, d_max, C): the cubic ramp to the full damping at d_max.
+  pure function adams_impact_damping(self, delta) result(c)
     class(adams_impact_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: delta              !! penetration [m]
-    real(wp), intent(in) :: delta_dot          !! penetration rate [m/s]
-    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
-    real(wp) :: f                              !! normal force, >= 0 [N]
-    if (present(state)) f = 0.0_wp   ! the law has no history
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
-    f = self%damped_force(delta, adams_step(delta, 0.0_wp, 0.0_wp, self%penetration, self%damping), delta_dot)
-  end function adams_impact_normal_force
+    real(wp), intent(in) :: delta              !! penetration, > 0 [m]
+    real(wp) :: c                              !! damping coefficient [N s/m]
+    c = adams_step(delta, 0.0_wp, 0.0_wp, self%penetration, self%damping)
+  end function adams_impact_damping
 
 end module landyn_contact_adams_impact

@@ -2,7 +2,7 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_base
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
   implicit none
   private
@@ -11,11 +11,11 @@ module landyn_contact_base
 
   !> Base law of the paper (eq. 18): F_Z = K delta^n + kappa C delta_dot, kappa = min(delta/D1, 1),
   !! F_Z = 0 for delta <= 0, clamped at 0 (never pulls).
-  type, extends(hertz_spring_t) :: base_contact_t
+  type, extends(damped_hertz_t) :: base_contact_t
     real(wp) :: damping = 1.0e4_wp                 !! C_g [N s/m]
     real(wp) :: damping_depth = 1.0e-4_wp          !! D1: penetration at which full damping applies [m]; 0: no ramp
   contains
-    procedure :: normal_force => base_normal_force
+    procedure :: damping_coefficient => base_damping
   end type base_contact_t
 
 contains
@@ -45,25 +45,16 @@ contains
     law%damping_depth = damping_depth
   end function base_contact
 
-  pure function base_normal_force(self, delta, delta_dot, state) result(f)
+  !> kappa C, kappa = min(delta/D1, 1) (D1 = 0: no ramp).
+  pure function base_damping(self, delta) result(c)
     class(base_contact_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: delta              !! penetration, > 0 inside the ground [m]
-    real(wp), intent(in) :: delta_dot          !! penetration rate, > 0 moving deeper [m/s]
-    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
-    real(wp) :: f                              !! normal force, >= 0 [N]
-    real(wp) :: kappa
-    if (present(state)) f = 0.0_wp   ! the law has no history
-
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
+    real(wp), intent(in) :: delta              !! penetration, > 0 [m]
+    real(wp) :: c                              !! damping coefficient [N s/m]
     if (delta < self%damping_depth) then
-      kappa = delta/self%damping_depth
+      c = (delta/self%damping_depth)*self%damping
     else
-      kappa = 1.0_wp
+      c = self%damping
     end if
-    f = self%damped_force(delta, kappa*self%damping, delta_dot)
-  end function base_normal_force
+  end function base_damping
 
 end module landyn_contact_base

@@ -2,7 +2,7 @@
 !! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
                                 check_damping_depth
   implicit none
   private
@@ -10,10 +10,10 @@ module landyn_contact_kelvin_voigt
   public :: kelvin_voigt_t, build
 
   !> Hertz contact + linear damping (Kelvin-Voigt): F = K delta^n + D delta_dot.
-  type, extends(hertz_spring_t) :: kelvin_voigt_t
+  type, extends(damped_hertz_t) :: kelvin_voigt_t
     real(wp) :: damping = 1.0e4_wp                 !! D [N s/m]
   contains
-    procedure :: normal_force => kelvin_voigt_normal_force
+    procedure :: damping_coefficient => kelvin_voigt_damping
   end type kelvin_voigt_t
 
 contains
@@ -30,18 +30,12 @@ contains
                                            damping=b%cfg%damping))
   end subroutine build
 
-  pure function kelvin_voigt_normal_force(self, delta, delta_dot, state) result(f)
+  !> The constant D.
+  pure function kelvin_voigt_damping(self, delta) result(c)
     class(kelvin_voigt_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: delta              !! penetration [m]
-    real(wp), intent(in) :: delta_dot          !! penetration rate [m/s]
-    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by this law)
-    real(wp) :: f                              !! normal force, >= 0 [N]
-    if (present(state)) f = 0.0_wp   ! the law has no history
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
-    f = self%damped_force(delta, self%damping, delta_dot)
-  end function kelvin_voigt_normal_force
+    real(wp), intent(in) :: delta              !! penetration, > 0 (no effect) [m]
+    real(wp) :: c                              !! damping coefficient [N s/m]
+    c = self%damping + 0.0_wp*delta   ! penetration-independent (the product only reads delta)
+  end function kelvin_voigt_damping
 
 end module landyn_contact_kelvin_voigt

@@ -34,12 +34,11 @@
 module landyn_contact_law
   use landyn_kinds, only: wp
   use landyn_config, only: contact_cfg_t, name_len
-  use landyn_errors, only: input_errors_t
-  use landyn_law_checks, only: require_real, positive, nonnegative
+  use landyn_law_checks, only: law_build_t, positive, nonnegative
   implicit none
   private
 
-  public :: contact_law_t, contact_state_t, contact_build_t, hertz_spring_t, advance_contact_state
+  public :: contact_law_t, contact_state_t, contact_build_t, hertz_spring_t, damped_hertz_t, advance_contact_state
   public :: check_hertz_spring, check_damping, check_damping_depth
 
   !> Contact history of one footpad (used by laws with has_history only).
@@ -90,16 +89,11 @@ module landyn_contact_law
     end function elastic_energy_i
   end interface
 
-  !> What a contact law builder works on: the &contact input, the message prefix, the messages so far and
-  !! the law it builds. check_only: run only the law-dependent checks (the input validation).
-  type :: contact_build_t
-    type(contact_cfg_t) :: cfg                        !! resolved &contact input
-    character(len=:), allocatable :: pre          !! message prefix (deck name or '') [-]
-    type(input_errors_t) :: errors                !! problems found so far
-    logical :: check_only = .false.               !! only the law-dependent checks, build nothing [-]
-    class(contact_law_t), allocatable :: law          !! the law built (also when a check failed)
-  contains
-    procedure :: require => contact_require           !! append a message unless a requirement holds
+  !> What a contact law builder works on: the &contact input and the law it builds, besides the
+  !! group, prefix, messages and check_only of law_build_t.
+  type, extends(law_build_t) :: contact_build_t
+    type(contact_cfg_t) :: cfg                    !! resolved &contact input
+    class(contact_law_t), allocatable :: law      !! the law built (also when a check failed)
   end type contact_build_t
 
   !> Laws whose spring part is K delta^n (all but regolith).
@@ -111,6 +105,25 @@ module landyn_contact_law
     procedure :: elastic_energy => hertz_elastic_energy
     procedure :: damped_force
   end type hertz_spring_t
+
+  !> Hertz spring and a linear damper whose coefficient may depend on the penetration:
+  !! F_Z = max(0, K delta^n + c(delta) delta_dot) inside the ground (delta > 0), 0 outside.
+  !! A law of this kind only implements damping_coefficient.
+  type, abstract, extends(hertz_spring_t) :: damped_hertz_t
+  contains
+    procedure(damping_coefficient_i), deferred :: damping_coefficient
+    procedure :: normal_force => damped_hertz_normal_force
+  end type damped_hertz_t
+
+  abstract interface
+    !> The damping coefficient c(delta) at the penetration delta > 0.
+    pure function damping_coefficient_i(self, delta) result(c)
+      import :: damped_hertz_t, wp
+      class(damped_hertz_t), intent(in) :: self  !! the law
+      real(wp), intent(in) :: delta              !! penetration, > 0 [m]
+      real(wp) :: c                              !! damping coefficient [N s/m]
+    end function damping_coefficient_i
+  end interface
 
 contains
 
@@ -182,16 +195,19 @@ contains
     f = max(0.0_wp, self%stiffness*delta**self%exponent + c*delta_dot)
   end function damped_force
 
-  !> Append "&contact: var = x unit is invalid; valid: requirement" unless ok.
-  subroutine contact_require(self, ok, var, x, unit, valid)
-    class(contact_build_t), intent(inout) :: self     !! the build
-    logical, intent(in) :: ok                      !! the requirement holds [-]
-    character(len=*), intent(in) :: var            !! variable name [-]
-    real(wp), intent(in) :: x                      !! its value [unit]
-    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
-    character(len=*), intent(in) :: valid          !! the requirement [-]
-    call require_real(self%errors, ok, self%pre, 'contact', var, x, unit, valid)
-  end subroutine contact_require
+  pure function damped_hertz_normal_force(self, delta, delta_dot, state) result(f)
+    class(damped_hertz_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta              !! penetration, > 0 inside the ground [m]
+    real(wp), intent(in) :: delta_dot          !! penetration rate, > 0 moving deeper [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history (not used by these laws)
+    real(wp) :: f                              !! normal force, >= 0 [N]
+    if (present(state)) f = 0.0_wp   ! the law has no history
+    if (delta <= 0.0_wp) then
+      f = 0.0_wp
+    else
+      f = self%damped_force(delta, self%damping_coefficient(delta), delta_dot)
+    end if
+  end function damped_hertz_normal_force
 
   ! ---------------------------------------------------------------- checks of the &contact input
 

@@ -2,24 +2,19 @@
 !! (&friction law), their factory and the input checks that depend on the law.
 !!
 !! Adding a law: write landyn_friction_<law>.f90 (a type extending friction_law_t of
-!! landyn_friction_law, pure allocation-free deferred procedures, has_stiction and mu_stick if it
-!! sticks, and a `build` subroutine with the interface of the others), then register it below: its
-!! `use` line, its name in `registered`, its `case` line in build_law (Fortran has no
-!! procedure-valued constants, so the name list, which must be a constant, and the dispatch are
-!! written side by side here).
+!! landyn_friction_law with pure, allocation-free procedures, has_stiction and mu_stick if it
+!! sticks, and a `build(b)` subroutine like the other laws'), then register it here: its name in
+!! `registered` (friction_law_names follows from it) and its `case` line in `built`. Fortran has
+!! no procedure-valued constants, so the constant name list and the dispatch are the two lines of
+!! a registration.
 module landyn_friction
   use landyn_config, only: friction_cfg_t, name_len
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_OK
   use landyn_strings, only: lower_case
   use landyn_friction_law, only: friction_law_t, friction_build_t, friction_state_t, adams_step, opposing_force, &
                                  default_stribeck_speed
-  ! ---- registered laws (1/3): their modules
-  use landyn_friction_coulomb_step, only: coulomb_step_t, coulomb_step, build_coulomb_step => build
-  use landyn_friction_coulomb, only: build_ty1, build_ty2, build_ty4
-  use landyn_friction_regularized_coulomb, only: build_ty3 => build
-  use landyn_friction_stribeck, only: build_ty5 => build
-  use landyn_friction_modified_stribeck, only: build_ty6 => build
+  use landyn_friction_coulomb_step, only: coulomb_step_t, coulomb_step
   implicit none
   private
 
@@ -27,7 +22,7 @@ module landyn_friction
   public :: adams_step, opposing_force, default_stribeck_speed
   public :: make_friction_law, check_friction_law_input, friction_law_names
 
-  ! ---- registered laws (2/3): their names, in the order of the documentation
+  ! ---- registered laws (1/2): their names, in the order of the documentation
   character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
     'coulomb_step', &
     'adams_step', &
@@ -61,19 +56,15 @@ contains
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(friction_build_t) :: b
     character(len=name_len) :: key
+    logical :: known
 
-    stat = STAT_OK
-    errmsg = ''
     key = lower_case(trim(adjustl(cfg%law)))
+    b%group = 'friction'
     b%cfg = cfg
     b%pre = ''
-    if (.not. built(key, b)) then
-      call b%errors%add("&friction law = '"//trim(adjustl(cfg%law))//"' is not known; known laws: "//friction_law_names)
-    end if
-    if (b%errors%count() > 0) then
-      stat = STAT_FAILED
-      errmsg = b%errors%message(1)
-    else
+    known = built(key, b)
+    call b%outcome(known, cfg%law, friction_law_names, stat, errmsg)
+    if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = key
     end if
@@ -87,14 +78,11 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(friction_build_t) :: b
-    integer :: i
+    b%group = 'friction'
     b%cfg = cfg
     b%pre = pre
     b%check_only = .true.
-    if (.not. built(lower_case(trim(adjustl(cfg%law))), b)) return
-    do i = 1, b%errors%count()
-      call errors%add(b%errors%message(i))
-    end do
+    if (built(lower_case(trim(adjustl(cfg%law))), b)) call b%pass_on(errors)
   end subroutine check_friction_law_input
 
   !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
@@ -104,14 +92,14 @@ contains
     logical :: known                               !! key is a registered law [-]
     known = .true.
     select case (key)
-    ! ---- registered laws (3/3): their builders
-    case ('coulomb_step', 'adams_step'); call build_coulomb_step(b)
-    case ('ty1'); call build_ty1(b)
-    case ('ty2'); call build_ty2(b)
-    case ('ty3'); call build_ty3(b)
-    case ('ty4'); call build_ty4(b)
-    case ('ty5'); call build_ty5(b)
-    case ('ty6'); call build_ty6(b)
+    ! ---- registered laws (2/2): their builders
+    case ('coulomb_step', 'adams_step'); block; use landyn_friction_coulomb_step, only: build; call build(b); end block
+    case ('ty1'); block; use landyn_friction_coulomb, only: build_ty1; call build_ty1(b); end block
+    case ('ty2'); block; use landyn_friction_coulomb, only: build_ty2; call build_ty2(b); end block
+    case ('ty3'); block; use landyn_friction_regularized_coulomb, only: build; call build(b); end block
+    case ('ty4'); block; use landyn_friction_coulomb, only: build_ty4; call build_ty4(b); end block
+    case ('ty5'); block; use landyn_friction_stribeck, only: build; call build(b); end block
+    case ('ty6'); block; use landyn_friction_modified_stribeck, only: build; call build(b); end block
     case default
       known = .false.
     end select

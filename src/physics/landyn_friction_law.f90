@@ -48,10 +48,9 @@
 module landyn_friction_law
   use landyn_kinds, only: wp
   use landyn_config, only: friction_cfg_t, name_len
-  use landyn_errors, only: input_errors_t
   use landyn_strings, only: quote_text
   use landyn_real_text, only: fmt_real
-  use landyn_law_checks, only: require_real, positive, nonnegative
+  use landyn_law_checks, only: law_build_t, positive, nonnegative
   implicit none
   private
 
@@ -106,16 +105,11 @@ module landyn_friction_law
     end function max_coefficient_i
   end interface
 
-  !> What a friction law builder works on: the &friction input, the message prefix, the messages so far and
-  !! the law it builds. check_only: run only the law-dependent checks (the input validation).
-  type :: friction_build_t
-    type(friction_cfg_t) :: cfg                        !! resolved &friction input
-    character(len=:), allocatable :: pre          !! message prefix (deck name or '') [-]
-    type(input_errors_t) :: errors                !! problems found so far
-    logical :: check_only = .false.               !! only the law-dependent checks, build nothing [-]
-    class(friction_law_t), allocatable :: law          !! the law built (also when a check failed)
-  contains
-    procedure :: require => friction_require           !! append a message unless a requirement holds
+  !> What a friction law builder works on: the &friction input and the law it builds, besides the
+  !! group, prefix, messages and check_only of law_build_t.
+  type, extends(law_build_t) :: friction_build_t
+    type(friction_cfg_t) :: cfg                    !! resolved &friction input
+    class(friction_law_t), allocatable :: law      !! the law built (also when a check failed)
   end type friction_build_t
 
 contains
@@ -237,17 +231,6 @@ contains
       h = h0 + (h1 - h0)*xi*xi*(3.0_wp - 2.0_wp*xi)
     end if
   end function adams_step
-
-  !> Append "&friction: var = x unit is invalid; valid: requirement" unless ok.
-  subroutine friction_require(self, ok, var, x, unit, valid)
-    class(friction_build_t), intent(inout) :: self     !! the build
-    logical, intent(in) :: ok                      !! the requirement holds [-]
-    character(len=*), intent(in) :: var            !! variable name [-]
-    real(wp), intent(in) :: x                      !! its value [unit]
-    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
-    character(len=*), intent(in) :: valid          !! the requirement [-]
-    call require_real(self%errors, ok, self%pre, 'friction', var, x, unit, valid)
-  end subroutine friction_require
 
   ! ---------------------------------------------------------------- checks of the &friction input
 
