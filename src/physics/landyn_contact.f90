@@ -23,16 +23,17 @@ module landyn_contact
   public :: base_contact_t, base_contact, hunt_crossley_t, hunt_crossley, regolith_t, regolith
   public :: make_contact_law, check_contact_law_input, contact_law_names
 
-  ! ---- registered laws (1/2): their names, in the order of the documentation
+  ! ---- registered laws (1/2): their names, in the order of the documentation (one per line)
   character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
-    'base', &
-    'adams_impact', &
-    'hertz', &
-    'kelvin_voigt', &
-    'kelvin_voigt_step', &
-    'kelvin_voigt_bilinear', &
-    'hunt_crossley', &
-    'regolith']
+    'base' &
+    , 'adams_impact' &
+    , 'hertz' &
+    , 'kelvin_voigt' &
+    , 'kelvin_voigt_step' &
+    , 'kelvin_voigt_bilinear' &
+    , 'hunt_crossley' &
+    , 'regolith' &
+    ]
 
   ! contact_law_names = the registered names joined by ', ' (a constant: cells of name + ', ',
   ! keep every non-blank character and the separators, drop the last separator)

@@ -22,16 +22,17 @@ module landyn_friction
   public :: adams_step, opposing_force, default_stribeck_speed
   public :: make_friction_law, check_friction_law_input, friction_law_names
 
-  ! ---- registered laws (1/2): their names, in the order of the documentation
+  ! ---- registered laws (1/2): their names, in the order of the documentation (one per line)
   character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
-    'coulomb_step', &
-    'adams_step', &
-    'ty1', &
-    'ty2', &
-    'ty3', &
-    'ty4', &
-    'ty5', &
-    'ty6']
+    'coulomb_step' &
+    , 'adams_step' &
+    , 'ty1' &
+    , 'ty2' &
+    , 'ty3' &
+    , 'ty4' &
+    , 'ty5' &
+    , 'ty6' &
+    ]
 
   ! friction_law_names = the registered names joined by ', ' (as contact_law_names in landyn_contact)
   integer, parameter :: n_laws = size(registered)
