@@ -33,7 +33,6 @@ module landyn_contact
     , 'kelvin_voigt_bilinear' &
     , 'hunt_crossley' &
     , 'regolith' &
-    , 'linear_spring' &
     ]
 
   ! contact_law_names = the registered names joined by ', ' (a constant: cells of name + ', ',
@@ -105,7 +104,6 @@ contains
     case ('kelvin_voigt_bilinear'); block; use landyn_contact_kelvin_voigt_bilinear, only: build; call build(b); end block
     case ('hunt_crossley'); block; use landyn_contact_hunt_crossley, only: build; call build(b); end block
     case ('regolith'); block; use landyn_contact_regolith, only: build; call build(b); end block
-    case ('linear_spring'); block; use landyn_contact_linear_spring, only: build; call build(b); end block
     case default
       known = .false.
     end select
