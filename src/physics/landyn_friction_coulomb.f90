@@ -2,7 +2,7 @@
 !! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_coulomb
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, check_common, check_stick, &
+  use landyn_friction_law, only: friction_law_t, friction_build_t, check_common, check_stick, &
                                  check_stiction_order
   implicit none
   private
@@ -13,9 +13,7 @@ module landyn_friction_coulomb
   !! to mu_stick N.
   type, extends(friction_law_t) :: coulomb_t
     real(wp) :: mu_slide = 0.4_wp    !! sliding coefficient (mu_s for ty1/ty2, mu_d for ty4) [-]
-    real(wp) :: viscous = 0.0_wp     !! C_v [N s/m]
   contains
-    procedure :: friction_force => coulomb_force
     procedure :: coefficient => coulomb_coefficient
     procedure :: max_coefficient => coulomb_max_coefficient
   end type coulomb_t
@@ -84,13 +82,5 @@ contains
     real(wp) :: mu                        !! max(mu_stick, mu_slide) [-]
     mu = max(self%mu_stick, self%mu_slide)
   end function coulomb_max_coefficient
-
-  pure function coulomb_force(self, v_slip, f_normal) result(f_t)
-    class(coulomb_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: v_slip(2)     !! slip velocity [m/s]
-    real(wp), intent(in) :: f_normal      !! normal force magnitude [N]
-    real(wp) :: f_t(2)                    !! friction force [N]
-    f_t = viscous_opposing_force(self%mu_slide, self%viscous, v_slip, f_normal)
-  end function coulomb_force
 
 end module landyn_friction_coulomb

@@ -55,7 +55,7 @@ module landyn_friction_law
   private
 
   public :: friction_law_t, friction_state_t, friction_build_t
-  public :: adams_step, opposing_force, viscous_opposing_force, default_stribeck_speed
+  public :: adams_step, opposing_force, default_stribeck_speed
   public :: check_common, check_stick, check_stribeck, check_stiction_order
 
   !> Stick state of one footpad (laws with has_stiction only).
@@ -72,23 +72,15 @@ module landyn_friction_law
     real(wp) :: mu_stick = 0.0_wp            !! static coefficient bounding the stick force [-]
     real(wp) :: stick_stiffness = 1.0e8_wp   !! k of the stick spring [N/m]
     real(wp) :: stick_damping = 1.0e5_wp     !! c of the stick damper [N s/m]
+    real(wp) :: viscous = 0.0_wp             !! C_v of the viscous term -C_v v_slip [N s/m]
   contains
-    procedure(friction_force_i), deferred :: friction_force
+    procedure :: friction_force
     procedure(coefficient_i), deferred :: coefficient
     procedure(max_coefficient_i), deferred :: max_coefficient
     procedure :: stick_slip_force
   end type friction_law_t
 
   abstract interface
-    !> Tangential friction force on the slipping footpad, local surface frame (t1, t2).
-    pure function friction_force_i(self, v_slip, f_normal) result(f_t)
-      import :: friction_law_t, wp
-      class(friction_law_t), intent(in) :: self  !! the law
-      real(wp), intent(in) :: v_slip(2)          !! slip velocity of the footpad, local (t1, t2) [m/s]
-      real(wp), intent(in) :: f_normal           !! normal force magnitude [N]
-      real(wp) :: f_t(2)                         !! friction force on the footpad, local (t1, t2) [N]
-    end function friction_force_i
-
     !> Coulomb part of the friction coefficient at slip speed `speed`.
     pure function coefficient_i(self, speed) result(mu)
       import :: friction_law_t, wp
@@ -199,6 +191,17 @@ contains
       f_t = 0.0_wp
     end if
   end function opposing_force
+
+  !> Tangential friction force on the slipping footpad, local surface frame (t1, t2): the
+  !! Coulomb part mu(|v_slip|) N opposing the slip plus the viscous term -C_v v_slip in contact.
+  !! Laws without a viscous term may override it with opposing_force alone.
+  pure function friction_force(self, v_slip, f_normal) result(f_t)
+    class(friction_law_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: v_slip(2)          !! slip velocity of the footpad, local (t1, t2) [m/s]
+    real(wp), intent(in) :: f_normal           !! normal force magnitude [N]
+    real(wp) :: f_t(2)                         !! friction force on the footpad, local (t1, t2) [N]
+    f_t = viscous_opposing_force(self%coefficient(norm2(v_slip)), self%viscous, v_slip, f_normal)
+  end function friction_force
 
   !> opposing_force plus the viscous term -C_v v_slip, which acts only in contact (N > 0).
   pure function viscous_opposing_force(mu, c_v, v_slip, f_normal) result(f_t)

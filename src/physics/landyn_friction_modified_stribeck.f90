@@ -3,7 +3,7 @@
 module landyn_friction_modified_stribeck
   use landyn_kinds, only: wp
   use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, default_stribeck_speed, &
+  use landyn_friction_law, only: friction_law_t, friction_build_t, default_stribeck_speed, &
                                  check_common, check_stribeck, check_stiction_order
   use landyn_law_checks, only: nonnegative
   implicit none
@@ -22,9 +22,7 @@ module landyn_friction_modified_stribeck
     real(wp) :: v_stribeck = 0.1_wp  !! v_S [m/s]
     real(wp) :: eps = 0.85_wp        !! epsilon [-]
     real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
-    real(wp) :: viscous = 100.0_wp   !! C_v [N s/m]
   contains
-    procedure :: friction_force => modified_stribeck_force
     procedure :: coefficient => modified_stribeck_coefficient
     procedure :: max_coefficient => modified_stribeck_max_coefficient
   end type modified_stribeck_t
@@ -88,13 +86,5 @@ contains
     real(wp) :: mu                                  !! max(mu_s, mu_d) [-]
     mu = max(self%mu_static, self%mu_dynamic)
   end function modified_stribeck_max_coefficient
-
-  pure function modified_stribeck_force(self, v_slip, f_normal) result(f_t)
-    class(modified_stribeck_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: v_slip(2)               !! slip velocity [m/s]
-    real(wp), intent(in) :: f_normal                !! normal force magnitude [N]
-    real(wp) :: f_t(2)                              !! friction force [N]
-    f_t = viscous_opposing_force(self%coefficient(norm2(v_slip)), self%viscous, v_slip, f_normal)
-  end function modified_stribeck_force
 
 end module landyn_friction_modified_stribeck

@@ -3,7 +3,7 @@
 module landyn_friction_stribeck
   use landyn_kinds, only: wp
   use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, friction_build_t, viscous_opposing_force, default_stribeck_speed, &
+  use landyn_friction_law, only: friction_law_t, friction_build_t, default_stribeck_speed, &
                                  check_common, check_stick, check_stribeck, check_stiction_order
   implicit none
   private
@@ -17,9 +17,7 @@ module landyn_friction_stribeck
     real(wp) :: mu_dynamic = 0.4_wp  !! F_D / N (Coulomb level) [-]
     real(wp) :: v_stribeck = 1.0_wp  !! v_S [m/s]
     real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
-    real(wp) :: viscous = 100.0_wp   !! C_v [N s/m]
   contains
-    procedure :: friction_force => stribeck_force
     procedure :: coefficient => stribeck_coefficient
     procedure :: max_coefficient => stribeck_max_coefficient
   end type stribeck_t
@@ -78,13 +76,5 @@ contains
     real(wp) :: mu                         !! max(mu_s, mu_d) [-]
     mu = max(self%mu_static, self%mu_dynamic)
   end function stribeck_max_coefficient
-
-  pure function stribeck_force(self, v_slip, f_normal) result(f_t)
-    class(stribeck_t), intent(in) :: self  !! the law
-    real(wp), intent(in) :: v_slip(2)      !! slip velocity [m/s]
-    real(wp), intent(in) :: f_normal       !! normal force magnitude [N]
-    real(wp) :: f_t(2)                     !! friction force [N]
-    f_t = viscous_opposing_force(self%coefficient(norm2(v_slip)), self%viscous, v_slip, f_normal)
-  end function stribeck_force
 
 end module landyn_friction_stribeck
