@@ -91,7 +91,7 @@ contains
   !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
   function built(key, b) result(known)
     character(len=*), intent(in) :: key            !! law name, lower case [-]
-    type(contact_build_t), intent(inout) :: b          !! the build: input, messages, law
+    type(contact_build_t), intent(inout) :: b      !! the build: input, messages, law
     logical :: known                               !! key is a registered law [-]
     known = .true.
     select case (key)
