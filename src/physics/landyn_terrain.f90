@@ -24,6 +24,8 @@
 module landyn_terrain
   use landyn_kinds, only: wp, max_gears, pi
   use landyn_config, only: terrain_cfg_t
+  use landyn_kinematics, only: cross3
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
@@ -63,7 +65,7 @@ contains
     sb = sin(beta)
     n = [-sa*cb, -sa*sb, -ca]
     t1 = [ca*cb, ca*sb, -sa]
-    t2 = cross(n, t1)   ! = (sb, -cb, 0): horizontal, to the right of the uphill direction seen from above
+    t2 = cross3(n, t1)   ! = (sb, -cb, 0): horizontal, to the right of the uphill direction seen from above
     plane%height = h
     plane%slope = alpha
     plane%azimuth = beta
@@ -75,20 +77,20 @@ contains
   end function terrain_plane
 
   !> Build planes(i) from entry i of the &terrain input, for i = 1..size(planes).
-  !! Fails (stat /= 0) when size(planes) exceeds max_gears or a slope is not in (-90, 90) deg
+  !! Fails (stat = STAT_FAILED) when size(planes) exceeds max_gears or a slope is not in (-90, 90) deg
   !! or an entry is not finite.
   pure subroutine make_terrain_planes(cfg, planes, stat, errmsg)
     type(terrain_cfg_t), intent(in) :: cfg                 !! resolved &terrain input (angles in rad, heights in m)
     type(terrain_plane_t), intent(out) :: planes(:)        !! one plane per footpad
-    integer, intent(out) :: stat                           !! 0 on success
+    integer, intent(out) :: stat                           !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                !! reason of a failure, '' on success
     integer :: i
     character(len=16) :: buf
 
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
     if (size(planes) > max_gears) then
-      stat = 1
+      stat = STAT_FAILED
       write (buf, '(i0)') max_gears
       errmsg = '&terrain: more footpads than max_gears = '//trim(buf)
       return
@@ -96,12 +98,12 @@ contains
     do i = 1, size(planes)
       write (buf, '(i0)') i
       if (.not. is_finite(cfg%height(i)) .or. .not. is_finite(cfg%slope_direction(i))) then
-        stat = 1
+        stat = STAT_FAILED
         errmsg = '&terrain: height or slope_direction of footpad '//trim(buf)//' is not a finite number'
         return
       end if
       if (.not. (abs(cfg%slope(i)) < 0.5_wp*pi)) then
-        stat = 1
+        stat = STAT_FAILED
         errmsg = '&terrain: slope of footpad '//trim(buf)//' must lie strictly between -90 and 90 deg'
         return
       end if
@@ -172,13 +174,6 @@ contains
     real(wp) :: v(3)                            !! same vector, global frame [same unit]
     v = matmul(plane%frame, w)
   end function to_global
-
-  pure function cross(a, b) result(c)
-    real(wp), intent(in) :: a(3)  !! first factor [-]
-    real(wp), intent(in) :: b(3)  !! second factor [-]
-    real(wp) :: c(3)              !! a x b [-]
-    c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-  end function cross
 
   elemental function is_finite(x) result(yes)
     real(wp), intent(in) :: x  !! value [any unit]

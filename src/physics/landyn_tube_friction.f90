@@ -22,6 +22,7 @@
 module landyn_tube_friction
   use landyn_kinds, only: wp, pi
   use landyn_buffer, only: rigid_force
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
@@ -39,7 +40,7 @@ module landyn_tube_friction
 
 contains
 
-  !> Tube friction from the input lengths. stat /= 0 when the tubes do not overlap or a value is invalid.
+  !> Tube friction from the input lengths. stat = STAT_FAILED when the tubes do not overlap or a value is invalid.
   pure subroutine make_tube_friction(on, mu, l_outer, l_inner, l_leg, l_lever, tf, stat, errmsg)
     logical, intent(in) :: on                   !! apply tube friction [-]
     real(wp), intent(in) :: mu                  !! u_1 [-]
@@ -48,20 +49,20 @@ contains
     real(wp), intent(in) :: l_leg               !! L_L, primary length (upper joint to footpad joint) [m]
     real(wp), intent(in) :: l_lever             !! L_O1, lever arm of the lateral load [m]
     type(tube_friction_t), intent(out) :: tf    !! tube friction
-    integer, intent(out) :: stat                !! 0 on success
+    integer, intent(out) :: stat                !! STAT_OK on success
     character(len=*), intent(out) :: errmsg     !! reason of a failure, '' on success
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
     tf%on = on
     if (.not. on) return
     if (.not. (mu >= 0.0_wp .and. mu <= huge(1.0_wp))) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = '&primary_strut mu_tube must be a finite number >= 0'
     else if (.not. (l_outer > 0.0_wp .and. l_inner > 0.0_wp .and. l_leg > 0.0_wp .and. l_lever >= 0.0_wp)) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = '&primary_strut tube lengths must be > 0 (tube_lever >= 0)'
     else if (.not. (l_inner + l_outer - l_leg > 0.0_wp)) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = '&primary_strut the tubes do not overlap: tube_outer_length + tube_inner_length <= tube_leg_length'
     else
       tf%mu = mu

@@ -1,0 +1,39 @@
+!> Hertz contact (Table 4): K delta^n.
+!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
+module landyn_contact_hertz
+  use landyn_kinds, only: wp
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, &
+                                check_damping_depth
+  implicit none
+  private
+
+  public :: hertz_contact_t, build
+
+  !> Hertz contact: F = K delta^n (Table 4).
+  type, extends(hertz_spring_t) :: hertz_contact_t
+  contains
+    procedure :: normal_force => hertz_normal_force
+  end type hertz_contact_t
+
+contains
+
+  !> The hertz law from the &contact input.
+  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
+  subroutine build(b)
+    type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
+    call check_damping_depth(b, needed=.false.)
+    if (b%check_only) return
+    call check_hertz_spring(b)
+    allocate (b%law, source=hertz_contact_t(name='hertz', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent))
+  end subroutine build
+
+  pure function hertz_normal_force(self, delta, delta_dot, state) result(f)
+    class(hertz_contact_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta               !! penetration [m]
+    real(wp), intent(in) :: delta_dot           !! penetration rate (no effect) [m/s]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
+    real(wp) :: f                               !! K delta^n [N]
+    f = self%spring_force(delta, state) + 0.0_wp*delta_dot   ! rate-independent (the product only reads delta_dot)
+  end function hertz_normal_force
+
+end module landyn_contact_hertz

@@ -1,0 +1,102 @@
+!> Parameter checks shared by the contact and friction law modules. Every problem is one message
+!! in the format of the input validation,
+!!   pre//'&'//group//': '//var//' = '//value//' is invalid; valid: '//requirement
+!! appended to an error collector, so the law factories and the input validation report alike.
+module landyn_law_checks
+  use landyn_kinds, only: wp
+  use landyn_errors, only: input_errors_t
+  use landyn_real_text, only: fmt_real
+  use landyn_status, only: STAT_OK, STAT_FAILED
+  implicit none
+  private
+
+  public :: law_build_t, positive, nonnegative
+
+  !> What a law builder works on besides the input and the law (extended by contact_build_t and
+  !! friction_build_t): the namelist group, the message prefix, the messages so far, and whether
+  !! only the law-dependent checks run (the input validation) or the law is built (the factory).
+  type :: law_build_t
+    character(len=16) :: group = ''                 !! namelist group without '&': 'contact', 'friction' [-]
+    character(len=:), allocatable :: pre            !! message prefix (deck name or '') [-]
+    type(input_errors_t) :: errors                  !! problems found so far
+    logical :: check_only = .false.                 !! only the law-dependent checks, build nothing [-]
+  contains
+    procedure :: require => build_require           !! append a message unless a requirement holds
+    procedure :: outcome => build_outcome           !! the factory's stat and errmsg
+    procedure :: pass_on => build_pass_on           !! append the messages to another collector
+  end type law_build_t
+
+contains
+
+  !> Append "&group: var = x unit is invalid; valid: requirement" unless ok.
+  subroutine require_real(errors, ok, pre, group, var, x, unit, valid)
+    type(input_errors_t), intent(inout) :: errors  !! error list
+    logical, intent(in) :: ok                      !! the requirement holds [-]
+    character(len=*), intent(in) :: pre            !! message prefix (deck name or '') [-]
+    character(len=*), intent(in) :: group          !! namelist group without '&' [-]
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    character(len=*), intent(in) :: valid          !! the requirement, e.g. 'damping >= 0 N s/m' [-]
+    character(len=:), allocatable :: value
+    if (ok) return
+    value = fmt_real(x)
+    if (len(unit) > 0) value = value//' '//unit
+    call errors%add(pre//'&'//group//': '//var//' = '//value//' is invalid; valid: '//valid)
+  end subroutine require_real
+
+  !> Append "&group: var = x unit is invalid; valid: requirement" unless ok.
+  subroutine build_require(self, ok, var, x, unit, valid)
+    class(law_build_t), intent(inout) :: self      !! the build
+    logical, intent(in) :: ok                      !! the requirement holds [-]
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    character(len=*), intent(in) :: valid          !! the requirement [-]
+    call require_real(self%errors, ok, self%pre, trim(self%group), var, x, unit, valid)
+  end subroutine build_require
+
+  !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown law name
+  !! first adds "&group law = 'name' is not known; known laws: names").
+  subroutine build_outcome(self, known, law, names, stat, errmsg)
+    class(law_build_t), intent(inout) :: self      !! the build
+    logical, intent(in) :: known                   !! the law name is registered [-]
+    character(len=*), intent(in) :: law           !! law name as given [-]
+    character(len=*), intent(in) :: names          !! the registered names, for the message [-]
+    integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
+    character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
+    if (.not. known) call self%errors%add('&'//trim(self%group)//" law = '"//trim(adjustl(law))// &
+                                          "' is not known; known laws: "//names)
+    stat = STAT_OK
+    errmsg = ''
+    if (self%errors%count() > 0) then
+      stat = STAT_FAILED
+      errmsg = self%errors%message(1)
+    end if
+  end subroutine build_outcome
+
+  !> Append the build's messages to errors.
+  subroutine build_pass_on(self, errors)
+    class(law_build_t), intent(in) :: self         !! the build
+    type(input_errors_t), intent(inout) :: errors  !! receives the messages
+    integer :: i
+    do i = 1, self%errors%count()
+      call errors%add(self%errors%message(i))
+    end do
+  end subroutine build_pass_on
+
+  !> x is a finite number > 0.
+  elemental function positive(x) result(ok)
+    real(wp), intent(in) :: x  !! value [any unit]
+    logical :: ok              !! 0 < x <= huge [-]
+    ok = x > 0.0_wp .and. x <= huge(1.0_wp)
+  end function positive
+
+  !> x is a finite number >= 0.
+  elemental function nonnegative(x) result(ok)
+    real(wp), intent(in) :: x  !! value [any unit]
+    logical :: ok              !! 0 <= x <= huge [-]
+    ok = x >= 0.0_wp .and. x <= huge(1.0_wp)
+  end function nonnegative
+
+end module landyn_law_checks
