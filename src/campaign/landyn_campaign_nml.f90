@@ -26,7 +26,7 @@ module landyn_campaign_nml
 
   public :: nml_item_t, nml_group_t, split_namelist
   public :: lower_case, int_text, real_text, real_text_short, edit_distance, is_blank_char, one_line_text
-  public :: quote_text, close_name_hint, dir_of, join_path, base_name_no_ext
+  public :: quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, hint_and_list, name_list, ints_text
 
   !> One `name = value` item of a group.
   type :: nml_item_t
@@ -277,5 +277,41 @@ contains
     p = index(s, '.', back=.true.)
     if (p > 1) s = s(1:p - 1)
   end function base_name_no_ext
+
+  ! ================================================================ lists in messages
+
+  !> "; did you mean 'x'? (valid: a, b)" or "; valid: a, b".
+  pure function hint_and_list(hint, list) result(s)
+    character(len=*), intent(in) :: hint  !! '' or "; did you mean 'x'?" [-]
+    character(len=*), intent(in) :: list  !! valid names [-]
+    character(len=:), allocatable :: s    !! message tail [-]
+    if (len(hint) > 0) then
+      s = hint//' (valid: '//list//')'
+    else
+      s = '; valid: '//list
+    end if
+  end function hint_and_list
+
+  pure function name_list(vars) result(s)
+    character(len=*), intent(in) :: vars(:)  !! names [-]
+    character(len=:), allocatable :: s       !! 'a, b, c' [-]
+    integer :: i
+    s = ''
+    do i = 1, size(vars)
+      if (i > 1) s = s//', '
+      s = s//trim(vars(i))
+    end do
+  end function name_list
+
+  pure function ints_text(v) result(s)
+    integer, intent(in) :: v(:)         !! values [-]
+    character(len=:), allocatable :: s  !! 'a, b, c' [-]
+    integer :: i
+    s = ''
+    do i = 1, size(v)
+      if (i > 1) s = s//', '
+      s = s//int_text(v(i))
+    end do
+  end function ints_text
 
 end module landyn_campaign_nml
