@@ -6,18 +6,13 @@
 !! Library code: nothing here stops or prints.
 module landyn_campaign_case_deck
   use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, max_gears
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
-  use landyn_config, only: landyn_input_t, default_input, unset_real, is_set, max_stages, path_len
-  use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
-  use landyn_namelist_text, only: has_nonfinite_word, numbers_within
-  use landyn_files, only: read_whole_file
-  use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, real_text, &
-                                 real_text_short, quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, &
-                                 hint_and_list, name_list, ints_text
+  use landyn_kinds, only: wp
+  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_config, only: landyn_input_t, is_set
+  use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input
+  use landyn_campaign_nml, only: lower_case, int_text, real_text, real_text_short
   use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
-  use landyn_campaign_types
+  use landyn_campaign_types, only: campaign_t, param_t, max_normal_tries
   implicit none
   private
 
@@ -81,7 +76,7 @@ contains
     character(len=:), allocatable, intent(out) :: errmsg  !! problem [-]
     integer :: j, r, i
     real(wp) :: u, a, b
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
     select case (camp%mode)
     case ('grid')
@@ -104,7 +99,7 @@ contains
             if (is_set(p%lo)) a = p%lo
             if (is_set(p%hi)) b = p%hi
             call case_truncated_normal(camp%seed, id, j, p%mean, p%sd, a, b, max_normal_tries, values(j), stat)
-            if (stat /= 0) then
+            if (stat /= STAT_OK) then
               errmsg = 'no normal sample of '//p%name//' fell inside lo .. hi in '//int_text(max_normal_tries)//' tries'
               return
             end if
@@ -181,7 +176,7 @@ contains
   end function override_item
 
   !> The resolved, validated input of case `id` with values `values`, read through the run-deck
-  !! reader. stat = 0 ready, 1 invalid (messages in `errors`).
+  !! reader. stat = STAT_OK ready, STAT_FAILED invalid (messages in `errors`).
   subroutine case_input(camp, id, values, inp, errors, stat)
     type(campaign_t), intent(in) :: camp           !! campaign [-]
     integer, intent(in) :: id                      !! case id [-]
@@ -200,7 +195,7 @@ contains
     if (errors%count() == n0 .and. inp%gears%n_gears /= camp%n_gears) &
       call errors%add('case '//int_text(id)//': n_gears = '//int_text(inp%gears%n_gears)// &
                       ' differs from the base deck''s '//int_text(camp%n_gears))
-    stat = merge(0, 1, errors%count() == n0)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   end subroutine case_input
 
   !> One-line description of how a parameter is varied, e.g. "uniform(0, 2)".

@@ -20,22 +20,21 @@
 !! landyn_campaign_attach (base deck, case list, final checks), landyn_campaign_case_deck (case values,
 !! case decks, case inputs). This module reads the deck and is the campaign layer's entry point.
 module landyn_campaign_deck
-  use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, max_gears
+  use landyn_kinds, only: wp
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
-  use landyn_config, only: landyn_input_t, default_input, unset_real, is_set, max_stages, path_len
-  use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
-  use landyn_namelist_text, only: has_nonfinite_word, numbers_within
+  use landyn_input, only: input_errors_t
   use landyn_files, only: read_whole_file
-  use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, real_text, &
-                                 real_text_short, quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, &
-                                 hint_and_list, name_list, ints_text
-  use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
-  use landyn_campaign_types
+  use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, &
+                                 real_text_short, quote_text, close_name_hint, dir_of, join_path, &
+                                 base_name_no_ext, hint_and_list, name_list
+  use landyn_campaign_types, only: campaign_t, param_t, criteria_t, raw_campaign_t, raw_parameter_t, &
+                                   raw_criteria_t, max_values, max_saved, max_body_points, max_params, &
+                                   label_len, max_cases
   use landyn_campaign_params, only: make_param, make_criteria
   use landyn_campaign_attach, only: attach_base_deck, attach_list, finish_campaign
-  use landyn_campaign_case_deck, only: case_values, case_deck_text, case_input, param_description, text_fingerprint
+  use landyn_campaign_case_deck, only: case_values, case_deck_text, case_input, param_description, &
+                                       text_fingerprint
   use landyn_campaign_target, only: run_variable_table, default_deck_variables
   implicit none
   private
@@ -69,7 +68,8 @@ contains
   ! ================================================================ loading
 
   !> Read a campaign deck and the files it names (base deck, case list) and build the campaign.
-  !! stat = 0 ready, 1 problems in the decks (all in `errors`), 2 the campaign deck is unreadable.
+  !! stat = STAT_OK (0) ready, STAT_FAILED (1) problems in the decks (all in `errors`), STAT_INPUT (2) the
+  !! campaign deck is unreadable.
   subroutine load_campaign(path, camp, errors, stat)
     character(len=*), intent(in) :: path           !! campaign deck file [-]
     type(campaign_t), intent(out) :: camp          !! the campaign [-]
@@ -82,10 +82,10 @@ contains
     integer :: st, n0
 
     n0 = errors%count()
-    call read_text_file(path, text, st, msg)
-    if (st /= 0) then
+    call read_whole_file(path, text, st, msg)
+    if (st /= STAT_OK) then
       call errors%add(path//': cannot read the campaign deck: '//msg)
-      stat = 2
+      stat = STAT_INPUT
       return
     end if
     ! first pass: only to learn the file names (its messages come again in build_campaign)
@@ -93,23 +93,23 @@ contains
     base_text = ''
     list_text = ''
     if (len_trim(rc%base_deck) > 0) then
-      call read_text_file(join_path(dir_of(path), rc%base_deck), base_text, st, msg)
-      if (st /= 0) then
+      call read_whole_file(join_path(dir_of(path), rc%base_deck), base_text, st, msg)
+      if (st /= STAT_OK) then
         call errors%add(path//': &campaign: base_deck = '//quote_text(trim(rc%base_deck))//': cannot read '// &
                         quote_text(join_path(dir_of(path), rc%base_deck))//': '//msg)
         base_text = ''
       end if
     end if
     if (len_trim(rc%list_file) > 0) then
-      call read_text_file(join_path(dir_of(path), rc%list_file), list_text, st, msg)
-      if (st /= 0) then
+      call read_whole_file(join_path(dir_of(path), rc%list_file), list_text, st, msg)
+      if (st /= STAT_OK) then
         call errors%add(path//': &campaign: list_file = '//quote_text(trim(rc%list_file))//': cannot read '// &
                         quote_text(join_path(dir_of(path), rc%list_file))//': '//msg)
         list_text = ''
       end if
     end if
     call build_campaign(path, text, base_text, list_text, camp, errors, st)
-    stat = merge(0, 1, errors%count() == n0)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   end subroutine load_campaign
 
   !> With a summary file given on the command line (-o), the time-history files follow it
@@ -124,7 +124,7 @@ contains
   end subroutine use_summary_file
 
   !> Build a campaign from the texts of its deck, base deck and case list ('' when absent).
-  !! stat = 0 ready, 1 problems found (appended to `errors`).
+  !! stat = STAT_OK ready, STAT_FAILED problems found (appended to `errors`).
   subroutine build_campaign(deck_name, deck_text, base_text, list_text, camp, errors, stat)
     character(len=*), intent(in) :: deck_name      !! campaign deck path [-]
     character(len=*), intent(in) :: deck_text      !! campaign deck text [-]
@@ -143,17 +143,8 @@ contains
     if (len_trim(rc%base_deck) > 0) call attach_base_deck(camp, errors)
     if (camp%mode == 'list' .and. len_trim(rc%list_file) > 0) call attach_list(camp, errors)
     if (errors%count() == n0) call finish_campaign(camp, rc, errors)
-    stat = merge(0, 1, errors%count() == n0)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   end subroutine build_campaign
-
-  !> Whole file as one string.
-  subroutine read_text_file(path, text, stat, msg)
-    character(len=*), intent(in) :: path                 !! file name [-]
-    character(len=:), allocatable, intent(out) :: text   !! contents [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=:), allocatable, intent(out) :: msg    !! reason on failure [-]
-    call read_whole_file(path, text, stat, msg)
-  end subroutine read_text_file
 
   pure function strip_h5(path) result(s)
     character(len=*), intent(in) :: path  !! file name [-]
@@ -305,52 +296,10 @@ contains
     character(len=*), intent(in) :: deck_name      !! deck path [-]
     type(raw_campaign_t), intent(inout) :: rc      !! values read [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    character(len=256) :: msg
-    character(len=:), allocatable :: buffer
-    integer :: k, ios, iv
     character(len=20), allocatable :: given(:)
-    character(len=256) :: title
-    character(len=path_len) :: base_deck, summary_file, history_prefix, list_file
-    character(len=32) :: mode
-    integer :: n_samples, save_histories(max_saved)
-    integer(int64) :: seed
-    real(wp) :: checkpoint_interval
-    namelist /campaign/ title, base_deck, mode, n_samples, seed, summary_file, history_prefix, save_histories, &
-      list_file, checkpoint_interval
-    allocate (given(0))
-    do k = 1, g%n_items
-      associate (it => g%items(k))
-        iv = check_item(it, 'campaign', campaign_vars, campaign_takes, deck_name, given, errors)
-        if (iv == 0) cycle
-        title = rc%title
-        base_deck = rc%base_deck
-        mode = rc%mode
-        n_samples = rc%n_samples
-        seed = rc%seed
-        summary_file = rc%summary_file
-        history_prefix = rc%history_prefix
-        save_histories = rc%save_histories
-        list_file = rc%list_file
-        checkpoint_interval = rc%checkpoint_interval
-        msg = ''
-        buffer = '&campaign '//it%lhs//' = '//it%value//' /'
-        read (buffer, nml=campaign, iostat=ios, iomsg=msg)
-        if (ios /= 0) then
-          call read_error(deck_name, it, 'campaign', campaign_takes(iv), msg, errors)
-          cycle
-        end if
-        rc%title = title
-        rc%base_deck = base_deck
-        rc%mode = mode
-        rc%n_samples = n_samples
-        rc%seed = seed
-        rc%summary_file = summary_file
-        rc%history_prefix = history_prefix
-        rc%save_histories = save_histories
-        rc%list_file = list_file
-        rc%checkpoint_interval = checkpoint_interval
-      end associate
-    end do
+    type(raw_parameter_t) :: rp_unused
+    type(raw_criteria_t) :: rcr_unused
+    call read_items(g, deck_name, campaign_vars, campaign_takes, given, errors, rc, rp_unused, rcr_unused)
   end subroutine read_campaign_group
 
   !> Items of one &parameter, each read on its own; `given` lists the variables given.
@@ -360,59 +309,9 @@ contains
     type(raw_parameter_t), intent(inout) :: rp              !! values read [-]
     character(len=20), allocatable, intent(out) :: given(:) !! variables given [-]
     type(input_errors_t), intent(inout) :: errors           !! problems are appended here [-]
-    character(len=256) :: msg
-    character(len=:), allocatable :: buffer
-    integer :: k, ios, iv
-    character(len=name_len) :: name
-    character(len=label_len) :: label
-    real(wp) :: values(max_values), start, stop, lo, hi, mean, sd, weights(max_values)
-    integer :: count
-    character(len=32) :: distribution
-    namelist /parameter/ name, label, values, start, stop, count, distribution, lo, hi, mean, sd, weights
-    allocate (given(0))
-    do k = 1, g%n_items
-      associate (it => g%items(k))
-        iv = check_item(it, 'parameter', parameter_vars, parameter_takes, deck_name, given, errors)
-        if (iv == 0) cycle
-        name = rp%name
-        label = rp%label
-        values = rp%values
-        start = rp%start
-        stop = rp%stop
-        count = rp%count
-        distribution = rp%distribution
-        lo = rp%lo
-        hi = rp%hi
-        mean = rp%mean
-        sd = rp%sd
-        weights = rp%weights
-        msg = ''
-        buffer = '&parameter '//it%lhs//' = '//it%value//' /'
-        read (buffer, nml=parameter, iostat=ios, iomsg=msg)
-        if (ios == 0) then
-          if (.not. all(ieee_is_finite([values, start, stop, lo, hi, mean, sd, weights]))) then
-            ios = -1
-            msg = 'not a finite number'
-          end if
-        end if
-        if (ios /= 0) then
-          call read_error(deck_name, it, 'parameter', parameter_takes(iv), msg, errors)
-          cycle
-        end if
-        rp%name = name
-        rp%label = label
-        rp%values = values
-        rp%start = start
-        rp%stop = stop
-        rp%count = count
-        rp%distribution = distribution
-        rp%lo = lo
-        rp%hi = hi
-        rp%mean = mean
-        rp%sd = sd
-        rp%weights = weights
-      end associate
-    end do
+    type(raw_campaign_t) :: rc_unused
+    type(raw_criteria_t) :: rcr_unused
+    call read_items(g, deck_name, parameter_vars, parameter_takes, given, errors, rc_unused, rp, rcr_unused)
   end subroutine read_parameter_group
 
   !> Items of &criteria, each read on its own.
@@ -421,47 +320,73 @@ contains
     character(len=*), intent(in) :: deck_name      !! deck path [-]
     type(raw_criteria_t), intent(inout) :: rcr     !! values read [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    character(len=256) :: msg
-    character(len=:), allocatable :: buffer
     character(len=20), allocatable :: given(:)
-    integer :: k, ios, iv
-    real(wp) :: min_stroke_margin, max_overload, min_body_clearance, body_point(3, max_body_points)
-    logical :: require_at_rest
-    character(len=32) :: failed_runs
-    namelist /criteria/ min_stroke_margin, max_overload, min_body_clearance, body_point, require_at_rest, failed_runs
+    type(raw_campaign_t) :: rc_unused
+    type(raw_parameter_t) :: rp_unused
+    call read_items(g, deck_name, criteria_vars, criteria_takes, given, errors, rc_unused, rp_unused, rcr)
+  end subroutine read_criteria_group
+
+  !> Read every item of group g (&campaign, &parameter or &criteria) on its own into the group's
+  !! raw record: the item is read as a one-item namelist record naming the record's component
+  !! (`<group>_%<item>`), so subscripts and repeat counts keep their namelist meaning; a record
+  !! is changed only by an item read without error, with finite values.
+  subroutine read_items(g, deck_name, vars, takes, given, errors, campaign_, parameter_, criteria_)
+    type(nml_group_t), intent(in) :: g                      !! the group [-]
+    character(len=*), intent(in) :: deck_name               !! deck path [-]
+    character(len=*), intent(in) :: vars(:)                 !! the group's variables [-]
+    character(len=*), intent(in) :: takes(:)                !! what each takes [-]
+    character(len=20), allocatable, intent(out) :: given(:) !! variables given [-]
+    type(input_errors_t), intent(inout) :: errors           !! problems are appended here [-]
+    type(raw_campaign_t), intent(inout) :: campaign_        !! &campaign values [-]
+    type(raw_parameter_t), intent(inout) :: parameter_      !! &parameter values [-]
+    type(raw_criteria_t), intent(inout) :: criteria_        !! &criteria values [-]
+    type(raw_campaign_t) :: c0
+    type(raw_parameter_t) :: p0
+    type(raw_criteria_t) :: r0
+    character(len=256) :: msg
+    character(len=:), allocatable :: buffer, prefix
+    integer :: k, ios, iv, p
+    namelist /campaign/ campaign_
+    namelist /parameter/ parameter_
+    namelist /criteria/ criteria_
     allocate (given(0))
+    buffer = ''
+    prefix = g%name//'_%'
     do k = 1, g%n_items
       associate (it => g%items(k))
-        iv = check_item(it, 'criteria', criteria_vars, criteria_takes, deck_name, given, errors)
+        iv = check_item(it, g%name, vars, takes, deck_name, given, errors)
         if (iv == 0) cycle
-        min_stroke_margin = rcr%min_stroke_margin
-        max_overload = rcr%max_overload
-        min_body_clearance = rcr%min_body_clearance
-        body_point = rcr%body_point
-        require_at_rest = rcr%require_at_rest
-        failed_runs = rcr%failed_runs
+        c0 = campaign_
+        p0 = parameter_
+        r0 = criteria_
         msg = ''
-        buffer = '&criteria '//it%lhs//' = '//it%value//' /'
-        read (buffer, nml=criteria, iostat=ios, iomsg=msg)
-        if (ios == 0) then
-          if (.not. all(ieee_is_finite([min_stroke_margin, max_overload, min_body_clearance, body_point]))) then
-            ios = -1
-            msg = 'not a finite number'
-          end if
-        end if
-        if (ios /= 0) then
-          call read_error(deck_name, it, 'criteria', criteria_takes(iv), msg, errors)
-          cycle
-        end if
-        rcr%min_stroke_margin = min_stroke_margin
-        rcr%max_overload = max_overload
-        rcr%min_body_clearance = min_body_clearance
-        rcr%body_point = body_point
-        rcr%require_at_rest = require_at_rest
-        rcr%failed_runs = failed_runs
+        buffer = '&'//g%name//' '//prefix//it%lhs//' = '//it%value//' /'
+        select case (g%name)
+        case ('campaign')
+          read (buffer, nml=campaign, iostat=ios, iomsg=msg)
+        case ('parameter')
+          read (buffer, nml=parameter, iostat=ios, iomsg=msg)
+          if (ios == 0 .and. .not. all(ieee_is_finite([parameter_%values, parameter_%start, parameter_%stop, &
+              parameter_%lo, parameter_%hi, parameter_%mean, parameter_%sd, parameter_%weights]))) ios = -1
+        case default
+          read (buffer, nml=criteria, iostat=ios, iomsg=msg)
+          if (ios == 0 .and. .not. all(ieee_is_finite([criteria_%min_stroke_margin, criteria_%max_overload, &
+              criteria_%min_body_clearance, criteria_%body_point]))) ios = -1
+        end select
+        if (ios == 0) cycle
+        campaign_ = c0
+        parameter_ = p0
+        criteria_ = r0
+        if (ios == -1) msg = 'not a finite number'
+        do   ! the record's name is ours, not the deck's
+          p = index(msg, prefix)
+          if (p == 0) exit
+          msg = msg(1:p - 1)//msg(p + len(prefix):)
+        end do
+        call read_error(deck_name, it, g%name, takes(iv), msg, errors)
       end associate
     end do
-  end subroutine read_criteria_group
+  end subroutine read_items
 
   !> Checks an item's variable name (known, given once, has a value). Returns its index in
   !! `vars`, or 0 after reporting the problem.

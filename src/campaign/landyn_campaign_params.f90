@@ -3,19 +3,12 @@
 !!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_params
-  use, intrinsic :: iso_fortran_env, only: int64
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, max_gears
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
-  use landyn_config, only: landyn_input_t, default_input, unset_real, is_set, max_stages, path_len
-  use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
-  use landyn_namelist_text, only: has_nonfinite_word, numbers_within
-  use landyn_files, only: read_whole_file
-  use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, real_text, &
-                                 real_text_short, quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, &
-                                 hint_and_list, name_list, ints_text
-  use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
-  use landyn_campaign_types
+  use landyn_kinds, only: wp
+  use landyn_config, only: is_set
+  use landyn_input, only: input_errors_t
+  use landyn_campaign_nml, only: lower_case, int_text, real_text_short, quote_text
+  use landyn_campaign_types, only: param_t, criteria_t, raw_parameter_t, raw_criteria_t, max_values, &
+                                   max_body_points, label_len, min_truncated_mass
   use landyn_campaign_target, only: parse_target
   implicit none
   private

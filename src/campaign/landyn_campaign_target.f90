@@ -5,12 +5,12 @@
 !!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_target
-  use landyn_input_registry, only: input_var_t, input_vars, group_names, group_index, var_index, k_int, k_real, &
+  use landyn_input_registry, only: input_var_t, input_vars, group_names, group_index, var_index, k_int, &
                                    k_logical, k_string
   use landyn_config, only: default_input
   use landyn_input, only: input_errors_t, resolved_input_text
-  use landyn_campaign_nml, only: nml_group_t, split_namelist, lower_case, int_text, close_name_hint, hint_and_list, &
-                                 name_list
+  use landyn_campaign_nml, only: nml_group_t, split_namelist, lower_case, int_text, close_name_hint, &
+                                 hint_and_list, name_list
   use landyn_campaign_types, only: param_t
   implicit none
   private
