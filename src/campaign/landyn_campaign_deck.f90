@@ -167,6 +167,9 @@ contains
     type(nml_group_t), allocatable :: groups(:)
     type(raw_parameter_t), allocatable :: rp(:)
     type(raw_criteria_t) :: rcr
+    type(raw_campaign_t) :: rc_unused      ! read_items takes the three records; one is read
+    type(raw_parameter_t) :: rp_unused
+    type(raw_criteria_t) :: rcr_unused
     character(len=20), allocatable :: given(:)
     integer :: ig, n_campaign, n_criteria, np, line_campaign, line_criteria
     integer, allocatable :: plines(:)
@@ -192,11 +195,12 @@ contains
             cycle
           end if
           line_campaign = g%line
-          call read_campaign_group(g, deck_name, rc, errors)
+          call read_items(g, deck_name, campaign_vars, campaign_takes, given, errors, rc, rp_unused, rcr_unused)
         case ('parameter')
           rp = [rp, raw_parameter_t()]
           plines = [plines, g%line]
-          call read_parameter_group(g, deck_name, rp(size(rp)), given, errors)
+          call read_items(g, deck_name, parameter_vars, parameter_takes, given, errors, rc_unused, rp(size(rp)), &
+                          rcr_unused)
           if (len_trim(rp(size(rp))%name) == 0) call errors%add(deck_name//':'//int_text(g%line)// &
             ": &parameter: name is not given; valid: the input to vary, e.g. name = 'initial_state%velocity(1)'")
         case ('criteria')
@@ -207,7 +211,7 @@ contains
             cycle
           end if
           line_criteria = g%line
-          call read_criteria_group(g, deck_name, rcr, errors)
+          call read_items(g, deck_name, criteria_vars, criteria_takes, given, errors, rc_unused, rp_unused, rcr)
         case default
           call errors%add(deck_name//':'//int_text(g%line)//": unknown namelist group '&"//g%name//"'"// &
                           close_name_hint(g%name, [character(len=9) :: 'campaign', 'parameter', 'criteria'])// &
@@ -289,42 +293,6 @@ contains
     ! ---- &criteria
     call make_criteria(rcr, deck_name, camp%crit, errors)
   end subroutine parse_campaign_deck
-
-  !> Items of &campaign, each read on its own.
-  subroutine read_campaign_group(g, deck_name, rc, errors)
-    type(nml_group_t), intent(in) :: g             !! the group [-]
-    character(len=*), intent(in) :: deck_name      !! deck path [-]
-    type(raw_campaign_t), intent(inout) :: rc      !! values read [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    character(len=20), allocatable :: given(:)
-    type(raw_parameter_t) :: rp_unused
-    type(raw_criteria_t) :: rcr_unused
-    call read_items(g, deck_name, campaign_vars, campaign_takes, given, errors, rc, rp_unused, rcr_unused)
-  end subroutine read_campaign_group
-
-  !> Items of one &parameter, each read on its own; `given` lists the variables given.
-  subroutine read_parameter_group(g, deck_name, rp, given, errors)
-    type(nml_group_t), intent(in) :: g                      !! the group [-]
-    character(len=*), intent(in) :: deck_name               !! deck path [-]
-    type(raw_parameter_t), intent(inout) :: rp              !! values read [-]
-    character(len=20), allocatable, intent(out) :: given(:) !! variables given [-]
-    type(input_errors_t), intent(inout) :: errors           !! problems are appended here [-]
-    type(raw_campaign_t) :: rc_unused
-    type(raw_criteria_t) :: rcr_unused
-    call read_items(g, deck_name, parameter_vars, parameter_takes, given, errors, rc_unused, rp, rcr_unused)
-  end subroutine read_parameter_group
-
-  !> Items of &criteria, each read on its own.
-  subroutine read_criteria_group(g, deck_name, rcr, errors)
-    type(nml_group_t), intent(in) :: g             !! the group [-]
-    character(len=*), intent(in) :: deck_name      !! deck path [-]
-    type(raw_criteria_t), intent(inout) :: rcr     !! values read [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    character(len=20), allocatable :: given(:)
-    type(raw_campaign_t) :: rc_unused
-    type(raw_parameter_t) :: rp_unused
-    call read_items(g, deck_name, criteria_vars, criteria_takes, given, errors, rc_unused, rp_unused, rcr)
-  end subroutine read_criteria_group
 
   !> Read every item of group g (&campaign, &parameter or &criteria) on its own into the group's
   !! raw record: the item is read as a one-item namelist record naming the record's component

@@ -16,6 +16,7 @@
 module landyn_campaign_nml
   use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
+  use landyn_input_registry, only: closest_name
   use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
   use landyn_namelist_text, only: strip_comments, next_group, &
                                   find_item_names, line_of, first_nonblank, one_line_text, &
@@ -232,18 +233,8 @@ contains
     character(len=*), intent(in) :: name      !! unknown name [-]
     character(len=*), intent(in) :: names(:)  !! known names [-]
     character(len=:), allocatable :: s        !! hint [-]
-    integer :: i, d, best, best_d
-    best = 0
-    best_d = huge(1)
-    do i = 1, size(names)
-      d = edit_distance(name, trim(names(i)))
-      if (d < best_d) then
-        best_d = d
-        best = i
-      end if
-    end do
-    s = ''
-    if (best > 0 .and. best_d <= max(2, len(name)/3)) s = "; did you mean '"//trim(names(best))//"'?"
+    s = closest_name(name, names)
+    if (len(s) > 0) s = "; did you mean '"//s//"'?"
   end function close_name_hint
 
   ! ================================================================ paths
@@ -303,15 +294,16 @@ contains
     end do
   end function name_list
 
+  !> 'a, b, c' from integers.
   pure function ints_text(v) result(s)
     integer, intent(in) :: v(:)         !! values [-]
     character(len=:), allocatable :: s  !! 'a, b, c' [-]
+    character(len=12) :: items(size(v))
     integer :: i
-    s = ''
     do i = 1, size(v)
-      if (i > 1) s = s//', '
-      s = s//int_text(v(i))
+      items(i) = int_text(v(i))
     end do
+    s = name_list(items)
   end function ints_text
 
 end module landyn_campaign_nml

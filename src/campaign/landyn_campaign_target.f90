@@ -15,7 +15,7 @@ module landyn_campaign_target
   implicit none
   private
 
-  public :: parse_target, run_variable_table, default_deck_variables, label_sub
+  public :: parse_target, run_variable_table, default_deck_variables
 
 contains
 
@@ -27,6 +27,7 @@ contains
     character(len=:), allocatable, intent(out) :: msg  !! problem, '' if none [-]
     character(len=:), allocatable :: nm, grp, var, sub, part, rest, why
     integer :: pp, pq, iv, ig, k, i, j, ext(2), lo(2), hi(2), nsub, rank
+    logical :: last
     type(input_var_t) :: e
     msg = ''
     nm = ''
@@ -106,12 +107,7 @@ contains
     lo = 1
     hi = 1
     do
-      pq = index(rest, ',')
-      if (pq == 0) then
-        part = rest
-      else
-        part = rest(1:pq - 1)
-      end if
+      call next_part(rest, part, last)
       nsub = nsub + 1
       if (nsub > rank) exit
       call parse_range(part, ext(nsub), lo(nsub), hi(nsub), msg)
@@ -119,8 +115,7 @@ contains
         msg = 'subscript '//int_text(nsub)//" '"//part//"' of "//var//': '//msg
         return
       end if
-      if (pq == 0) exit
-      rest = rest(pq + 1:)
+      if (last) exit
     end do
     if (nsub /= rank) then
       msg = var//' has '//int_text(rank)//' subscript(s); got '//int_text(nsub)//" in '("//sub//")'"
@@ -194,26 +189,36 @@ contains
     character(len=*), intent(in) :: sub  !! subscript text [-]
     character(len=:), allocatable :: s   !! label suffix [-]
     character(len=:), allocatable :: part, rest
-    integer :: pq
+    logical :: last
     s = ''
     rest = sub
     do
-      pq = index(rest, ',')
-      if (pq == 0) then
-        part = rest
-      else
-        part = rest(1:pq - 1)
-      end if
+      call next_part(rest, part, last)
       if (len(s) > 0) s = s//'_'
       if (part == ':') then
         s = s//'all'
       else
         s = s//replace_char(part, ':', '-')
       end if
-      if (pq == 0) exit
-      rest = rest(pq + 1:)
+      if (last) exit
     end do
   end function label_sub
+
+  !> Split off the text before the first comma of `rest` (all of it when there is none).
+  pure subroutine next_part(rest, part, last)
+    character(len=:), allocatable, intent(inout) :: rest  !! text; what follows the comma on return [-]
+    character(len=:), allocatable, intent(out) :: part    !! text before the comma [-]
+    logical, intent(out) :: last                          !! there was no comma [-]
+    integer :: pq
+    pq = index(rest, ',')
+    last = pq == 0
+    if (last) then
+      part = rest
+    else
+      part = rest(1:pq - 1)
+      rest = rest(pq + 1:)
+    end if
+  end subroutine next_part
 
   pure function replace_char(t, a, b) result(s)
     character(len=*), intent(in) :: t     !! text [-]

@@ -14,7 +14,7 @@ module landyn_input_docs
   implicit none
   private
 
-  public :: docs_table, replace_table, table_begin, table_end
+  public :: docs_table, replace_table
 
   character(len=*), parameter :: table_begin = '<!-- begin: variable table generated from src/input/'// &
     'landyn_input_registry.f90 by landyn_input_docs (tests/input); do not edit -->'  !! opening marker [-]

@@ -11,7 +11,7 @@ module landyn_input_format
   implicit none
   private
 
-  public :: fmt_real, fmt_angle, fmt_reals, fmt_angles, fmt_logical, same_real, deg_to_rad, msg_prefix
+  public :: fmt_real, fmt_angle, fmt_reals, fmt_angles, fmt_logical, deg_to_rad, msg_prefix
 
   integer, parameter :: short_digits = 3           !! digit counts tried one by one before bisection [-]
   !> ES formats with 1..17 significant digits and a 3-digit exponent (es_text)
@@ -187,25 +187,32 @@ contains
   pure function fmt_reals(x) result(s)
     real(wp), intent(in) :: x(:)           !! values [any unit]
     character(len=:), allocatable :: s     !! deck text [-]
-    integer :: i
-    character(len=40) :: items(size(x))
-    do i = 1, size(x)
-      items(i) = fmt_real(x(i))
-    end do
-    s = join_runs(items)
+    s = fmt_list(x, .false.)
   end function fmt_reals
 
   !> Angles [rad] in degrees, joined as fmt_reals does.
   pure function fmt_angles(x) result(s)
     real(wp), intent(in) :: x(:)           !! angles [rad]
     character(len=:), allocatable :: s     !! deck text in degrees [-]
+    s = fmt_list(x, .true.)
+  end function fmt_angles
+
+  !> fmt_real (or fmt_angle) of each value, joined by join_runs.
+  pure function fmt_list(x, angle) result(s)
+    real(wp), intent(in) :: x(:)           !! values [any unit, or rad]
+    logical, intent(in) :: angle           !! write angles in degrees [-]
+    character(len=:), allocatable :: s     !! deck text [-]
     integer :: i
     character(len=40) :: items(size(x))
     do i = 1, size(x)
-      items(i) = fmt_angle(x(i))
+      if (angle) then
+        items(i) = fmt_angle(x(i))
+      else
+        items(i) = fmt_real(x(i))
+      end if
     end do
     s = join_runs(items)
-  end function fmt_angles
+  end function fmt_list
 
   pure function join_runs(items) result(s)
     character(len=*), intent(in) :: items(:)  !! formatted values [-]

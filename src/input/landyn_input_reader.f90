@@ -12,12 +12,13 @@ module landyn_input_reader
   use landyn_kinds, only: wp
   use landyn_errors, only: input_errors_t
   use landyn_config, only: landyn_input_t, unset_real, is_set, path_len
-  use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, fmt_int => int_text, quoted => quote_text
+  use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, fmt_int => int_text, &
+                            quoted => quote_text
   use landyn_namelist_text, only: strip_comments, next_group, find_item_names, line_of, first_nonblank, &
-                                  one_line => one_line_text, strip_commas => separators_to_blanks, remove_blanks, &
-                                  mask_non_ascii, bare_name_in_value, numbers_within
-  use landyn_input_registry, only: input_var_t, input_vars, n_groups, group_names, group_index, var_index, unit_text, group_list, &
-                                   group_hint, var_hint, k_int, k_logical, k_string
+                                  one_line => one_line_text, strip_commas => separators_to_blanks, &
+                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within
+  use landyn_input_registry, only: input_var_t, input_vars, n_groups, group_names, group_index, var_index, &
+                                   unit_text, group_list, group_hint, var_hint, k_int, k_logical, k_string
   use landyn_input_access, only: input_value_t, access_var
   use landyn_input_format, only: deg_to_rad
   implicit none

@@ -18,9 +18,8 @@ module landyn_input_registry
   private
 
   public :: input_var_t, input_vars, n_groups, group_names, k_real, k_int, k_logical, k_string
-  public :: g_simulation, g_lander, g_engine, g_gears, g_primary, g_secondary, g_contact, g_friction, g_terrain, &
-            g_initial, g_output
-  public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, var_key
+  public :: g_simulation, g_contact
+  public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, var_key, closest_name
 
   integer, parameter :: g_simulation = 1, g_lander = 2, g_engine = 3, g_gears = 4, g_primary = 5, &
                         g_secondary = 6, g_contact = 7, g_friction = 8, g_terrain = 9, g_initial = 10, &
@@ -438,22 +437,32 @@ contains
     end do
   end function group_list
 
+  !> The closest of `names` to `name` by edit distance when close enough (at most max(2, len/3)
+  !! edits), else ''. The one rule of every "did you mean" hint.
+  pure function closest_name(name, names) result(best_name)
+    character(len=*), intent(in) :: name       !! unknown name [-]
+    character(len=*), intent(in) :: names(:)   !! known names [-]
+    character(len=:), allocatable :: best_name !! closest known name, '' if none is close [-]
+    integer :: i, d, best, best_d
+    best = 0
+    best_d = huge(1)
+    do i = 1, size(names)
+      d = edit_distance(name, trim(names(i)))
+      if (d < best_d) then
+        best_d = d
+        best = i
+      end if
+    end do
+    best_name = ''
+    if (best > 0 .and. best_d <= max(2, len(name)/3)) best_name = trim(names(best))
+  end function closest_name
+
   !> " (did you mean '&xxx'?)" for a close group name, else ''.
   pure function group_hint(name) result(s)
     character(len=*), intent(in) :: name  !! unknown group name [-]
     character(len=:), allocatable :: s    !! hint [-]
-    integer :: ig, d, best, best_d
-    best = 0
-    best_d = huge(1)
-    do ig = 1, n_groups
-      d = edit_distance(name, trim(group_names(ig)))
-      if (d < best_d) then
-        best_d = d
-        best = ig
-      end if
-    end do
-    s = ''
-    if (best > 0 .and. best_d <= max(2, len(name)/3)) s = " (did you mean '&"//trim(group_names(best))//"'?)"
+    s = closest_name(name, group_names)
+    if (len(s) > 0) s = " (did you mean '&"//s//"'?)"
   end function group_hint
 
   !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else ''.
@@ -461,25 +470,15 @@ contains
     integer, intent(in) :: ig             !! group index [-]
     character(len=*), intent(in) :: name  !! unknown variable name [-]
     character(len=:), allocatable :: s    !! hint [-]
-    integer :: iv, d, best, best_d
-    s = ''
+    integer :: iv
     do iv = 1, size(input_vars)
       if (input_vars(iv)%group /= ig .and. trim(input_vars(iv)%name) == name) then
         s = "; '"//name//"' belongs to &"//trim(group_names(input_vars(iv)%group))
         return
       end if
     end do
-    best = 0
-    best_d = huge(1)
-    do iv = 1, size(input_vars)
-      if (input_vars(iv)%group /= ig) cycle
-      d = edit_distance(name, trim(input_vars(iv)%name))
-      if (d < best_d) then
-        best_d = d
-        best = iv
-      end if
-    end do
-    if (best > 0 .and. best_d <= max(2, len(name)/3)) s = "; did you mean '"//trim(input_vars(best)%name)//"'?"
+    s = closest_name(name, pack(input_vars%name, input_vars%group == ig))
+    if (len(s) > 0) s = "; did you mean '"//s//"'?"
   end function var_hint
 
 end module landyn_input_registry

@@ -9,7 +9,8 @@ module landyn_input_writer
   use landyn_config, only: landyn_input_t, is_set
   use landyn_strings, only: fmt_int => int_text, quoted => quote_text
   use landyn_namelist_text, only: one_line => one_line_text
-  use landyn_input_registry, only: input_vars, n_groups, group_names, var_index, unit_text, k_int, k_logical, k_string
+  use landyn_input_registry, only: input_vars, n_groups, group_names, var_index, unit_text, k_int, k_logical, &
+                                   k_string
   use landyn_input_access, only: input_value_t, access_var
   use landyn_input_format, only: fmt_real, fmt_angle, fmt_reals, fmt_angles, fmt_logical
   implicit none
