@@ -23,8 +23,7 @@ module landyn_campaign_deck
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
-  use landyn_input, only: input_errors_t
-  use landyn_files, only: read_whole_file
+  use landyn_input, only: input_errors_t, read_text_or_report
   use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, &
                                  real_text_short, quote_text, close_name_hint, dir_of, join_path, &
                                  base_name_no_ext, hint_and_list, name_list
@@ -75,38 +74,28 @@ contains
     type(campaign_t), intent(out) :: camp          !! the campaign [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     integer, intent(out) :: stat                   !! 0 ok, 1 deck errors, 2 deck unreadable [-]
-    character(len=:), allocatable :: text, base_text, list_text, msg
+    character(len=:), allocatable :: text, base_text, list_text
     type(raw_campaign_t) :: rc
     type(campaign_t) :: probe
     type(input_errors_t) :: scratch
     integer :: st, n0
 
     n0 = errors%count()
-    call read_whole_file(path, text, st, msg)
-    if (st /= STAT_OK) then
-      call errors%add(path//': cannot read the campaign deck: '//msg)
-      stat = STAT_INPUT
-      return
-    end if
+    call read_text_or_report(path, path//': cannot read the campaign deck: ', text, errors, stat)
+    if (stat /= STAT_OK) return
     ! first pass: only to learn the file names (its messages come again in build_campaign)
     call parse_campaign_deck(text, path, probe, rc, scratch)
     base_text = ''
     list_text = ''
     if (len_trim(rc%base_deck) > 0) then
-      call read_whole_file(join_path(dir_of(path), rc%base_deck), base_text, st, msg)
-      if (st /= STAT_OK) then
-        call errors%add(path//': &campaign: base_deck = '//quote_text(trim(rc%base_deck))//': cannot read '// &
-                        quote_text(join_path(dir_of(path), rc%base_deck))//': '//msg)
-        base_text = ''
-      end if
+      call read_text_or_report(join_path(dir_of(path), rc%base_deck), path//': &campaign: base_deck = '// &
+                               quote_text(trim(rc%base_deck))//': cannot read '// &
+                               quote_text(join_path(dir_of(path), rc%base_deck))//': ', base_text, errors, st)
     end if
     if (len_trim(rc%list_file) > 0) then
-      call read_whole_file(join_path(dir_of(path), rc%list_file), list_text, st, msg)
-      if (st /= STAT_OK) then
-        call errors%add(path//': &campaign: list_file = '//quote_text(trim(rc%list_file))//': cannot read '// &
-                        quote_text(join_path(dir_of(path), rc%list_file))//': '//msg)
-        list_text = ''
-      end if
+      call read_text_or_report(join_path(dir_of(path), rc%list_file), path//': &campaign: list_file = '// &
+                               quote_text(trim(rc%list_file))//': cannot read '// &
+                               quote_text(join_path(dir_of(path), rc%list_file))//': ', list_text, errors, st)
     end if
     call build_campaign(path, text, base_text, list_text, camp, errors, st)
     stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)

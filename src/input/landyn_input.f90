@@ -32,7 +32,7 @@ module landyn_input
 
   public :: input_errors_t
   public :: read_input_file, read_input_text, apply_input_text, resolve_input, validate_input, load_input
-  public :: write_resolved_input, resolved_input_text
+  public :: write_resolved_input, resolved_input_text, read_text_or_report
 
 contains
 
@@ -45,7 +45,7 @@ contains
     type(landyn_input_t), intent(out) :: inp       !! input read (defaults where the deck is silent)
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     integer, intent(out) :: stat                   !! STAT_OK, STAT_FAILED (errors in the deck), STAT_INPUT (file not readable) [-]
-    character(len=:), allocatable :: text, msg
+    character(len=:), allocatable :: text
 
     inp = default_input()
     inp%deck_name = path
@@ -54,14 +54,27 @@ contains
       stat = STAT_INPUT
       return
     end if
-    call read_whole_file(path, text, stat, msg)
-    if (stat /= STAT_OK) then
-      call errors%add(path//': cannot open or read the input deck: '//msg)
-      stat = STAT_INPUT
-      return
-    end if
+    call read_text_or_report(path, path//': cannot open or read the input deck: ', text, errors, stat)
+    if (stat /= STAT_OK) return
     call read_input_text(text, path, inp, errors, stat)
   end subroutine read_input_file
+
+  !> Read a whole text file; when it cannot be read, append `prefix` followed by the reason to
+  !! `errors` and return STAT_INPUT (text is then ''). The one "read a deck or report it" step of
+  !! the run, campaign and study deck readers.
+  subroutine read_text_or_report(path, prefix, text, errors, stat)
+    character(len=*), intent(in) :: path                 !! file name [-]
+    character(len=*), intent(in) :: prefix               !! message before the reason [-]
+    character(len=:), allocatable, intent(out) :: text   !! file contents ('' when unreadable) [-]
+    type(input_errors_t), intent(inout) :: errors        !! the problem is appended here [-]
+    integer, intent(out) :: stat                         !! STAT_OK or STAT_INPUT [-]
+    character(len=:), allocatable :: msg
+    call read_whole_file(path, text, stat, msg)
+    if (stat == STAT_OK) return
+    call errors%add(prefix//msg)
+    text = ''
+    stat = STAT_INPUT
+  end subroutine read_text_or_report
 
   !> Read a deck held in a string (lines separated by new_line('a')) into `inp`, starting from
   !! `default_input()`. `deck_name` is used in messages and stored in inp%deck_name ('' for none).
