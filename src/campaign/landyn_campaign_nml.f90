@@ -20,7 +20,7 @@ module landyn_campaign_nml
   use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
   use landyn_namelist_text, only: strip_comments, next_group, &
                                   find_item_names, line_of, first_nonblank, one_line_text, &
-                                  separators_to_blanks, remove_blanks, has_nonfinite_word, numbers_within
+                                  remove_blanks, has_nonfinite_word, numbers_within, leading_text
   implicit none
   integer, parameter :: max_value_exponent = 30   !! campaign values beyond 1e31 are rejected before reading
   private
@@ -108,20 +108,13 @@ contains
     type(input_errors_t), intent(inout) :: errors    !! problems are appended here [-]
     integer, allocatable :: starts(:), eqs(:)
     integer :: p, k, nitems, item_end, nvalid
+    character(len=:), allocatable :: what
 
     call find_item_names(work, b0, b1, .true., starts, eqs)
     nitems = size(starts)
-    item_end = b1
-    if (nitems > 0) item_end = starts(1) - 1
-    if (len_trim(separators_to_blanks(work(b0:item_end))) > 0) then
-      if (nitems > 0) then
-        call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'//group%name// &
-                        ': text without a variable name: '//snippet(work(b0:item_end)))
-      else
-        call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'//group%name// &
-                        ": no 'name = value' item in: "//snippet(work(b0:item_end)))
-      end if
-    end if
+    call leading_text(work, b0, b1, starts, what, item_end)
+    if (len(what) > 0) call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'// &
+                                       group%name//': '//what//snippet(work(b0:item_end)))
     allocate (group%items(nitems))
     nvalid = 0
     do k = 1, nitems

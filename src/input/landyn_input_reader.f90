@@ -16,7 +16,7 @@ module landyn_input_reader
                             quoted => quote_text
   use landyn_namelist_text, only: strip_comments, next_group, find_item_names, line_of, first_nonblank, &
                                   one_line => one_line_text, strip_commas => separators_to_blanks, &
-                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within
+                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within, leading_text
   use landyn_input_registry, only: input_var_t, input_vars, n_groups, group_names, group_index, var_index, &
                                    unit_text, group_list, group_hint, var_hint, k_int, k_logical, k_string
   use landyn_input_access, only: input_value_t, access_var
@@ -102,7 +102,7 @@ contains
     type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     integer, allocatable :: starts(:), eqs(:)
-    character(len=:), allocatable :: gname, item, lhs, base, value
+    character(len=:), allocatable :: gname, item, lhs, base, value, what
     character(len=key_len), allocatable :: keys(:)
     character(len=512) :: msg
     integer :: p, k, nitems, item_end, ios, iv, nkeys
@@ -112,17 +112,9 @@ contains
     ! Find every '=' outside quotes and the start of the name before it.
     call find_item_names(work, b0, b1, .false., starts, eqs)
     nitems = size(starts)
-    item_end = b1
-    if (nitems > 0) item_end = starts(1) - 1
-    if (len_trim(strip_commas(work(b0:item_end))) > 0) then
-      if (nitems > 0) then
-        call errors%add(loc(deck_name, work, first_nonblank(work, b0))//'&'//gname// &
-                        ': text without a variable name: '//snippet(work(b0:item_end)))
-      else
-        call errors%add(loc(deck_name, work, first_nonblank(work, b0))//'&'//gname// &
-                        ": no 'name = value' item in: "//snippet(work(b0:item_end)))
-      end if
-    end if
+    call leading_text(work, b0, b1, starts, what, item_end)
+    if (len(what) > 0) call errors%add(loc(deck_name, work, first_nonblank(work, b0))//'&'//gname//': '//what// &
+                                       snippet(work(b0:item_end)))
 
     allocate (keys(nitems))
     nkeys = 0
