@@ -16,17 +16,18 @@
 module landyn_campaign_nml
   use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
+  use landyn_input_registry, only: closest_name
   use landyn_strings, only: lower_case, is_blank_char, edit_distance, int_text, quote_text
   use landyn_namelist_text, only: strip_comments, next_group, &
                                   find_item_names, line_of, first_nonblank, one_line_text, &
-                                  separators_to_blanks, remove_blanks, has_nonfinite_word, numbers_within
+                                  remove_blanks, has_nonfinite_word, numbers_within, leading_text
   implicit none
   integer, parameter :: max_value_exponent = 30   !! campaign values beyond 1e31 are rejected before reading
   private
 
   public :: nml_item_t, nml_group_t, split_namelist
   public :: lower_case, int_text, real_text, real_text_short, edit_distance, is_blank_char, one_line_text
-  public :: quote_text, close_name_hint, dir_of, join_path, base_name_no_ext
+  public :: quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, hint_and_list, name_list, ints_text
 
   !> One `name = value` item of a group.
   type :: nml_item_t
@@ -107,20 +108,13 @@ contains
     type(input_errors_t), intent(inout) :: errors    !! problems are appended here [-]
     integer, allocatable :: starts(:), eqs(:)
     integer :: p, k, nitems, item_end, nvalid
+    character(len=:), allocatable :: what
 
     call find_item_names(work, b0, b1, .true., starts, eqs)
     nitems = size(starts)
-    item_end = b1
-    if (nitems > 0) item_end = starts(1) - 1
-    if (len_trim(separators_to_blanks(work(b0:item_end))) > 0) then
-      if (nitems > 0) then
-        call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'//group%name// &
-                        ': text without a variable name: '//snippet(work(b0:item_end)))
-      else
-        call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'//group%name// &
-                        ": no 'name = value' item in: "//snippet(work(b0:item_end)))
-      end if
-    end if
+    call leading_text(work, b0, b1, starts, what, item_end)
+    if (len(what) > 0) call errors%add(deck_name//':'//int_text(line_of(work, first_nonblank(work, b0)))//': &'// &
+                                       group%name//': '//what//snippet(work(b0:item_end)))
     allocate (group%items(nitems))
     nvalid = 0
     do k = 1, nitems
@@ -232,18 +226,8 @@ contains
     character(len=*), intent(in) :: name      !! unknown name [-]
     character(len=*), intent(in) :: names(:)  !! known names [-]
     character(len=:), allocatable :: s        !! hint [-]
-    integer :: i, d, best, best_d
-    best = 0
-    best_d = huge(1)
-    do i = 1, size(names)
-      d = edit_distance(name, trim(names(i)))
-      if (d < best_d) then
-        best_d = d
-        best = i
-      end if
-    end do
-    s = ''
-    if (best > 0 .and. best_d <= max(2, len(name)/3)) s = "; did you mean '"//trim(names(best))//"'?"
+    s = closest_name(name, names)
+    if (len(s) > 0) s = "; did you mean '"//s//"'?"
   end function close_name_hint
 
   ! ================================================================ paths
@@ -277,5 +261,42 @@ contains
     p = index(s, '.', back=.true.)
     if (p > 1) s = s(1:p - 1)
   end function base_name_no_ext
+
+  ! ================================================================ lists in messages
+
+  !> "; did you mean 'x'? (valid: a, b)" or "; valid: a, b".
+  pure function hint_and_list(hint, list) result(s)
+    character(len=*), intent(in) :: hint  !! '' or "; did you mean 'x'?" [-]
+    character(len=*), intent(in) :: list  !! valid names [-]
+    character(len=:), allocatable :: s    !! message tail [-]
+    if (len(hint) > 0) then
+      s = hint//' (valid: '//list//')'
+    else
+      s = '; valid: '//list
+    end if
+  end function hint_and_list
+
+  pure function name_list(vars) result(s)
+    character(len=*), intent(in) :: vars(:)  !! names [-]
+    character(len=:), allocatable :: s       !! 'a, b, c' [-]
+    integer :: i
+    s = ''
+    do i = 1, size(vars)
+      if (i > 1) s = s//', '
+      s = s//trim(vars(i))
+    end do
+  end function name_list
+
+  !> 'a, b, c' from integers.
+  pure function ints_text(v) result(s)
+    integer, intent(in) :: v(:)         !! values [-]
+    character(len=:), allocatable :: s  !! 'a, b, c' [-]
+    character(len=12) :: items(size(v))
+    integer :: i
+    do i = 1, size(v)
+      items(i) = int_text(v(i))
+    end do
+    s = name_list(items)
+  end function ints_text
 
 end module landyn_campaign_nml

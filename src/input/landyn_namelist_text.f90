@@ -13,7 +13,7 @@ module landyn_namelist_text
   public :: strip_comments, next_ampersand, group_name_end, find_group_end, find_item_names, name_start
   public :: next_group
   public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
-  public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word
+  public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word, leading_text
 
 contains
 
@@ -517,5 +517,25 @@ contains
       end if
     end function in_word
   end subroutine next_word
+
+  !> The text of a group body work(b0:b1) before its first item (starts(1), or the whole body
+  !! without items): `what` says what is wrong with it ('' when it is only separators), and
+  !! work(b0:t1) is the text to quote.
+  pure subroutine leading_text(work, b0, b1, starts, what, t1)
+    character(len=*), intent(in) :: work               !! comment-free text [-]
+    integer, intent(in) :: b0, b1                      !! the body is work(b0:b1) [-]
+    integer, intent(in) :: starts(:)                   !! starts of the item names [-]
+    character(len=:), allocatable, intent(out) :: what !! problem text before the quote, '' if none [-]
+    integer, intent(out) :: t1                         !! end of the leading text [-]
+    t1 = b1
+    if (size(starts) > 0) t1 = starts(1) - 1
+    what = ''
+    if (len_trim(separators_to_blanks(work(b0:t1))) == 0) return
+    if (size(starts) > 0) then
+      what = 'text without a variable name: '
+    else
+      what = "no 'name = value' item in: "
+    end if
+  end subroutine leading_text
 
 end module landyn_namelist_text

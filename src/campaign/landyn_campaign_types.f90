@@ -1,0 +1,129 @@
+!> The data of a campaign (docs/campaign.md): the varied inputs (`param_t`), the success
+!! criteria (`criteria_t`), the campaign itself (`campaign_t`) and the raw values of the campaign
+!! deck's groups as read (before their checks), with the size limits of campaign decks.
+module landyn_campaign_types
+  use, intrinsic :: iso_fortran_env, only: int64
+  use landyn_kinds, only: wp
+  use landyn_config, only: unset_real, path_len
+  use landyn_campaign_nml, only: nml_group_t
+  implicit none
+  private
+
+  public :: campaign_t, param_t, criteria_t, raw_campaign_t, raw_parameter_t, raw_criteria_t
+  public :: max_values, max_saved, max_body_points, max_params, label_len, name_len, max_cases, max_normal_tries, &
+            cell_len, min_truncated_mass
+
+  integer, parameter :: max_values = 1000       !! most values / weights of one &parameter [-]
+  integer, parameter :: max_saved = 1000        !! most case ids in save_histories [-]
+  integer, parameter :: max_body_points = 8     !! most body points of the clearance criterion [-]
+  integer, parameter :: max_params = 64         !! most varied inputs [-]
+  integer, parameter :: label_len = 64          !! longest parameter label [-]
+  integer, parameter :: name_len = 128          !! longest parameter name [-]
+  integer, parameter :: max_cases = 100000000   !! most cases of one campaign [-]
+  integer, parameter :: max_normal_tries = 100000  !! rejection tries of a truncated normal [-]
+  integer, parameter :: cell_len = 256          !! longest cell of the case list [-]
+  real(wp), parameter :: min_truncated_mass = 1.0e-3_wp  !! least probability inside a truncation [-]
+
+  !> One varied input.
+  type :: param_t
+    character(len=:), allocatable :: name     !! normalised 'group%variable(subscript)' [-]
+    character(len=:), allocatable :: label    !! column name in the summary file [-]
+    character(len=:), allocatable :: units    !! deck units ('-' if none) [-]
+    character(len=:), allocatable :: group    !! run-deck group [-]
+    character(len=:), allocatable :: lhs      !! item name written into the case deck, e.g. 'slope(:)' [-]
+    integer :: n_elem = 1                     !! elements the override sets (repeat count) [-]
+    character(len=:), allocatable :: var      !! run-deck variable [-]
+    logical :: is_int = .false.               !! integer variable [-]
+    integer, allocatable :: elems(:)          !! flat element indices set (for overlap checks) [-]
+    integer :: line = 0                       !! line of the &parameter group [-]
+    character(len=16) :: kind = ''            !! 'grid', 'uniform', 'normal', 'discrete' or 'list' [-]
+    real(wp), allocatable :: values(:)        !! grid or discrete values [deck unit]
+    real(wp), allocatable :: weights(:)       !! discrete weights, normalised cumulative [-]
+    real(wp) :: lo = unset_real               !! uniform lower bound / normal truncation [deck unit]
+    real(wp) :: hi = unset_real               !! uniform upper bound / normal truncation [deck unit]
+    real(wp) :: mean = unset_real             !! normal mean [deck unit]
+    real(wp) :: sd = unset_real               !! normal standard deviation [deck unit]
+  end type param_t
+
+  !> Success criteria of a landing.
+  type :: criteria_t
+    real(wp) :: min_stroke_margin = 0.0_wp          !! every stroke margin must be >= this [m]
+    logical :: overload_applied = .false.           !! max_overload given [-]
+    real(wp) :: max_overload = 0.0_wp               !! peak overload must be <= this [g]
+    logical :: clearance_applied = .false.          !! min_body_clearance given [-]
+    real(wp) :: min_body_clearance = 0.0_wp         !! body clearance must stay >= this [m]
+    integer :: n_body_points = 1                    !! body points checked for clearance [-]
+    real(wp) :: body_point(3, max_body_points) = 0.0_wp  !! body points, lander frame [m]
+    logical :: require_at_rest = .false.            !! the lander must have come to rest [-]
+    character(len=24) :: failed_runs = 'count_as_failure'  !! 'count_as_failure' or 'exclude' [-]
+  end type criteria_t
+
+  !> A campaign: its deck, the base run deck, the varied inputs and the criteria.
+  type :: campaign_t
+    character(len=:), allocatable :: deck_name       !! campaign deck path [-]
+    character(len=:), allocatable :: deck_text       !! campaign deck text [-]
+    character(len=:), allocatable :: title           !! campaign title [-]
+    character(len=16) :: mode = ''                   !! 'grid', 'monte_carlo' or 'list' [-]
+    character(len=:), allocatable :: base_path       !! base deck path (relative to the campaign deck's directory) [-]
+    character(len=:), allocatable :: base_text       !! base deck text [-]
+    character(len=:), allocatable :: list_path       !! case list path (list mode) [-]
+    character(len=:), allocatable :: list_text       !! case list text [-]
+    character(len=:), allocatable :: summary_file    !! summary file [-]
+    character(len=:), allocatable :: history_prefix  !! history files are <prefix><id>.h5 [-]
+    logical :: history_prefix_given = .false.         !! &campaign history_prefix was given [-]
+    integer(int64) :: seed = 1_int64                 !! Monte Carlo seed [-]
+    integer :: n_samples = 0                         !! Monte Carlo sample count [-]
+    integer :: n_cases = 0                           !! number of cases [-]
+    integer :: n_par = 0                             !! number of varied inputs [-]
+    integer :: n_gears = 0                           !! gears of the base deck [-]
+    real(wp) :: checkpoint_interval = 60.0_wp        !! time between summary rewrites while running [s]
+    integer, allocatable :: save_histories(:)        !! case ids whose time histories are written [-]
+    type(param_t), allocatable :: par(:)             !! varied inputs [-]
+    integer, allocatable :: grid_n(:)                !! grid: number of values of each parameter [-]
+    real(wp), allocatable :: table(:, :)             !! list: (n_par, n_cases) values [deck unit]
+    type(criteria_t) :: crit                         !! success criteria [-]
+    type(nml_group_t), allocatable :: base_groups(:) !! the base deck split into items [-]
+    character(len=16) :: fingerprint = ''            !! hash of everything that defines the cases [-]
+  end type campaign_t
+
+  !> Raw &campaign values as read.
+  type :: raw_campaign_t
+    character(len=256) :: title = ''
+    character(len=path_len) :: base_deck = ''
+    character(len=32) :: mode = ''
+    integer :: n_samples = -1
+    integer(int64) :: seed = 1_int64
+    character(len=path_len) :: summary_file = ''
+    character(len=path_len) :: history_prefix = ''
+    integer :: save_histories(max_saved) = 0
+    character(len=path_len) :: list_file = ''
+    real(wp) :: checkpoint_interval = 60.0_wp
+  end type raw_campaign_t
+
+  !> Raw &parameter values as read.
+  type :: raw_parameter_t
+    character(len=name_len) :: name = ''
+    character(len=label_len) :: label = ''
+    real(wp) :: values(max_values) = unset_real
+    real(wp) :: start = unset_real
+    real(wp) :: stop = unset_real
+    integer :: count = -1
+    character(len=32) :: distribution = ''
+    real(wp) :: lo = unset_real
+    real(wp) :: hi = unset_real
+    real(wp) :: mean = unset_real
+    real(wp) :: sd = unset_real
+    real(wp) :: weights(max_values) = unset_real
+  end type raw_parameter_t
+
+  !> Raw &criteria values as read.
+  type :: raw_criteria_t
+    real(wp) :: min_stroke_margin = 0.0_wp
+    real(wp) :: max_overload = unset_real
+    real(wp) :: min_body_clearance = unset_real
+    real(wp) :: body_point(3, max_body_points) = unset_real
+    logical :: require_at_rest = .false.
+    character(len=32) :: failed_runs = 'count_as_failure'
+  end type raw_criteria_t
+
+end module landyn_campaign_types

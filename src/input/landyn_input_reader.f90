@@ -1,0 +1,413 @@
+!> The run-deck reader: splits a deck into groups and `name = value` items and reads each item
+!! on its own through an internal-file namelist read into a scratch variable of the registry
+!! entry's storage class and shape (so subscripts, array sections, repeat counts and null values
+!! keep their Fortran namelist meaning), then stores it through landyn_input_access. Every
+!! problem is collected, each with its line: unknown groups and variables (with suggestions),
+!! repeated items, missing or unreadable values, non-ASCII bytes, over-long strings. Angles are
+!! read in degrees and stored in radians; only the elements an item gives are converted.
+!!
+!! Library code: nothing here stops or prints.
+module landyn_input_reader
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use landyn_kinds, only: wp
+  use landyn_errors, only: input_errors_t
+  use landyn_config, only: landyn_input_t, unset_real, is_set, path_len
+  use landyn_strings, only: lower => lower_case, is_blank => is_blank_char, fmt_int => int_text, &
+                            quoted => quote_text
+  use landyn_namelist_text, only: strip_comments, next_group, find_item_names, line_of, first_nonblank, &
+                                  one_line => one_line_text, strip_commas => separators_to_blanks, &
+                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within, leading_text
+  use landyn_input_registry, only: input_var_t, input_vars, n_groups, group_names, group_index, var_index, &
+                                   unit_text, group_list, group_hint, var_hint, k_int, k_logical, k_string
+  use landyn_input_access, only: input_value_t, access_var
+  use landyn_input_format, only: deg_to_rad
+  implicit none
+  private
+
+  public :: parse_deck
+
+  integer, parameter :: ios_implausible = -12345    !! our own iostat: non-finite or absurdly large value
+  real(wp), parameter :: max_magnitude = 1.0e30_wp  !! largest accepted |value| of a real input [any unit]
+  integer, parameter :: max_decimal_exponent = 300  !! numbers beyond 1e300 are rejected before reading
+  integer, parameter :: snippet_len = 100           !! longest deck excerpt quoted in a message [-]
+  integer, parameter :: key_len = 128               !! longest variable reference compared for duplicates [-]
+
+contains
+
+  ! ================================================================ deck parsing
+
+  !> Split the deck into groups and read each group's items; see the module documentation.
+  subroutine parse_deck(text, deck_name, inp, errors)
+    character(len=*), intent(in) :: text           !! deck text [-]
+    character(len=*), intent(in) :: deck_name      !! name for messages [-]
+    type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    character(len=:), allocatable :: work, gname
+    integer :: seen(n_groups)
+    integer, allocatable :: bad(:)
+    integer :: p, q, e, ig, qpos, next_p, line, k, s0, s1, g
+    logical :: terminated
+
+    allocate (character(len=len(text)) :: work)
+    call strip_comments(text, work, qpos)
+    if (qpos > 0) then
+      call errors%add(loc(deck_name, work, qpos)//'unterminated character string (no closing quote): '// &
+                      snippet(work(qpos:)))
+      work(qpos:) = repeat(' ', len(work) - qpos + 1)
+    end if
+    call mask_non_ascii(work, bad)
+    do k = 1, size(bad)
+      call errors%add(loc(deck_name, work, bad(k))//'byte '//hex_byte(text(bad(k):bad(k)))// &
+                      ' is not ASCII text; decks are ASCII text (UTF-8 only inside quoted strings and ! comments)')
+    end do
+    seen = 0
+    p = 1
+    do
+      call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
+      ! text outside any group: the run up to the next '&', reported once
+      if (s0 > 0) call errors%add(loc(deck_name, work, s0)//'text outside any namelist group: '''// &
+                                  snippet(work(s0:s1))//''' (groups start with &name and end with /)')
+      if (g == 0) exit
+      p = g
+      line = line_of(work, p)
+      gname = lower(work(p + 1:q - 1))
+      if (len(gname) == 0) then
+        call errors%add(loc(deck_name, work, p)//"'&' without a group name: "//snippet(work(p:e - 1)))
+        p = next_p
+        cycle
+      end if
+      ig = group_index(gname)
+      if (ig == 0) then
+        call errors%add(loc(deck_name, work, p)//"unknown namelist group '&"//gname//"'"// &
+                        group_hint(gname)//'; valid groups: '//group_list())
+      else if (seen(ig) > 0) then
+        call errors%add(loc(deck_name, work, p)//'&'//gname//': group given a second time (first at line '// &
+                        fmt_int(seen(ig))//'); give each group once')
+      else
+        seen(ig) = line
+        if (.not. terminated) call errors%add(loc(deck_name, work, p)//'&'//gname// &
+                                              ": group is not terminated by '/'")
+        call read_group(ig, work, q, e - 1, deck_name, inp, errors)
+      end if
+      p = next_p
+    end do
+  end subroutine parse_deck
+
+  !> Split one group body into `name = value` items and read each on its own.
+  subroutine read_group(ig, work, b0, b1, deck_name, inp, errors)
+    integer, intent(in) :: ig                      !! group index [-]
+    character(len=*), intent(in) :: work           !! comment-free deck text [-]
+    integer, intent(in) :: b0, b1                  !! body is work(b0:b1) [-]
+    character(len=*), intent(in) :: deck_name      !! name for messages [-]
+    type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    integer, allocatable :: starts(:), eqs(:)
+    character(len=:), allocatable :: gname, item, lhs, base, value, what
+    character(len=key_len), allocatable :: keys(:)
+    character(len=512) :: msg
+    integer :: p, k, nitems, item_end, ios, iv, nkeys
+    logical :: ok
+
+    gname = trim(group_names(ig))
+    ! Find every '=' outside quotes and the start of the name before it.
+    call find_item_names(work, b0, b1, .false., starts, eqs)
+    nitems = size(starts)
+    call leading_text(work, b0, b1, starts, what, item_end)
+    if (len(what) > 0) call errors%add(loc(deck_name, work, first_nonblank(work, b0))//'&'//gname//': '//what// &
+                                       snippet(work(b0:item_end)))
+
+    allocate (keys(nitems))
+    nkeys = 0
+    do k = 1, nitems
+      item_end = b1
+      if (k < nitems) item_end = starts(k + 1) - 1
+      item = one_line(work(starts(k):item_end))
+      if (starts(k) == eqs(k)) then
+        call errors%add(loc(deck_name, work, eqs(k))//'&'//gname//": '=' without a variable name: "// &
+                        snippet(item))
+        cycle
+      end if
+      lhs = lower(remove_blanks(work(starts(k):eqs(k) - 1)))
+      base = lhs
+      p = scan(lhs, '(%')
+      if (p > 0) base = lhs(1:p - 1)
+      value = work(eqs(k) + 1:item_end)
+      iv = var_index(ig, base)
+      if (iv == 0) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//": unknown variable '"// &
+                        trim(adjustl(work(starts(k):eqs(k) - 1)))//"' ("//snippet(item)//')'//var_hint(ig, base))
+        cycle
+      end if
+      if (any(keys(1:nkeys) == lhs)) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs// &
+                        ' is given more than once ('//snippet(item)//'); give it once')
+        cycle
+      end if
+      nkeys = nkeys + 1
+      keys(nkeys) = lhs   ! (a name longer than key_len is compared by its start)
+      if (len_trim(strip_commas(value)) == 0) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': no value given for '//lhs// &
+                        ' ('//trim(base)//' takes '//trim(input_vars(iv)%takes)//unit_text(iv)//')')
+        cycle
+      end if
+      if (len(bare_name_in_value(value)) > 0) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//": '"//bare_name_in_value(value)// &
+                        "' after "//lhs//' = ... is a name without a value ('//snippet(item)// &
+                        "); give it as 'name = value' or remove it")
+        cycle
+      end if
+      if (longest_string(value) > string_limit(iv, inp)) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' is too long ('// &
+                        fmt_int(longest_string(value))//' characters); valid: at most '// &
+                        fmt_int(string_limit(iv, inp))//' characters')
+        cycle
+      end if
+      ok = numbers_within(value, max_decimal_exponent)
+      if (.not. ok) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
+                        snippet(value)//' is out of range; valid: |value| <= 1e30')
+        cycle
+      end if
+      msg = ''
+      call read_item(iv, item, len(base), inp, ios, msg)
+      if (ios == ios_implausible) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
+                        snippet(value)//' is invalid; valid: finite numbers with |value| <= 1e30')
+      else if (ios /= 0) then
+        call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': cannot read '//lhs//' = '// &
+                        quoted(snippet_raw(value))//' ('//trim(base)//' takes '//trim(input_vars(iv)%takes)// &
+                        unit_text(iv)//'): '//trim(msg))
+      end if
+    end do
+  end subroutine read_group
+
+  !> Length of the longest quoted string in a value text (0 if none); doubled quotes count once.
+  pure function longest_string(value) result(n)
+    character(len=*), intent(in) :: value  !! value text [-]
+    integer :: n                           !! longest quoted string [characters]
+    character(len=1) :: quote
+    integer :: p, cur
+    n = 0
+    cur = 0
+    quote = ' '
+    p = 1
+    do while (p <= len(value))
+      if (quote /= ' ') then
+        if (value(p:p) == quote) then
+          if (p < len(value)) then
+            if (value(p + 1:p + 1) == quote) then
+              cur = cur + 1
+              p = p + 2
+              cycle
+            end if
+          end if
+          quote = ' '
+          n = max(n, cur)
+        else
+          cur = cur + 1
+        end if
+      else if (value(p:p) == '"' .or. value(p:p) == "'") then
+        quote = value(p:p)
+        cur = 0
+      end if
+      p = p + 1
+    end do
+    if (quote /= ' ') n = max(n, cur)
+  end function longest_string
+
+  !> Longest character value entry iv holds (huge for non-character variables).
+  pure function string_limit(iv, inp) result(n)
+    integer, intent(in) :: iv                  !! registry entry [-]
+    type(landyn_input_t), intent(in) :: inp    !! input (for the component's length) [-]
+    integer :: n                               !! limit [characters]
+    type(landyn_input_t) :: work
+    type(input_value_t) :: v
+    n = huge(1)
+    if (input_vars(iv)%kind /= k_string) return
+    work = inp
+    call access_var(work, iv, v, .false.)
+    n = len(v%s)
+  end function string_limit
+
+  !> A byte as "0xHH".
+  pure function hex_byte(c) result(h)
+    character(len=1), intent(in) :: c   !! byte [-]
+    character(len=4) :: h               !! its hexadecimal text [-]
+    character(len=16), parameter :: digits = '0123456789ABCDEF'
+    integer :: b
+    b = iachar(c)
+    if (b < 0) b = b + 256
+    h = '0x'//digits(b/16 + 1:b/16 + 1)//digits(mod(b, 16) + 1:mod(b, 16) + 1)
+  end function hex_byte
+
+  !> Read one item into entry iv of `inp`: `item` starts with the variable name (nbase characters),
+  !! the rest is the subscript and `= value`. The name is replaced by a scratch variable of the
+  !! entry's class and shape, read as a one-item namelist record; iomsg names the variable again.
+  subroutine read_item(iv, item, nbase, inp, ios, msg)
+    integer, intent(in) :: iv                   !! registry entry [-]
+    character(len=*), intent(in) :: item        !! 'name(sub) = value' as given [-]
+    integer, intent(in) :: nbase                !! length of the name at the start of item [-]
+    type(landyn_input_t), intent(inout) :: inp  !! updated only when the read succeeds
+    integer, intent(out) :: ios                 !! 0, a Fortran iostat, or ios_implausible [-]
+    character(len=*), intent(inout) :: msg      !! iomsg of a failed read [-]
+    type(input_value_t) :: v
+    type(input_var_t) :: e
+    real(wp) :: lv_real
+    real(wp), allocatable :: lv_reals(:), lv_matrix(:, :)
+    integer :: lv_int
+    logical :: lv_logical
+    character(len=path_len) :: lv_string
+    character(len=:), allocatable :: rest, scratch, buffer
+    namelist /nl_real/ lv_real
+    namelist /nl_reals/ lv_reals
+    namelist /nl_matrix/ lv_matrix
+    namelist /nl_int/ lv_int
+    namelist /nl_logical/ lv_logical
+    namelist /nl_string/ lv_string
+    rest = item(nbase + 1:)//' /'
+    call access_var(inp, iv, v, .false.)
+    e = input_vars(iv)
+    select case (e%kind)
+    case (k_int)
+      scratch = 'lv_int'
+      lv_int = v%i
+      buffer = '&nl_int lv_int'//rest
+      read (buffer, nml=nl_int, iostat=ios, iomsg=msg)
+      v%i = lv_int
+    case (k_logical)
+      scratch = 'lv_logical'
+      lv_logical = v%l
+      buffer = '&nl_logical lv_logical'//rest
+      read (buffer, nml=nl_logical, iostat=ios, iomsg=msg)
+      v%l = lv_logical
+    case (k_string)
+      scratch = 'lv_string'
+      lv_string = v%s
+      buffer = '&nl_string lv_string'//rest
+      read (buffer, nml=nl_string, iostat=ios, iomsg=msg)
+      v%s = lv_string
+    case default
+      call read_reals()
+    end select
+    if (ios /= 0) then
+      msg = renamed(msg, scratch, trim(input_vars(iv)%name))
+      return
+    end if
+    call access_var(inp, iv, v, .true.)
+  contains
+    !> Read a real entry; angles start unset so only the given elements are converted.
+    subroutine read_reals()
+      real(wp), allocatable :: x(:)
+      allocate (x, source=v%r)
+      if (e%angle) x = unset_real
+      if (e%n2 > 0) then
+        scratch = 'lv_matrix'
+        lv_matrix = reshape(x, [e%n1, e%n2])
+        buffer = '&nl_matrix lv_matrix'//rest
+        read (buffer, nml=nl_matrix, iostat=ios, iomsg=msg)
+        x = reshape(lv_matrix, [size(x)])
+      else if (e%n1 > 0) then
+        scratch = 'lv_reals'
+        lv_reals = x
+        buffer = '&nl_reals lv_reals'//rest
+        read (buffer, nml=nl_reals, iostat=ios, iomsg=msg)
+        x = lv_reals
+      else
+        scratch = 'lv_real'
+        lv_real = x(1)
+        buffer = '&nl_real lv_real'//rest
+        read (buffer, nml=nl_real, iostat=ios, iomsg=msg)
+        x = [lv_real]
+      end if
+      if (ios /= 0) return
+      if (.not. plausible(x)) then
+        ios = ios_implausible
+        return
+      end if
+      if (e%angle) then
+        where (is_set(x)) v%r = deg_to_rad(x)
+      else
+        v%r = x
+      end if
+    end subroutine read_reals
+  end subroutine read_item
+
+  !> msg with every occurrence of the scratch name replaced by the variable name.
+  pure function renamed(msg, scratch, name) result(s)
+    character(len=*), intent(in) :: msg      !! iomsg [-]
+    character(len=*), intent(in) :: scratch  !! scratch variable name [-]
+    character(len=*), intent(in) :: name     !! deck variable name [-]
+    character(len=len(msg)) :: s             !! message [-]
+    character(len=:), allocatable :: t
+    integer :: p
+    t = trim(msg)
+    do
+      p = index(t, scratch)
+      if (p == 0) exit
+      t = t(1:p - 1)//name//t(p + len(scratch):)
+    end do
+    s = t
+  end function renamed
+
+  !> True when every set value is finite with |x| <= max_magnitude (unset markers are skipped).
+  pure function plausible(x) result(ok)
+    real(wp), intent(in) :: x(:)  !! values [any unit]
+    logical :: ok                 !! all plausible [-]
+    integer :: i
+    ok = .true.
+    do i = 1, size(x)
+      if (.not. ieee_is_finite(x(i))) then
+        ok = .false.
+      else if (is_set(x(i))) then
+        if (abs(x(i)) > max_magnitude) ok = .false.
+      end if
+    end do
+  end function plausible
+
+  ! ================================================================ text helpers
+
+  !> "deck:line: " (or "line N: " without a deck name) for position p.
+  pure function loc(deck_name, work, p) result(s)
+    character(len=*), intent(in) :: deck_name  !! deck name [-]
+    character(len=*), intent(in) :: work       !! deck text [-]
+    integer, intent(in) :: p                   !! position [-]
+    character(len=:), allocatable :: s         !! location prefix [-]
+    if (len_trim(deck_name) > 0) then
+      s = trim(deck_name)//':'//fmt_int(line_of(work, p))//': '
+    else
+      s = 'line '//fmt_int(line_of(work, p))//': '
+    end if
+  end function loc
+
+  !> Compact excerpt of deck text for messages: blanks collapsed, trailing commas dropped, shortened.
+  pure function snippet(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=:), allocatable :: s  !! excerpt [-]
+    s = snippet_raw(t)
+    if (len(s) > snippet_len) s = s(1:snippet_len - 3)//'...'
+  end function snippet
+
+  pure function snippet_raw(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=:), allocatable :: s  !! text with blanks collapsed and trailing commas dropped [-]
+    integer :: i
+    logical :: prev_blank
+    s = ''
+    prev_blank = .true.
+    do i = 1, len(t)
+      if (is_blank(t(i:i))) then
+        if (.not. prev_blank) s = s//' '
+        prev_blank = .true.
+      else
+        s = s//t(i:i)
+        prev_blank = .false.
+      end if
+    end do
+    do while (len(s) > 0)
+      if (s(len(s):len(s)) /= ' ' .and. s(len(s):len(s)) /= ',') exit
+      s = s(1:len(s) - 1)
+    end do
+    if (len(s) > 4*snippet_len) s = s(1:4*snippet_len - 3)//'...'
+  end function snippet_raw
+
+end module landyn_input_reader
