@@ -147,14 +147,14 @@ contains
   end subroutine check_registry_ranges
 
   !> The valid names of a registry choice list.
-  pure function choice_list(which) result(list)
+  function choice_list(which) result(list)
     character(len=*), intent(in) :: which   !! 'integrator', 'contact_law' or 'friction_law' [-]
     character(len=:), allocatable :: list   !! comma-separated names [-]
     select case (trim(which))
     case ('contact_law')
-      list = contact_law_names
+      list = contact_law_names()
     case ('friction_law')
-      list = friction_law_names
+      list = friction_law_names()
     case default
       list = integrator_names
     end select

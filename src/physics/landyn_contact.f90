@@ -3,10 +3,10 @@
 !!
 !! Adding a law: write landyn_contact_<law>.f90 (a type extending contact_law_t, hertz_spring_t
 !! or damped_hertz_t of landyn_contact_law with pure, allocation-free procedures, and a
-!! `build(b)` subroutine like the other laws'), then register it here: its name in `registered`
-!! (contact_law_names follows from it) and its `case` line in `built`. Fortran has no
-!! procedure-valued constants, so the constant name list and the dispatch are the two lines of a
-!! registration.
+!! `build(b)` subroutine like the other laws'), then add its ONE line to `walk` below:
+!!   block; use landyn_contact_<law>, only: build; if (b%offered('<law>')) call build(b); end block
+!! The factory, the input checks and contact_law_names() all walk the same lines, so the law is
+!! reachable from a deck (&contact law = '<law>') and named in the messages.
 module landyn_contact
   use landyn_config, only: contact_cfg_t, name_len
   use landyn_errors, only: input_errors_t
@@ -22,30 +22,6 @@ module landyn_contact
   public :: contact_law_t, contact_state_t, advance_contact_state
   public :: base_contact_t, base_contact, hunt_crossley_t, hunt_crossley, regolith_t, regolith
   public :: make_contact_law, check_contact_law_input, contact_law_names
-
-  ! ---- registered laws (1/2): their names, in the order of the documentation (one per line)
-  character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
-    'base' &
-    , 'adams_impact' &
-    , 'hertz' &
-    , 'kelvin_voigt' &
-    , 'kelvin_voigt_step' &
-    , 'kelvin_voigt_bilinear' &
-    , 'hunt_crossley' &
-    , 'regolith' &
-    ]
-
-  ! contact_law_names = the registered names joined by ', ' (a constant: cells of name + ', ',
-  ! keep every non-blank character and the separators, drop the last separator)
-  integer, parameter :: n_laws = size(registered)
-  character(len=1), parameter :: cells(name_len + 2, n_laws) = &
-    reshape(transfer(registered//', ', 'a', (name_len + 2)*n_laws), [name_len + 2, n_laws])
-  logical, parameter :: keep(name_len + 2, n_laws) = cells /= ' ' .or. &
-    spread(transfer(repeat('x', name_len)//', ', 'a', name_len + 2) /= 'x', 2, n_laws)
-  integer, parameter :: names_len = count(keep) - 2
-
-  !> Names accepted in &contact law, for messages and documentation: 'base, adams_impact, ...'.
-  character(len=names_len), parameter :: contact_law_names = transfer(pack(cells, keep), repeat(' ', names_len))
 
 contains
 
@@ -66,7 +42,7 @@ contains
     b%cfg = cfg
     b%pre = ''
     known = built(key, b)
-    call b%outcome(known, cfg%law, contact_law_names, stat, errmsg)
+    call b%outcome(known, cfg%law, contact_law_names(), stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = key
@@ -75,7 +51,7 @@ contains
 
   !> The law-dependent checks of the &contact input, one message per problem in the input
   !! validation's format. Nothing for an unknown law name (the input validation checks the name
-  !! against contact_law_names).
+  !! against contact_law_names()).
   subroutine check_contact_law_input(cfg, pre, errors)
     type(contact_cfg_t), intent(in) :: cfg        !! resolved &contact input
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -93,20 +69,35 @@ contains
     character(len=*), intent(in) :: key            !! law name, lower case [-]
     type(contact_build_t), intent(inout) :: b      !! the build: input, messages, law
     logical :: known                               !! key is a registered law [-]
-    known = .true.
-    select case (key)
-    ! ---- registered laws (2/2): their builders
-    case ('base'); block; use landyn_contact_base, only: build; call build(b); end block
-    case ('adams_impact'); block; use landyn_contact_adams_impact, only: build; call build(b); end block
-    case ('hertz'); block; use landyn_contact_hertz, only: build; call build(b); end block
-    case ('kelvin_voigt'); block; use landyn_contact_kelvin_voigt, only: build; call build(b); end block
-    case ('kelvin_voigt_step'); block; use landyn_contact_kelvin_voigt_step, only: build; call build(b); end block
-    case ('kelvin_voigt_bilinear'); block; use landyn_contact_kelvin_voigt_bilinear, only: build; call build(b); end block
-    case ('hunt_crossley'); block; use landyn_contact_hunt_crossley, only: build; call build(b); end block
-    case ('regolith'); block; use landyn_contact_regolith, only: build; call build(b); end block
-    case default
-      known = .false.
-    end select
+    b%key = key
+    b%found = .false.
+    call walk(b)
+    known = b%found
   end function built
+
+  !> Names accepted in &contact law, in the order of the registry, for messages and documentation:
+  !! 'base, ...'.
+  function contact_law_names() result(names)
+    character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
+    type(contact_build_t) :: b
+    b%listing = .true.
+    b%names = ''
+    call walk(b)
+    names = b%names
+  end function contact_law_names
+
+  !> The registry: every contact law, one line each, in the order of the documentation. A line
+  !! offers its law's name; the law asked for is built, a listing collects the names.
+  subroutine walk(b)
+    type(contact_build_t), intent(inout) :: b      !! the build (or the listing)
+    block; use landyn_contact_base, only: build; if (b%offered('base')) call build(b); end block
+    block; use landyn_contact_adams_impact, only: build; if (b%offered('adams_impact')) call build(b); end block
+    block; use landyn_contact_hertz, only: build; if (b%offered('hertz')) call build(b); end block
+    block; use landyn_contact_kelvin_voigt, only: build; if (b%offered('kelvin_voigt')) call build(b); end block
+    block; use landyn_contact_kelvin_voigt_step, only: build; if (b%offered('kelvin_voigt_step')) call build(b); end block
+    block; use landyn_contact_kelvin_voigt_bilinear, only: build; if (b%offered('kelvin_voigt_bilinear')) call build(b); end block
+    block; use landyn_contact_hunt_crossley, only: build; if (b%offered('hunt_crossley')) call build(b); end block
+    block; use landyn_contact_regolith, only: build; if (b%offered('regolith')) call build(b); end block
+  end subroutine walk
 
 end module landyn_contact

@@ -3,10 +3,9 @@
 !!
 !! Adding a law: write landyn_friction_<law>.f90 (a type extending friction_law_t of
 !! landyn_friction_law with pure, allocation-free procedures, has_stiction and mu_stick if it
-!! sticks, and a `build(b)` subroutine like the other laws'), then register it here: its name in
-!! `registered` (friction_law_names follows from it) and its `case` line in `built`. Fortran has
-!! no procedure-valued constants, so the constant name list and the dispatch are the two lines of
-!! a registration.
+!! sticks, and a `build(b)` subroutine like the other laws'), then add its ONE line to `walk`:
+!!   block; use landyn_friction_<law>, only: build; if (b%offered('<law>')) call build(b); end block
+!! The factory, the input checks and friction_law_names() all walk the same lines.
 module landyn_friction
   use landyn_config, only: friction_cfg_t, name_len
   use landyn_errors, only: input_errors_t
@@ -21,29 +20,6 @@ module landyn_friction
   public :: friction_law_t, friction_state_t, coulomb_step_t, coulomb_step
   public :: adams_step, opposing_force, default_stribeck_speed
   public :: make_friction_law, check_friction_law_input, friction_law_names
-
-  ! ---- registered laws (1/2): their names, in the order of the documentation (one per line)
-  character(len=name_len), parameter :: registered(*) = [character(len=name_len) :: &
-    'coulomb_step' &
-    , 'adams_step' &
-    , 'ty1' &
-    , 'ty2' &
-    , 'ty3' &
-    , 'ty4' &
-    , 'ty5' &
-    , 'ty6' &
-    ]
-
-  ! friction_law_names = the registered names joined by ', ' (as contact_law_names in landyn_contact)
-  integer, parameter :: n_laws = size(registered)
-  character(len=1), parameter :: cells(name_len + 2, n_laws) = &
-    reshape(transfer(registered//', ', 'a', (name_len + 2)*n_laws), [name_len + 2, n_laws])
-  logical, parameter :: keep(name_len + 2, n_laws) = cells /= ' ' .or. &
-    spread(transfer(repeat('x', name_len)//', ', 'a', name_len + 2) /= 'x', 2, n_laws)
-  integer, parameter :: names_len = count(keep) - 2
-
-  !> Names accepted in &friction law, for messages and documentation: 'coulomb_step, adams_step, ...'.
-  character(len=names_len), parameter :: friction_law_names = transfer(pack(cells, keep), repeat(' ', names_len))
 
 contains
 
@@ -64,7 +40,7 @@ contains
     b%cfg = cfg
     b%pre = ''
     known = built(key, b)
-    call b%outcome(known, cfg%law, friction_law_names, stat, errmsg)
+    call b%outcome(known, cfg%law, friction_law_names(), stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = key
@@ -73,7 +49,7 @@ contains
 
   !> The law-dependent checks of the &friction input, one message per problem in the input
   !! validation's format. Nothing for an unknown law name (the input validation checks the name
-  !! against friction_law_names).
+  !! against friction_law_names()).
   subroutine check_friction_law_input(cfg, pre, errors)
     type(friction_cfg_t), intent(in) :: cfg        !! resolved &friction input
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -91,19 +67,35 @@ contains
     character(len=*), intent(in) :: key            !! law name, lower case [-]
     type(friction_build_t), intent(inout) :: b     !! the build: input, messages, law
     logical :: known                               !! key is a registered law [-]
-    known = .true.
-    select case (key)
-    ! ---- registered laws (2/2): their builders
-    case ('coulomb_step', 'adams_step'); block; use landyn_friction_coulomb_step, only: build; call build(b); end block
-    case ('ty1'); block; use landyn_friction_coulomb, only: build_ty1; call build_ty1(b); end block
-    case ('ty2'); block; use landyn_friction_coulomb, only: build_ty2; call build_ty2(b); end block
-    case ('ty3'); block; use landyn_friction_regularized_coulomb, only: build; call build(b); end block
-    case ('ty4'); block; use landyn_friction_coulomb, only: build_ty4; call build_ty4(b); end block
-    case ('ty5'); block; use landyn_friction_stribeck, only: build; call build(b); end block
-    case ('ty6'); block; use landyn_friction_modified_stribeck, only: build; call build(b); end block
-    case default
-      known = .false.
-    end select
+    b%key = key
+    b%found = .false.
+    call walk(b)
+    known = b%found
   end function built
+
+  !> Names accepted in &friction law, in the order of the registry, for messages and documentation:
+  !! 'coulomb_step, ...'.
+  function friction_law_names() result(names)
+    character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
+    type(friction_build_t) :: b
+    b%listing = .true.
+    b%names = ''
+    call walk(b)
+    names = b%names
+  end function friction_law_names
+
+  !> The registry: every friction law, one line each, in the order of the documentation. A line
+  !! offers its law's name; the law asked for is built, a listing collects the names.
+  subroutine walk(b)
+    type(friction_build_t), intent(inout) :: b     !! the build (or the listing)
+    block; use landyn_friction_coulomb_step, only: build; if (b%offered('coulomb_step')) call build(b); end block
+    block; use landyn_friction_coulomb_step, only: build; if (b%offered('adams_step')) call build(b); end block
+    block; use landyn_friction_coulomb, only: build => build_ty1; if (b%offered('ty1')) call build(b); end block
+    block; use landyn_friction_coulomb, only: build => build_ty2; if (b%offered('ty2')) call build(b); end block
+    block; use landyn_friction_regularized_coulomb, only: build; if (b%offered('ty3')) call build(b); end block
+    block; use landyn_friction_coulomb, only: build => build_ty4; if (b%offered('ty4')) call build(b); end block
+    block; use landyn_friction_stribeck, only: build; if (b%offered('ty5')) call build(b); end block
+    block; use landyn_friction_modified_stribeck, only: build; if (b%offered('ty6')) call build(b); end block
+  end subroutine walk
 
 end module landyn_friction

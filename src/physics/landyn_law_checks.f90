@@ -20,7 +20,12 @@ module landyn_law_checks
     character(len=:), allocatable :: pre            !! message prefix (deck name or '') [-]
     type(input_errors_t) :: errors                  !! problems found so far
     logical :: check_only = .false.                 !! only the law-dependent checks, build nothing [-]
+    character(len=:), allocatable :: key            !! the law asked for, lower case [-]
+    logical :: listing = .false.                    !! walk the registry to list the names, build nothing [-]
+    character(len=:), allocatable :: names          !! with listing: the registered names, ', '-separated [-]
+    logical :: found = .false.                      !! a registered law answered to key [-]
   contains
+    procedure :: offered => build_offered           !! a registry line: is this law the one asked for?
     procedure :: require => build_require           !! append a message unless a requirement holds
     procedure :: outcome => build_outcome           !! the factory's stat and errmsg
     procedure :: pass_on => build_pass_on           !! append the messages to another collector
@@ -74,6 +79,23 @@ contains
       errmsg = self%errors%message(1)
     end if
   end subroutine build_outcome
+
+  !> One registry line offers the law `name`: .true. when it is the one asked for (b%key), so
+  !! the line builds it; with b%listing, the name is appended to b%names and nothing is built.
+  function build_offered(self, name) result(chosen)
+    class(law_build_t), intent(inout) :: self      !! the build (or the listing)
+    character(len=*), intent(in) :: name           !! a registered law name, lower case [-]
+    logical :: chosen                              !! build this law now [-]
+    chosen = .false.
+    if (self%listing) then
+      if (.not. allocated(self%names)) self%names = ''
+      if (len(self%names) > 0) self%names = self%names//', '
+      self%names = self%names//name
+    else if (allocated(self%key)) then
+      chosen = self%key == name .and. .not. self%found
+      if (chosen) self%found = .true.
+    end if
+  end function build_offered
 
   !> Append the build's messages to errors.
   subroutine build_pass_on(self, errors)
