@@ -1,0 +1,307 @@
+!> The tripod landing gear's model: its coordinates, types, set-up, mass matrix and strokes
+!! (paper section 2.4). The dynamics (landyn_gear_dynamics), the constraint correction
+!! (landyn_gear_constraints), the momentum and inertia terms (landyn_gear_inertia) and the joint
+!! loads (landyn_gear_joint_loads) work on the types defined here; landyn_gear collects the
+!! public interface.
+!!
+!! Each gear has nine generalized coordinates q = (d1, th1, th2, db1, thb1, thb2, dc1, thc1, thc2),
+!! measured in the gear frame, which is fixed to the lander body: per strut its length and the two
+!! angles of its upper universal joint (parametrisation in landyn_kinematics). Six holonomic
+!! constraints (eq. 6) tie the secondaries' lower ball joints to the lugs on the primary's outer
+!! tube, leaving three degrees of freedom: the three strut lengths. Strut k's coordinates are
+!! q(idx_len(k)) (length), q(idx_len(k) + 1) and q(idx_len(k) + 2) (angles): the only place the
+!! layout is defined.
+!!
+!! Mass model (derived, see docs/theory.md): each strut is a landyn_strut strut_t (upper part
+!! pivoting with the strut, lower part sliding with its length, the primary carrying the footpad
+!! mass at its lower end). With u = R0 (sin t2, -sin t1 cos t2, cos t1 cos t2),
+!! |du/dt|^2 = cos^2 t2 t1dot^2 + t2dot^2, so the kinetic energy of one strut is
+!! T = 1/2 m_s Ldot^2 + 1/2 J(L) (cos^2 t2 t1dot^2 + t2dot^2): the mass matrix is diagonal and the
+!! velocity-coupling terms follow from Lagrange's equations.
+module landyn_gear_model
+  use landyn_kinds, only: wp
+  use landyn_buffer, only: buffer_law_t
+  use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs
+  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_strut, only: strut_mass_t, strut_t, strut_from_mass
+  use landyn_tube_friction, only: tube_friction_t
+  implicit none
+  private
+
+  public :: gear_t, buffer_slot_t, gear_state_t, gear_eval_t, strut_kin_t, strut_mass_t
+  public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments
+  public :: gear_strokes, gear_strut_lengths, gear_leg_mass
+  public :: strut_kinematics, strokes, leg_first_moment
+  public :: n_struts, n_q, n_phi, max_rows, idx_len
+
+  integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
+  integer, parameter :: n_q = 3*n_struts                  !! generalized coordinates per gear [-]
+  integer, parameter :: n_phi = 6                         !! holonomic constraints per gear [-]
+  integer, parameter :: max_rows = n_phi + n_struts       !! constraint rows per gear at most (Phi_q and the locks) [-]
+  integer, parameter :: idx_len(n_struts) = [1, 4, 7]     !! index of each strut's length in q [-]
+
+  !> Holder for a polymorphic buffer law (one per strut).
+  type :: buffer_slot_t
+    class(buffer_law_t), allocatable :: law
+  end type buffer_slot_t
+
+  !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
+  type :: strut_kin_t
+    real(wp) :: p(3) = 0.0_wp     !! upper joint, gear frame [m]
+    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
+    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
+    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
+    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
+    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
+    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
+  end type strut_kin_t
+
+  !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
+  !! accumulators) and the caches that depend on it: gear_t's component `st`. Copying it out and
+  !! back restores the gear exactly, so that a step can be rejected or repeated (the geometry,
+  !! masses and buffer laws are parameters and stay in gear_t).
+  type :: gear_state_t
+    real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
+    real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    logical :: locked(n_struts) = .true.                 !! strut locked [-]
+    integer :: dir(n_struts) = 0                         !! sliding direction [-]
+    real(wp) :: s_lock(n_struts) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: s_hismin(n_struts) = 0.0_wp              !! most negative stroke reached [m]
+    real(wp) :: s_hismax(n_struts) = 0.0_wp              !! most positive stroke reached [m]
+    real(wp) :: axial(n_struts) = 0.0_wp                 !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    real(wp) :: work_crush(n_struts) = 0.0_wp            !! energy absorbed by each buffer [J]
+    real(wp) :: max_violation = 0.0_wp            !! largest violation after correction [m]
+    real(wp) :: max_drift = 0.0_wp                !! largest violation before correction [m]
+    integer :: n_correction_iter = 0              !! largest number of correction iterations [-]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
+    ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
+    ! computed once and reused until a strut breaks loose.
+    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
+                                                  !! changing locked or qd from outside requires rigid = .false.)
+    logical :: rigid_cache = .false.              !! the caches below are valid
+    type(strut_kin_t) :: sk_c(n_struts)                  !! cached strut kinematics
+    real(wp) :: mdiag_c(n_q) = 0.0_wp             !! cached mass matrix diagonal [kg, kg m^2]
+    real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! cached constraint rows [-, m]
+    real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! cached Cholesky factor
+    logical :: phq_ok = .false.                   !! Phi_q cache valid [-]
+    real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
+    real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
+  end type gear_state_t
+
+  !> What one evaluation of a gear decides and computes (gear_evaluate) from its committed state,
+  !! without changing it; gear_commit makes it the gear's state.
+  type :: gear_eval_t
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    real(wp) :: axial(n_struts) = 0.0_wp                 !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    logical :: locked(n_struts) = .true.                 !! strut locked [-]
+    integer :: dir(n_struts) = 0                         !! sliding direction [-]
+    real(wp) :: s_lock(n_struts) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    logical :: rigid = .false.                    !! the gear stays rigid [-]
+    ! interface loads (gear_joint_loads), gear frame: columns a, b, c are the forces the upper
+    ! joints put on the body, column 4 the force the footpad puts on the primary at d
+    real(wp) :: f_joint(3, 4) = 0.0_wp            !! joint forces [N]
+    real(wp) :: m_joint(3, 3) = 0.0_wp            !! moments of a, b, c on the body (about the strut's
+                                                  !! Hooke-joint axis: its spin is constrained) [N m]
+    real(wp) :: f_interface(3) = 0.0_wp           !! the gear's total force on the body from the
+                                                  !! leg's momentum balance (= sum of columns a-c) [N]
+  end type gear_eval_t
+
+  !> One landing gear: geometry, masses, buffers and state.
+  type :: gear_t
+    type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
+    real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
+    type(strut_t) :: strut(n_struts)              !! primary, left, right: mass models (landyn_strut)
+    real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
+    type(buffer_slot_t) :: buffer(n_struts)              !! primary, left, right buffer laws
+    type(tube_friction_t) :: tube                 !! friction between the primary's tubes (eqs. 23-26)
+    real(wp) :: sigma(n_struts) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
+    real(wp) :: len0(n_struts) = 0.0_wp                  !! nominal strut lengths [m]
+    type(gear_state_t) :: st                      !! everything that evolves (a snapshot is a copy of it)
+  end type gear_t
+
+contains
+
+  !> Sets up a gear at its nominal configuration, all struts locked and at rest.
+  subroutine gear_init(gear, geom, rot, mass, stat, errmsg, tube)
+    type(gear_t), intent(inout) :: gear          !! gear to initialise (buffers must already be allocated)
+    type(gear_geometry_t), intent(in) :: geom    !! geometry in the gear frame
+    real(wp), intent(in) :: rot(3, 3)            !! gear frame -> lander frame [-]
+    type(strut_mass_t), intent(in) :: mass(n_struts)    !! strut mass properties
+    integer, intent(out) :: stat                 !! STAT_OK, or STAT_FAILED (a buffer law or sliding mass missing)
+    character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
+    integer :: k
+    stat = STAT_OK
+    gear%tube = tube_friction_t()
+    if (present(tube)) gear%tube = tube
+    gear%st%tube_bound = 0.0_wp
+    gear%geom = geom
+    gear%rot = rot
+    do k = 1, n_struts
+      gear%strut(k) = strut_from_mass(mass(k))
+    end do
+    ! Phi_q entries are lug or strut lever arms (|dx/dtheta| <= distance to the joint) or unit
+    ! vectors; lock rows are 1. Twice the longest such distance bounds every entry.
+    gear%row_bound = 2.0_wp*max(1.0_wp, norm2(geom%e_loc), norm2(geom%f_loc), geom%L0, geom%Lb0, geom%Lc0)
+    gear%len0 = [geom%L0, geom%Lb0, geom%Lc0]
+    gear%st%q = 0.0_wp
+    gear%st%q(idx_len) = gear%len0
+    gear%st%qd = 0.0_wp
+    gear%st%qdd = 0.0_wp
+    gear%st%locked = .true.
+    gear%st%phq_ok = .false.
+    gear%st%rigid = .false.          ! entered by gear_integrate once all struts are locked
+    gear%st%rigid_cache = .false.
+    gear%st%dir = 0
+    gear%st%s_lock = 0.0_wp
+    gear%st%s_hismin = 0.0_wp
+    gear%st%s_hismax = 0.0_wp
+    gear%st%axial = 0.0_wp
+    gear%st%f_body = 0.0_wp
+    gear%st%m_body = 0.0_wp
+    gear%st%work_crush = 0.0_wp
+    gear%st%max_violation = 0.0_wp
+    gear%st%max_drift = 0.0_wp
+    gear%st%n_correction_iter = 0
+    do k = 1, n_struts
+      if (.not. allocated(gear%buffer(k)%law)) then
+        stat = STAT_FAILED
+        errmsg = 'gear_init: buffer law not set'
+        return
+      end if
+      if (mass(k)%m_i + mass(k)%m_end <= 0.0_wp) then
+        stat = STAT_FAILED
+        errmsg = 'gear_init: a strut has no sliding mass'
+        return
+      end if
+    end do
+  end subroutine gear_init
+
+  !> Footpad position and velocity in the gear frame.
+  pure subroutine gear_footpad(gear, pos, vel, qd)
+    type(gear_t), intent(in) :: gear     !! gear
+    real(wp), intent(out) :: pos(3)      !! footpad joint position, gear frame [m]
+    real(wp), intent(out) :: vel(3)      !! its velocity relative to the body, gear frame [m/s]
+    real(wp), intent(in), optional :: qd(n_q)  !! generalized velocities to use; default the gear's [m/s, rad/s]
+    real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3), v(n_q)
+    call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
+    if (present(qd)) then
+      v = qd
+    else
+      v = gear%st%qd
+    end if
+    pos = gear%geom%a + gear%st%q(1)*u
+    vel = v(1)*u + gear%st%q(1)*(du1*v(2) + du2*v(3))
+  end subroutine gear_footpad
+
+  !> Upper joint, axis and axis partials of each strut at q (computed once per use).
+  pure subroutine strut_kinematics(gear, q, sk)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
+    type(strut_kin_t), intent(out) :: sk(3) !! per-strut kinematics
+    sk(1)%p = gear%geom%a
+    sk(2)%p = gear%geom%b
+    sk(3)%p = gear%geom%c
+    call strut_axis_derivs(gear%geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
+    call strut_axis_derivs(gear%geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
+    call strut_axis_derivs(gear%geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+  end subroutine strut_kinematics
+
+  !> Diagonal of the mass matrix M(q).
+  pure function gear_mass_matrix(gear, q) result(mdiag)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
+    real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
+    integer :: k, i0
+    real(wp) :: jr, c, len
+    do k = 1, 3
+      i0 = idx_len(k) - 1
+      len = q(i0 + 1)
+      jr = gear%strut(k)%inertia(len)
+      c = cos(q(i0 + 3))
+      mdiag(i0 + 1) = gear%strut(k)%sliding_mass()
+      mdiag(i0 + 2) = jr*c*c
+      mdiag(i0 + 3) = jr
+    end do
+  end function gear_mass_matrix
+
+  !> Relative kinetic energy of the leg parts, 1/2 qd^T M qd.
+  pure function gear_relative_kinetic_energy(gear) result(t)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp) :: t                      !! kinetic energy relative to the body [J]
+    t = 0.5_wp*sum(gear_mass_matrix(gear, gear%st%q)*gear%st%qd**2)
+  end function gear_relative_kinetic_energy
+
+  !> Stroke and stroke rate of each strut (Table 3 sense).
+  pure subroutine strokes(gear, qv, qdv, s, sd)
+    type(gear_t), intent(in) :: gear   !! gear
+    real(wp), intent(in) :: qv(n_q)    !! coordinates [m, rad]
+    real(wp), intent(in) :: qdv(n_q)   !! velocities [m/s, rad/s]
+    real(wp), intent(out) :: s(3)      !! strokes [m]
+    real(wp), intent(out) :: sd(3)     !! stroke rates [m/s]
+    s = gear%sigma*(qv(idx_len) - gear%len0)
+    sd = gear%sigma*qdv(idx_len)
+  end subroutine strokes
+
+  !> The piece of each strut's buffer law at the current strokes (buffer_law_t%segment): changes
+  !! exactly at a stage end or where an end-of-stroke stop begins.
+  pure function gear_law_segments(gear) result(seg)
+    type(gear_t), intent(in) :: gear   !! gear
+    integer :: seg(3)                  !! segment of primary, left, right [-]
+    real(wp) :: s(3), sd(3)
+    integer :: k
+    call strokes(gear, gear%st%q, gear%st%qd, s, sd)
+    do k = 1, 3
+      seg(k) = gear%buffer(k)%law%segment(s(k))
+    end do
+  end function gear_law_segments
+
+  !> First moment of mass of the leg parts, sum m x, gear frame.
+  pure function leg_first_moment(gear, sk, q) result(fm)
+    type(gear_t), intent(in) :: gear         !! gear (masses)
+    type(strut_kin_t), intent(in) :: sk(3)   !! strut kinematics at q
+    real(wp), intent(in) :: q(n_q)           !! coordinates [m, rad]
+    real(wp) :: fm(3)                        !! [kg m]
+    integer :: k
+    real(wp) :: len, sm
+    fm = 0.0_wp
+    do k = 1, 3
+      len = q(idx_len(k))
+      sm = gear%strut(k)%first_moment(len)
+      fm = fm + gear%strut(k)%total_mass()*sk(k)%p + sm*sk(k)%u
+    end do
+  end function leg_first_moment
+
+  !> Stroke and stroke rate of each strut at the gear's current state (Table 3 sense).
+  pure subroutine gear_strokes(gear, s, sd)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(out) :: s(n_struts)    !! strokes [m]
+    real(wp), intent(out) :: sd(n_struts)   !! stroke rates [m/s]
+    call strokes(gear, gear%st%q, gear%st%qd, s, sd)
+  end subroutine gear_strokes
+
+  !> Strut lengths at the gear's current state.
+  pure function gear_strut_lengths(gear) result(len)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: len(n_struts)               !! strut lengths [m]
+    len = gear%st%q(idx_len)
+  end function gear_strut_lengths
+
+  !> Mass of the leg parts, the sum of the strut masses.
+  pure real(wp) function gear_leg_mass(gear) result(m)
+    type(gear_t), intent(in) :: gear        !! gear
+    integer :: k
+    m = 0.0_wp
+    do k = 1, n_struts
+      m = m + gear%strut(k)%total_mass()
+    end do
+  end function gear_leg_mass
+
+end module landyn_gear_model
