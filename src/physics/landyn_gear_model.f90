@@ -30,7 +30,10 @@ module landyn_gear_model
 
   public :: gear_t, buffer_slot_t, gear_state_t, gear_eval_t, strut_kin_t, strut_mass_t
   public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments
-  public :: gear_strokes, gear_strut_lengths, gear_leg_mass
+  public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
+  public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
+  public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
+  public :: gear_save_state, gear_restore_state
   public :: strut_kinematics, strokes, leg_first_moment
   public :: n_struts, n_q, n_phi, max_rows, idx_len
 
@@ -303,5 +306,150 @@ contains
       m = m + gear%strut(k)%total_mass()
     end do
   end function gear_leg_mass
+
+  !> Gear frame -> lander frame rotation.
+  pure function gear_rotation(gear) result(rot)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: rot(3, 3)                   !! [-]
+    rot = gear%rot
+  end function gear_rotation
+
+  !> Generalized velocities (the stored ones: half a step behind the coordinates in the leapfrog).
+  pure function gear_rates(gear) result(qd)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: qd(n_q)                     !! [m/s, rad/s]
+    qd = gear%st%qd
+  end function gear_rates
+
+  !> Replaces the generalized velocities (the system velocity projection; leading the stored
+  !! velocities for an output sample, undone afterwards). A rigid gear must stay at rest.
+  pure subroutine gear_set_rates(gear, qd)
+    type(gear_t), intent(inout) :: gear     !! gear
+    real(wp), intent(in) :: qd(n_q)         !! [m/s, rad/s]
+    gear%st%qd = qd
+  end subroutine gear_set_rates
+
+  !> The generalized velocities led by `lead` times the committed accelerations, qd + lead qdd.
+  pure function gear_led_rates(gear, lead) result(qd)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: lead            !! [s]
+    real(wp) :: qd(n_q)                     !! [m/s, rad/s]
+    qd = gear%st%qd + lead*gear%st%qdd
+  end function gear_led_rates
+
+  !> Which struts are locked (committed state).
+  pure function gear_locks(gear) result(locked)
+    type(gear_t), intent(in) :: gear        !! gear
+    logical :: locked(n_struts)             !! [-]
+    locked = gear%st%locked
+  end function gear_locks
+
+  !> Crush mode of each strut of the committed state (strut_modes).
+  pure function gear_strut_modes(gear) result(m)
+    type(gear_t), intent(in) :: gear        !! gear
+    integer :: m(n_struts)                  !! [-]
+    m = strut_modes(gear%st%locked, gear%st%axial, gear%st%dir)
+  end function gear_strut_modes
+
+  !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
+  !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
+  !! of motion is not a mode).
+  pure function strut_modes(locked, axial, dir) result(m)
+    logical, intent(in) :: locked(n_struts)   !! struts locked [-]
+    real(wp), intent(in) :: axial(n_struts)   !! axial buffer forces [N]
+    integer, intent(in) :: dir(n_struts)      !! sliding directions [-]
+    integer :: m(n_struts)                    !! modes [-]
+    integer :: k
+    do k = 1, n_struts
+      if (locked(k)) then
+        m(k) = 0
+      else if (abs(axial(k)) > tiny(1.0_wp)) then
+        m(k) = sign(1, dir(k))
+      else
+        m(k) = 2
+      end if
+    end do
+  end function strut_modes
+
+  !> The gear is rigid: all struts locked and at rest relative to the body.
+  pure logical function gear_is_rigid(gear) result(rigid)
+    type(gear_t), intent(in) :: gear        !! gear
+    rigid = gear%st%rigid
+  end function gear_is_rigid
+
+  !> Caches Phi_q at the current coordinates for the next evaluation (it was computed for the
+  !! velocity projection at the same configuration).
+  pure subroutine gear_cache_jacobian(gear, phq)
+    type(gear_t), intent(inout) :: gear     !! gear
+    real(wp), intent(in) :: phq(n_phi, n_q) !! Phi_q at gear%st%q [-, m]
+    gear%st%phq = phq
+    gear%st%phq_q = gear%st%q
+    gear%st%phq_ok = .true.
+  end subroutine gear_cache_jacobian
+
+  !> Diagonal of the mass matrix at the current coordinates.
+  pure function gear_mass_diagonal(gear) result(mdiag)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: mdiag(n_q)                  !! [kg, kg m^2]
+    mdiag = gear_mass_matrix(gear, gear%st%q)
+  end function gear_mass_diagonal
+
+  !> Most negative and most positive stroke reached by each strut.
+  pure subroutine gear_crush_history(gear, s_min, s_max)
+    type(gear_t), intent(in) :: gear          !! gear
+    real(wp), intent(out) :: s_min(n_struts)  !! [m]
+    real(wp), intent(out) :: s_max(n_struts)  !! [m]
+    s_min = gear%st%s_hismin
+    s_max = gear%st%s_hismax
+  end subroutine gear_crush_history
+
+  !> Energy absorbed by each buffer so far.
+  pure function gear_crush_work(gear) result(w)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: w(n_struts)                 !! [J]
+    w = gear%st%work_crush
+  end function gear_crush_work
+
+  !> Largest constraint violation after and before the correction so far.
+  pure subroutine gear_violations(gear, violation, drift)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(out) :: violation      !! after correction [m]
+    real(wp), intent(out) :: drift          !! before correction [m]
+    violation = gear%st%max_violation
+    drift = gear%st%max_drift
+  end subroutine gear_violations
+
+  !> Stroke capacity of strut k's buffer in each direction (buffer_law_t%capacity).
+  subroutine gear_buffer_capacity(gear, k, cap_pos, cap_neg)
+    type(gear_t), intent(in) :: gear        !! gear
+    integer, intent(in) :: k                !! strut [-]
+    real(wp), intent(out) :: cap_pos        !! toward +s [m]
+    real(wp), intent(out) :: cap_neg        !! toward -s (0: none) [m]
+    call gear%buffer(k)%law%capacity(cap_pos, cap_neg)
+  end subroutine gear_buffer_capacity
+
+  !> Sets strut k's buffer law (before gear_init).
+  subroutine gear_set_buffer(gear, k, law)
+    type(gear_t), intent(inout) :: gear     !! gear
+    integer, intent(in) :: k                !! strut [-]
+    class(buffer_law_t), intent(in) :: law  !! buffer law
+    if (allocated(gear%buffer(k)%law)) deallocate (gear%buffer(k)%law)
+    allocate (gear%buffer(k)%law, source=law)
+  end subroutine gear_set_buffer
+
+  !> Copies the gear's evolving state out (a snapshot: restoring it repeats the gear bit for bit).
+  pure subroutine gear_save_state(gear, st)
+    type(gear_t), intent(in) :: gear        !! gear
+    ! inout, not out: intent(out) would first reset the record to its defaults at every save
+    type(gear_state_t), intent(inout) :: st !! its state (previous contents replaced)
+    st = gear%st
+  end subroutine gear_save_state
+
+  !> Puts a state from gear_save_state back.
+  pure subroutine gear_restore_state(gear, st)
+    type(gear_t), intent(inout) :: gear     !! gear
+    type(gear_state_t), intent(in) :: st    !! saved state
+    gear%st = st
+  end subroutine gear_restore_state
 
 end module landyn_gear_model
