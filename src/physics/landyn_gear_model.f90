@@ -9,8 +9,8 @@
 !! angles of its upper universal joint (parametrisation in landyn_kinematics). Six holonomic
 !! constraints (eq. 6) tie the secondaries' lower ball joints to the lugs on the primary's outer
 !! tube, leaving three degrees of freedom: the three strut lengths. Strut k's coordinates are
-!! q(idx_len(k)) (length), q(idx_len(k) + 1) and q(idx_len(k) + 2) (angles): the only place the
-!! layout is defined.
+!! q(idx_len(k)) (length), q(idx_len(k) + 1) and q(idx_len(k) + 2) (angles); the layout itself is
+!! defined once, by landyn_kinematics' iq_* indices.
 !!
 !! Mass model (derived, see docs/theory.md): each strut is a landyn_strut strut_t (upper part
 !! pivoting with the strut, lower part sliding with its length, the primary carrying the footpad
@@ -21,7 +21,7 @@
 module landyn_gear_model
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
-  use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs
+  use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strut, only: strut_mass_t, strut_t, strut_from_mass
   use landyn_tube_friction, only: tube_friction_t
@@ -38,10 +38,10 @@ module landyn_gear_model
   public :: n_struts, n_q, n_phi, max_rows, idx_len
 
   integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
-  integer, parameter :: n_q = 3*n_struts                  !! generalized coordinates per gear [-]
-  integer, parameter :: n_phi = 6                         !! holonomic constraints per gear [-]
+  integer, parameter :: n_q = n_gear_q                    !! generalized coordinates per gear (landyn_kinematics) [-]
+  integer, parameter :: n_phi = n_gear_phi                !! holonomic constraints per gear (landyn_kinematics) [-]
   integer, parameter :: max_rows = n_phi + n_struts       !! constraint rows per gear at most (Phi_q and the locks) [-]
-  integer, parameter :: idx_len(n_struts) = [1, 4, 7]     !! index of each strut's length in q [-]
+  integer, parameter :: idx_len(n_struts) = [iq_d1, iq_db1, iq_dc1]   !! index of each strut's length in q [-]
 
   !> Holder for a polymorphic buffer law (one per strut).
   type :: buffer_slot_t
