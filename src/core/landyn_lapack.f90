@@ -10,6 +10,8 @@ module landyn_lapack
   public :: solve_general, solve_spd, factor_spd, solve_spd_unblocked
   public :: factor_spd_unblocked
 
+  character(len=*), parameter :: constraint_hint = '; constraints redundant or singular configuration'  !! [-]
+
   interface
     subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp
@@ -66,7 +68,7 @@ contains
       write (errmsg, '(a,a,i0,a,i0,a)') trim(what), ': matrix is singular (LAPACK dgesv: U(', info, ',', &
         info, ') = 0)'
     else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dgesv'
+      call illegal_argument(info, 'dgesv', what, errmsg)
     end if
   end subroutine solve_general
 
@@ -82,12 +84,7 @@ contains
     integer :: info
     call dposv('U', n, 1, a, lda, b, n, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dposv: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dposv'
-    end if
+    call spd_info(info, 'dposv', what, constraint_hint, errmsg)
   end subroutine solve_spd
 
   !> Solves A x = b for a small symmetric positive-definite A with LAPACK's unblocked Cholesky
@@ -104,14 +101,8 @@ contains
     integer :: info
     call dpotf2('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotf2: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-      return
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotf2'
-      return
-    end if
+    call spd_info(info, 'dpotf2', what, constraint_hint, errmsg)
+    if (info /= 0) return
     call dtrsv('U', 'T', 'N', n, a, lda, b, 1)
     call dtrsv('U', 'N', 'N', n, a, lda, b, 1)
   end subroutine solve_spd_unblocked
@@ -128,12 +119,7 @@ contains
     integer :: info
     call dpotrf('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotrf: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotrf'
-    end if
+    call spd_info(info, 'dpotrf', what, constraint_hint, errmsg)
   end subroutine factor_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
@@ -148,12 +134,31 @@ contains
     integer :: info
     call dpotf2('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotf2: leading minor ', &
-        info, ' is not positive)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotf2'
-    end if
+    call spd_info(info, 'dpotf2', what, '', errmsg)
   end subroutine factor_spd_unblocked
+
+  !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
+  subroutine spd_info(info, routine, what, hint, errmsg)
+    integer, intent(in) :: info                    !! LAPACK INFO [-]
+    character(len=*), intent(in) :: routine        !! LAPACK routine [-]
+    character(len=*), intent(in) :: what           !! name of the system [-]
+    character(len=*), intent(in) :: hint           !! text after the minor's number [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    if (info > 0) then
+      write (errmsg, '(a,a,a,a,i0,a,a,a)') trim(what), ': matrix is not positive definite (LAPACK ', routine, &
+        ': leading minor ', info, ' is not positive', hint, ')'
+    else if (info < 0) then
+      call illegal_argument(info, routine, what, errmsg)
+    end if
+  end subroutine spd_info
+
+  !> The message of a negative LAPACK INFO.
+  subroutine illegal_argument(info, routine, what, errmsg)
+    integer, intent(in) :: info                    !! LAPACK INFO, < 0 [-]
+    character(len=*), intent(in) :: routine        !! LAPACK routine [-]
+    character(len=*), intent(in) :: what           !! name of the system [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    write (errmsg, '(a,a,i0,a,a)') trim(what), ': illegal argument ', -info, ' to LAPACK ', routine
+  end subroutine illegal_argument
 
 end module landyn_lapack

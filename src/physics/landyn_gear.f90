@@ -21,7 +21,7 @@ module landyn_gear
                                gear_restore_state, n_struts, n_q, n_phi, max_rows, idx_len
   use landyn_gear_inertia, only: gear_generalized_forces, gear_relative_inertia, gear_relative_momenta, &
                                  gear_leg_momentum, gear_momentum_maps
-  use landyn_gear_dynamics, only: gear_evaluate, gear_commit, gear_prepare, gear_dynamics, gear_solve_augmented_full
+  use landyn_gear_dynamics, only: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
   use landyn_gear_constraints, only: gear_integrate, gear_settle, gear_velocity_rows, GEAR_DRIFT, GEAR_NOT_CONVERGED
   implicit none
   private
@@ -29,7 +29,7 @@ module landyn_gear
   public :: gear_t, strut_mass_t, buffer_slot_t, gear_state_t, gear_eval_t
   public :: gear_init, gear_evaluate, gear_commit, gear_prepare, gear_dynamics, gear_integrate
   public :: gear_footpad, gear_mass_matrix, gear_generalized_forces
-  public :: gear_relative_kinetic_energy, gear_solve_augmented_full, gear_relative_inertia, gear_leg_momentum
+  public :: gear_relative_kinetic_energy, gear_relative_inertia, gear_leg_momentum
   public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle, gear_law_segments
   public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal

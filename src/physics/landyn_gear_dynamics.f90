@@ -10,13 +10,13 @@
 !!
 !! The augmented system [[M, A^T], [A, 0]] [qdd; lambda] = [Q; b] (eqs. 14-16, A = Phi_q plus the
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
-!! complement A M^-1 A^T is small and SPD); `gear_solve_augmented_full` solves the unreduced
-!! system with LU for cross-checking.
+!! complement A M^-1 A^T is small and SPD); test_gear solves the unreduced system with LU for
+!! cross-checking.
 module landyn_gear_dynamics
   use landyn_kinds, only: wp
   use landyn_buffer, only: rigid_force
   use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3
-  use landyn_lapack, only: solve_spd_unblocked, solve_general, factor_spd
+  use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
   use landyn_status, only: STAT_OK
   use landyn_tube_friction, only: tube_friction_bound, add_tube_bound
@@ -27,7 +27,7 @@ module landyn_gear_dynamics
   implicit none
   private
 
-  public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics, gear_solve_augmented_full
+  public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
 
 contains
 
@@ -398,33 +398,5 @@ contains
     end do
     qdd = qdd/mdiag
   end subroutine solve_reduced
-
-  !> The unreduced augmented system [[M, A^T],[A, 0]] [qdd; lam] = [Q; b] solved by LU (for checks).
-  subroutine gear_solve_augmented_full(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
-    integer, intent(in) :: nrow                  !! number of constraint rows
-    real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
-    real(wp), intent(in) :: b(:)                 !! constraint right-hand side
-    real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
-    real(wp), intent(in) :: qf(n_q)              !! generalized force
-    real(wp), intent(out) :: qdd(n_q)            !! accelerations
-    real(wp), intent(out) :: lam(:)              !! multipliers
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp) :: big(n_q + max_rows, n_q + max_rows), rhs(n_q + max_rows)
-    integer :: n, j
-    n = n_q + nrow
-    big = 0.0_wp
-    do j = 1, n_q
-      big(j, j) = mdiag(j)
-    end do
-    big(1:n_q, n_q + 1:n) = transpose(a(1:nrow, 1:n_q))
-    big(n_q + 1:n, 1:n_q) = a(1:nrow, 1:n_q)
-    rhs(1:n_q) = qf
-    rhs(n_q + 1:n) = b(1:nrow)
-    call solve_general(n, big, n_q + max_rows, rhs, stat, errmsg, 'gear DAE (augmented)')
-    if (stat /= 0) return
-    qdd = rhs(1:n_q)
-    lam(1:nrow) = rhs(n_q + 1:n)
-  end subroutine gear_solve_augmented_full
 
 end module landyn_gear_dynamics
