@@ -523,9 +523,9 @@ contains
   !> Counts the changes of each strut's crush mode (strut_modes), i.e. the switches of the buffer
   !! force law.
   pure subroutine count_mode_switches(m, mode, switches)
-    integer, intent(in) :: m(3)               !! modes after the step [-]
-    integer, intent(inout) :: mode(3)         !! mode at the previous step, updated [-]
-    integer, intent(inout) :: switches(3)     !! mode changes so far [-]
+    integer, intent(in) :: m(:)               !! modes after the step [-]
+    integer, intent(inout) :: mode(:)         !! mode at the previous step, updated [-]
+    integer, intent(inout) :: switches(:)     !! mode changes so far [-]
     where (m /= mode) switches = switches + 1
     mode = m
   end subroutine count_mode_switches

@@ -58,7 +58,7 @@ module landyn_sim_model
     real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
     real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
     logical :: touched = .false.                       !! a footpad has touched the ground [-]
-    integer :: mode(3, max_gears) = 0                  !! crush mode of each strut at the last step [-]
+    integer :: mode(n_struts, max_gears) = 0           !! crush mode of each strut at the last step [-]
   end type sim_loop_t
 
   !> One simulation in progress: the model (parameters and evolving state) and the integrator.
@@ -89,11 +89,11 @@ module landyn_sim_model
     type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
                                                        !! forces, lock decisions (committed by sim_advance)
     real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
-    real(wp) :: strut_len(3, max_gears) = 0.0_wp       !! strut lengths [m]
+    real(wp) :: strut_len(n_struts, max_gears) = 0.0_wp  !! strut lengths [m]
     logical :: locks_changed = .false.                 !! a strut locked or was released [-]
     ! discrete state after the evaluation: what an event changes
-    integer :: mode(3, max_gears) = 0                  !! strut modes (strut_modes) [-]
-    integer :: segment(3, max_gears) = 0               !! piece of each buffer law (stage, stop) [-]
+    integer :: mode(n_struts, max_gears) = 0           !! strut modes (strut_modes) [-]
+    integer :: segment(n_struts, max_gears) = 0        !! piece of each buffer law (stage, stop) [-]
     logical :: contact(max_gears) = .false.            !! footpad in contact [-]
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
     real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
@@ -123,7 +123,7 @@ contains
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! message on failure
     type(gear_geometry_t) :: geom
-    type(strut_mass_t) :: sm(3)
+    type(strut_mass_t) :: sm(n_struts)
     type(tube_friction_t) :: tube
     real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
     integer :: i, k

@@ -101,23 +101,24 @@ contains
     integer, intent(in) :: n_cap              !! capacity in samples
     allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
               res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
-    allocate (res%strut_length(3, ng, n_cap), res%stroke(3, ng, n_cap), res%strut_force(3, ng, n_cap), &
+    allocate (res%strut_length(n_struts, ng, n_cap), res%stroke(n_struts, ng, n_cap), res%strut_force(n_struts, ng, n_cap), &
               res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
     allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
               res%slip_speed(ng, n_cap), res%energy(n_cap, n_energy))
-    allocate (res%overload_peak(n_cap), res%normal_force_peak(ng, n_cap), res%strut_force_peak(3, ng, n_cap), &
-              res%acc_normal_force(ng), res%acc_strut_force(3, ng))
+    allocate (res%overload_peak(n_cap), res%normal_force_peak(ng, n_cap), res%strut_force_peak(n_struts, ng, n_cap), &
+              res%acc_normal_force(ng), res%acc_strut_force(n_struts, ng))
     res%acc_overload = 0.0_wp
     res%acc_normal_force = 0.0_wp
     res%acc_strut_force = 0.0_wp
-    allocate (res%crush_net(3, ng), res%crush_pos(3, ng), res%crush_neg(3, ng), res%stroke_final(3, ng), &
-              res%stroke_margin(3, ng), res%crush_work(3, ng), res%bottomed(3, ng), res%peak_strut_force(3, ng))
+    allocate (res%crush_net(n_struts, ng), res%crush_pos(n_struts, ng), res%crush_neg(n_struts, ng), &
+              res%stroke_final(n_struts, ng), res%stroke_margin(n_struts, ng), res%crush_work(n_struts, ng), &
+              res%bottomed(n_struts, ng), res%peak_strut_force(n_struts, ng))
     allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))
     res%peak_penetration = 0.0_wp
     res%slide_distance = 0.0_wp
     res%peak_normal_force = 0.0_wp
     res%peak_strut_force = 0.0_wp
-    allocate (res%mode_switches(3, ng))
+    allocate (res%mode_switches(n_struts, ng))
     res%mode_switches = 0
     allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
     res%loads = 0.0_wp                 ! stays zero when the interface loads are not computed

@@ -35,9 +35,11 @@ module landyn_gear_model
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
   public :: gear_save_state, gear_restore_state
   public :: strut_kinematics, strokes, leg_first_moment
-  public :: n_struts, n_q, n_phi, max_rows, idx_len
+  public :: n_struts, strut_names, n_q, n_phi, max_rows, idx_len
 
   integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
+  character(len=*), parameter :: strut_names(n_struts) = [character(len=15) :: 'primary', 'secondary left', &
+                                                          'secondary right']   !! names of the struts [-]
   integer, parameter :: n_q = n_gear_q                    !! generalized coordinates per gear (landyn_kinematics) [-]
   integer, parameter :: n_phi = n_gear_phi                !! holonomic constraints per gear (landyn_kinematics) [-]
   integer, parameter :: max_rows = n_phi + n_struts       !! constraint rows per gear at most (Phi_q and the locks) [-]
