@@ -18,7 +18,8 @@ module landyn_gear
                                gear_led_rates, gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, &
                                gear_cache_jacobian, gear_mass_diagonal, gear_crush_history, gear_crush_work, &
                                gear_violations, gear_buffer_capacity, gear_set_buffer, gear_save_state, &
-                               gear_restore_state, n_struts, strut_names, n_q, n_phi, max_rows, idx_len
+                               gear_restore_state, gear_axial_forces, gear_body_load, n_struts, strut_names, &
+                               n_q, n_phi, max_rows, idx_len
   use landyn_gear_inertia, only: gear_generalized_forces, gear_relative_inertia, gear_relative_momenta, &
                                  gear_leg_momentum, gear_momentum_maps
   use landyn_gear_dynamics, only: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
@@ -34,7 +35,7 @@ module landyn_gear
   public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
-  public :: gear_save_state, gear_restore_state
+  public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
   public :: GEAR_DRIFT, GEAR_NOT_CONVERGED
   public :: max_rows, idx_len, n_struts, strut_names
   public :: n_q, n_phi

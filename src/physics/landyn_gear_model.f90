@@ -33,7 +33,7 @@ module landyn_gear_model
   public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
-  public :: gear_save_state, gear_restore_state
+  public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
   public :: strut_kinematics, strokes, leg_first_moment
   public :: n_struts, strut_names, n_q, n_phi, max_rows, idx_len
 
@@ -453,5 +453,22 @@ contains
     type(gear_state_t), intent(in) :: st    !! saved state
     gear%st = st
   end subroutine gear_restore_state
+
+  !> Axial buffer forces of the committed state (compression positive for the primary, the
+  !! Table-3 sense of each strut).
+  pure function gear_axial_forces(gear) result(axial)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp) :: axial(n_struts)             !! [N]
+    axial = gear%st%axial
+  end function gear_axial_forces
+
+  !> The committed load on the body: force and moment about the lander origin, gear frame.
+  pure subroutine gear_body_load(gear, f_body, m_body)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(out) :: f_body(3)      !! [N]
+    real(wp), intent(out) :: m_body(3)      !! [N m]
+    f_body = gear%st%f_body
+    m_body = gear%st%m_body
+  end subroutine gear_body_load
 
 end module landyn_gear_model
