@@ -19,7 +19,7 @@ module landyn_sim_core
                          body_point_acceleration, body_kinetic_energy
   use landyn_gear, only: gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, gear_settle, &
                          gear_law_segments, gear_rotation, gear_led_rates, gear_locks, gear_strut_lengths, &
-                         gear_strut_modes, strut_modes, n_q
+                         gear_strut_modes, strut_modes, n_q, n_struts
   use landyn_impact, only: system_velocity_projection
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
@@ -161,7 +161,7 @@ contains
       end if
       ! ---- Step 2: footpads and ground forces
       do i = 1, ng
-        rg = gear_rotation(model%gear(i))
+        rg = model%rot(:, :, i)
         if (present(v_lead)) then
           qd_l = gear_led_rates(model%gear(i), v_lead)
           call gear_footpad(model%gear(i), pos_g, vel_g, qd_l)
@@ -208,7 +208,7 @@ contains
       moment = 0.0_wp
       ev%locks_changed = .false.
       do i = 1, ng
-        rg = gear_rotation(model%gear(i))
+        rg = model%rot(:, :, i)
         field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
@@ -516,16 +516,16 @@ contains
     integer :: i
     v = 0.0_wp
     do i = 1, model%n_gears
-      v(:, i) = gear_load_vector(gear_rotation(model%gear(i)), ev%gear(i))
+      v(:, i) = gear_load_vector(model%rot(:, :, i), ev%gear(i))
     end do
   end function eval_loads
 
   !> Counts the changes of each strut's crush mode (strut_modes), i.e. the switches of the buffer
   !! force law.
   pure subroutine count_mode_switches(m, mode, switches)
-    integer, intent(in) :: m(:)               !! modes after the step [-]
-    integer, intent(inout) :: mode(:)         !! mode at the previous step, updated [-]
-    integer, intent(inout) :: switches(:)     !! mode changes so far [-]
+    integer, intent(in) :: m(n_struts)        !! modes after the step [-]
+    integer, intent(inout) :: mode(n_struts)  !! mode at the previous step, updated [-]
+    integer, intent(inout) :: switches(n_struts)  !! mode changes so far [-]
     where (m /= mode) switches = switches + 1
     mode = m
   end subroutine count_mode_switches

@@ -37,6 +37,8 @@ module landyn_sim_model
     class(friction_law_t), allocatable :: friction     !! friction law
     type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
+    real(wp) :: rot(3, 3, max_gears) = 0.0_wp   !! gear frame -> lander frame of each gear (gear_rotation,
+                                                !! set at assembly) [-]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
   end type model_t
@@ -176,6 +178,7 @@ contains
       end do
       call gear_init(model%gear(i), geom, rot, sm, stat, m2, tube)
       if (stat /= 0) then; errmsg = m2; return; end if
+      model%rot(:, :, i) = gear_rotation(model%gear(i))
     end do
 
     ! Placement: the given position, or the lowest footpad at `clearance` above its surface.

@@ -93,7 +93,7 @@ contains
     end if
     call strut_kinematics(gear, gear%st%q, sk)
     mdiag = gear_mass_matrix(gear, gear%st%q)
-    call generalized_forces(gear, gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
     if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
       phq = gear%st%phq
@@ -289,7 +289,7 @@ contains
     done = .false.
     nrow = n_phi + 3
     zero = 0.0_wp
-    call generalized_forces(gear, c%q, zero, c%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
+    call generalized_forces(c%q, zero, c%sk_c, f_field, f_foot, q_ine, q_grv, q_ext)
     qf = q_grv + q_ext
     if (present(alpha)) qf = qf + alpha_forces(gear, c%q, c%sk_c, alpha)
     qf = qf/c%mdiag_c

@@ -9,8 +9,9 @@
 !! a few deg/s at most, and their effect on a leg of tens of kg is far below the crush levels.
 module landyn_gear_inertia
   use landyn_kinds, only: wp
+  use landyn_strut, only: strut_mass_functions_t
   use landyn_kinematics, only: cross3
-  use landyn_gear_model, only: gear_t, strut_kin_t, n_q, n_struts, idx_len, strut_kinematics, leg_first_moment, gear_leg_mass
+  use landyn_gear_model, only: gear_t, strut_kin_t, n_q, n_struts, idx_len, strut_kinematics, leg_first_moment
   implicit none
   private
 
@@ -31,11 +32,11 @@ contains
     real(wp), intent(out) :: q_ext(n_q)  !! footpad-force generalized force [N, N m]
     type(strut_kin_t) :: sk(3)
     call strut_kinematics(gear, q, sk)
-    call generalized_forces(gear, q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    call generalized_forces(q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
   end subroutine gear_generalized_forces
 
-  pure subroutine generalized_forces(gear, q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
-    type(gear_t), intent(in) :: gear       !! gear
+  !> generalized_forces with the strut kinematics and mass functions at q given.
+  pure subroutine generalized_forces(q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     real(wp), intent(in) :: q(n_q)         !! coordinates [m, rad]
     real(wp), intent(in) :: qd(n_q)        !! velocities [m/s, rad/s]
     type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at q
@@ -45,18 +46,20 @@ contains
     real(wp), intent(out) :: q_grv(n_q)    !! field [N, N m]
     real(wp), intent(out) :: q_ext(n_q)    !! footpad force [N, N m]
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: jr, jp, c, sn, len, lend, t1d, t2d, fm
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1); lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
-      jr = gear%strut(k)%inertia(len)
-      jp = gear%strut(k)%inertia_rate(len)
+      mf = sk(k)%mf
+      jr = mf%j
+      jp = mf%dj
       c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
       q_ine(i0 + 1) = 0.5_wp*jp*(c*c*t1d*t1d + t2d*t2d)
       q_ine(i0 + 2) = -jp*lend*c*c*t1d + 2.0_wp*jr*c*sn*t1d*t2d
       q_ine(i0 + 3) = -jp*lend*t2d - jr*c*sn*t1d*t1d
-      fm = gear%strut(k)%first_moment(len)
-      q_grv(i0 + 1) = gear%strut(k)%sliding_mass()*dot_product(sk(k)%u, f_field)
+      fm = mf%s
+      q_grv(i0 + 1) = mf%m_s*dot_product(sk(k)%u, f_field)
       q_grv(i0 + 2) = fm*dot_product(sk(k)%u1, f_field)
       q_grv(i0 + 3) = fm*dot_product(sk(k)%u2, f_field)
     end do
@@ -77,14 +80,16 @@ contains
     real(wp), intent(in) :: alpha(3)       !! angular acceleration, gear axes [rad/s^2]
     real(wp) :: qa(n_q)                    !! generalized force [N, N m]
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: len, sm, jr, pa(3)
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1)
-      sm = gear%strut(k)%first_moment(len)
-      jr = gear%strut(k)%inertia(len)
+      mf = sk(k)%mf
+      sm = mf%s
+      jr = mf%j
       pa = sk(k)%p - gear%geom%a
-      qa(i0 + 1) = -dot_product(alpha, gear%strut(k)%sliding_mass()*cross3(pa, sk(k)%u))
+      qa(i0 + 1) = -dot_product(alpha, mf%m_s*cross3(pa, sk(k)%u))
       qa(i0 + 2) = -dot_product(alpha, sm*cross3(pa, sk(k)%u1) + jr*cross3(sk(k)%u, sk(k)%u1))
       qa(i0 + 3) = -dot_product(alpha, sm*cross3(pa, sk(k)%u2) + jr*cross3(sk(k)%u, sk(k)%u2))
     end do
@@ -114,20 +119,22 @@ contains
     real(wp), intent(out), optional :: h_strut(3, 3)  !! rate of each strut's relative angular momentum
                                                       !! about its upper joint [N m]
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: ud(3), udd(3), f(3), hd(3), len, ld, ldd, t1d, t2d, sm, s1, jr
     f_rel = 0.0_wp
     m_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1); ld = gear%st%qd(i0 + 1); ldd = qdd(i0 + 1)
+      mf = sk(k)%mf
       t1d = gear%st%qd(i0 + 2); t2d = gear%st%qd(i0 + 3)
       ud = sk(k)%u1*t1d + sk(k)%u2*t2d
       udd = sk(k)%u1*qdd(i0 + 2) + sk(k)%u2*qdd(i0 + 3) + sk(k)%u11*t1d*t1d &
             + 2.0_wp*sk(k)%u12*t1d*t2d + sk(k)%u22*t2d*t2d
-      s1 = gear%strut(k)%sliding_first_moment(len)
-      sm = gear%strut(k)%upper_first_moment() + s1
-      jr = gear%strut(k)%inertia(len)
-      f = gear%strut(k)%sliding_mass()*ldd*sk(k)%u + 2.0_wp*gear%strut(k)%sliding_mass()*ld*ud + sm*udd
+      s1 = mf%s1
+      sm = mf%s0 + s1
+      jr = mf%j
+      f = mf%m_s*ldd*sk(k)%u + 2.0_wp*mf%m_s*ld*ud + sm*udd
       if (present(f_strut)) f_strut(:, k) = f
       f_rel = f_rel + f
       hd = cross3(sk(k)%u, 2.0_wp*s1*ld*ud + jr*udd)
@@ -157,6 +164,7 @@ contains
     real(wp), intent(out) :: h_rel(3)      !! relative angular momentum about O_L [kg m^2/s]
     real(wp), intent(out) :: t_rel         !! relative kinetic energy [J]
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: ud(3), p(3), len, sm, jr, c
     p_rel = 0.0_wp
     h_rel = 0.0_wp
@@ -164,14 +172,15 @@ contains
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
+      mf = sk(k)%mf
       ud = sk(k)%u1*qd(i0 + 2) + sk(k)%u2*qd(i0 + 3)
-      sm = gear%strut(k)%first_moment(len)
-      jr = gear%strut(k)%inertia(len)
-      p = gear%strut(k)%sliding_mass()*qd(i0 + 1)*sk(k)%u + sm*ud
+      sm = mf%s
+      jr = mf%j
+      p = mf%m_s*qd(i0 + 1)*sk(k)%u + sm*ud
       p_rel = p_rel + p
       h_rel = h_rel + cross3(sk(k)%p, p) + jr*cross3(sk(k)%u, ud)
       c = cos(gear%st%q(i0 + 3))
-      t_rel = t_rel + 0.5_wp*(gear%strut(k)%sliding_mass()*qd(i0 + 1)**2 + jr*(c*c*qd(i0 + 2)**2 + qd(i0 + 3)**2))
+      t_rel = t_rel + 0.5_wp*(mf%m_s*qd(i0 + 1)**2 + jr*(c*c*qd(i0 + 2)**2 + qd(i0 + 3)**2))
     end do
   end subroutine momenta
 
@@ -183,18 +192,20 @@ contains
     real(wp), intent(out) :: leg_mass        !! sum m [kg]
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: ud(3), len, sm
     call strut_kinematics(gear, gear%st%q, sk)
     p_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
+      mf = sk(k)%mf
       ud = sk(k)%u1*gear%st%qd(i0 + 2) + sk(k)%u2*gear%st%qd(i0 + 3)
-      sm = gear%strut(k)%first_moment(len)
-      p_rel = p_rel + gear%strut(k)%sliding_mass()*gear%st%qd(i0 + 1)*sk(k)%u + sm*ud
+      sm = mf%s
+      p_rel = p_rel + mf%m_s*gear%st%qd(i0 + 1)*sk(k)%u + sm*ud
     end do
-    first_moment = leg_first_moment(gear, sk, gear%st%q)
-    leg_mass = gear_leg_mass(gear)
+    first_moment = leg_first_moment(sk, gear%st%q)
+    leg_mass = gear%leg_mass
   end subroutine gear_leg_momentum
 
   !> Linear maps from the generalized velocities to the legs' relative linear momentum and their
@@ -206,14 +217,16 @@ contains
     real(wp), intent(out) :: hm(3, n_q)    !! d h_rel / d qd [kg m, kg m^2]
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: len, sm, jr
     call strut_kinematics(gear, gear%st%q, sk)
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = gear%st%q(i0 + 1)
-      sm = gear%strut(k)%first_moment(len)
-      jr = gear%strut(k)%inertia(len)
-      pm(:, i0 + 1) = gear%strut(k)%sliding_mass()*sk(k)%u
+      mf = sk(k)%mf
+      sm = mf%s
+      jr = mf%j
+      pm(:, i0 + 1) = mf%m_s*sk(k)%u
       pm(:, i0 + 2) = sm*sk(k)%u1
       pm(:, i0 + 3) = sm*sk(k)%u2
       hm(:, i0 + 1) = cross3(sk(k)%p, pm(:, i0 + 1))

@@ -2,8 +2,9 @@
 !! footpad on the primary, from each strut's free-body balance (landyn_loads collects them).
 module landyn_gear_joint_loads
   use landyn_kinds, only: wp
+  use landyn_strut, only: strut_mass_functions_t
   use landyn_kinematics, only: cross3
-  use landyn_gear_model, only: gear_t, strut_kin_t, n_q, n_phi, n_struts, idx_len, leg_first_moment, gear_leg_mass
+  use landyn_gear_model, only: gear_t, strut_kin_t, n_q, n_phi, n_struts, idx_len, leg_first_moment
   implicit none
   private
 
@@ -49,6 +50,7 @@ contains
     real(wp) :: f_low(3, 3), f_fld(3), sm, len, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
     real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3), rp(3, 3)
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     f_low(:, 1) = f_foot - lam_phi(1:3) - lam_phi(4:6)
     f_low(:, 2) = lam_phi(1:3)
     f_low(:, 3) = lam_phi(4:6)
@@ -64,10 +66,11 @@ contains
     f_sec = sk(3)%p + q(idx_len(3))*sk(3)%u
     do k = 1, 3
       len = q(idx_len(k))
-      sm = gear%strut(k)%first_moment(len)
-      jr = gear%strut(k)%inertia(len)
+      mf = sk(k)%mf
+      sm = mf%s
+      jr = mf%j
       ! force: body on strut = f_k - field - lower-end forces; the joint's force on the body is its negative
-      f_fld = gear%strut(k)%total_mass()*f_field - cross3(alpha, gear%strut(k)%total_mass()*(sk(k)%p - gear%geom%a) + sm*sk(k)%u)
+      f_fld = mf%m_tot*f_field - cross3(alpha, mf%m_tot*(sk(k)%p - gear%geom%a) + sm*sk(k)%u)
       f_joint(:, k) = f_fld + f_low(:, k) - f_strut(:, k)
       ! Moment. A universal joint with pins along w1 = R0 e_x (body) and w2 = R0 Rx(t1) e_y = u x u2
       ! (strut) transmits a moment about n = w1 x w2, the direction the strut's two angle equations
@@ -98,8 +101,8 @@ contains
     dd = qdd(i0 + 1)*sk(1)%u + 2.0_wp*qd(i0 + 1)*ud + q(i0 + 1)*udd
     f_joint(:, 4) = f_foot - gear%strut(1)%end_mass()*(dd - f_field + cross3(alpha, q(i0 + 1)*sk(1)%u))
     ! the leg's momentum balance, with the legs' first moment as gear_leg_momentum takes it
-    fm = leg_first_moment(gear, sk, q)
-    m_leg = gear_leg_mass(gear)
+    fm = leg_first_moment(sk, q)
+    m_leg = gear%leg_mass
     f_interface = f_body + m_leg*f_field - cross3(alpha, fm - m_leg*gear%geom%a)
   end subroutine joint_loads
 

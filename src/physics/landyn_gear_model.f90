@@ -23,7 +23,7 @@ module landyn_gear_model
   use landyn_buffer, only: buffer_law_t
   use landyn_kinematics, only: gear_geometry_t, strut_axis_derivs, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_status, only: STAT_OK, STAT_FAILED
-  use landyn_strut, only: strut_mass_t, strut_t, strut_from_mass
+  use landyn_strut, only: strut_mass_t, strut_t, strut_from_mass, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
   implicit none
   private
@@ -59,6 +59,7 @@ module landyn_gear_model
     real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
     real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
     real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
+    type(strut_mass_functions_t) :: mf  !! mass functions at the strut's length [kg, kg m, kg m^2]
   end type strut_kin_t
 
   !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
@@ -123,6 +124,7 @@ module landyn_gear_model
     type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
     real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
     type(strut_t) :: strut(n_struts)              !! primary, left, right: mass models (landyn_strut)
+    real(wp) :: leg_mass = 0.0_wp                 !! sum of the strut masses (set by gear_init) [kg]
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
     type(buffer_slot_t) :: buffer(n_struts)              !! primary, left, right buffer laws
     type(tube_friction_t) :: tube                 !! friction between the primary's tubes (eqs. 23-26)
@@ -149,8 +151,10 @@ contains
     gear%st%tube_bound = 0.0_wp
     gear%geom = geom
     gear%rot = rot
+    gear%leg_mass = 0.0_wp
     do k = 1, n_struts
       gear%strut(k) = strut_from_mass(mass(k))
+      gear%leg_mass = gear%leg_mass + gear%strut(k)%total_mass()
     end do
     ! Phi_q entries are lug or strut lever arms (|dx/dtheta| <= distance to the joint) or unit
     ! vectors; lock rows are 1. Twice the longest such distance bounds every entry.
@@ -206,7 +210,8 @@ contains
     vel = v(1)*u + gear%st%q(1)*(du1*v(2) + du2*v(3))
   end subroutine gear_footpad
 
-  !> Upper joint, axis and axis partials of each strut at q (computed once per use).
+  !> Upper joint, axis and axis partials of each strut at q, and its mass functions at its length
+  !! (computed once per use).
   pure subroutine strut_kinematics(gear, q, sk)
     type(gear_t), intent(in) :: gear        !! gear
     real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
@@ -217,6 +222,9 @@ contains
     call strut_axis_derivs(gear%geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
     call strut_axis_derivs(gear%geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
     call strut_axis_derivs(gear%geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+    sk(1)%mf = gear%strut(1)%at(q(idx_len(1)))
+    sk(2)%mf = gear%strut(2)%at(q(idx_len(2)))
+    sk(3)%mf = gear%strut(3)%at(q(idx_len(3)))
   end subroutine strut_kinematics
 
   !> Diagonal of the mass matrix M(q).
@@ -225,13 +233,15 @@ contains
     real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
     real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
     integer :: k, i0
+    type(strut_mass_functions_t) :: mf
     real(wp) :: jr, c, len
     do k = 1, 3
       i0 = idx_len(k) - 1
       len = q(i0 + 1)
-      jr = gear%strut(k)%inertia(len)
+      mf = gear%strut(k)%at(len)
+      jr = mf%j
       c = cos(q(i0 + 3))
-      mdiag(i0 + 1) = gear%strut(k)%sliding_mass()
+      mdiag(i0 + 1) = mf%m_s
       mdiag(i0 + 2) = jr*c*c
       mdiag(i0 + 3) = jr
     end do
@@ -269,18 +279,19 @@ contains
   end function gear_law_segments
 
   !> First moment of mass of the leg parts, sum m x, gear frame.
-  pure function leg_first_moment(gear, sk, q) result(fm)
-    type(gear_t), intent(in) :: gear         !! gear (masses)
+  pure function leg_first_moment(sk, q) result(fm)
     type(strut_kin_t), intent(in) :: sk(3)   !! strut kinematics at q
     real(wp), intent(in) :: q(n_q)           !! coordinates [m, rad]
     real(wp) :: fm(3)                        !! [kg m]
     integer :: k
+    type(strut_mass_functions_t) :: mf
     real(wp) :: len, sm
     fm = 0.0_wp
     do k = 1, 3
       len = q(idx_len(k))
-      sm = gear%strut(k)%first_moment(len)
-      fm = fm + gear%strut(k)%total_mass()*sk(k)%p + sm*sk(k)%u
+      mf = sk(k)%mf
+      sm = mf%s
+      fm = fm + mf%m_tot*sk(k)%p + sm*sk(k)%u
     end do
   end function leg_first_moment
 
@@ -302,11 +313,7 @@ contains
   !> Mass of the leg parts, the sum of the strut masses.
   pure real(wp) function gear_leg_mass(gear) result(m)
     type(gear_t), intent(in) :: gear        !! gear
-    integer :: k
-    m = 0.0_wp
-    do k = 1, n_struts
-      m = m + gear%strut(k)%total_mass()
-    end do
+    m = gear%leg_mass
   end function gear_leg_mass
 
   !> Gear frame -> lander frame rotation.

@@ -14,7 +14,7 @@ module landyn_strut
   implicit none
   private
 
-  public :: strut_mass_t, strut_t, strut_from_mass
+  public :: strut_mass_t, strut_t, strut_mass_functions_t, strut_from_mass
 
   !> Mass properties of one strut (input record).
   type :: strut_mass_t
@@ -27,6 +27,18 @@ module landyn_strut
     real(wp) :: m_end = 0.0_wp  !! point mass at the lower joint (footpad) [kg]
   end type strut_mass_t
 
+  !> A strut's mass functions at one length, all at once (strut_t%at: one call per strut in the
+  !! gear's inner loops).
+  type :: strut_mass_functions_t
+    real(wp) :: m_s = 0.0_wp      !! sliding mass m_i + m_end [kg]
+    real(wp) :: m_tot = 0.0_wp    !! strut mass [kg]
+    real(wp) :: s = 0.0_wp        !! first moment S(L) [kg m]
+    real(wp) :: s0 = 0.0_wp       !! upper part's first moment m_o l_o [kg m]
+    real(wp) :: s1 = 0.0_wp       !! sliding parts' first moment S1(L) [kg m]
+    real(wp) :: j = 0.0_wp        !! transverse inertia J(L) [kg m^2]
+    real(wp) :: dj = 0.0_wp       !! dJ/dL [kg m]
+  end type strut_mass_functions_t
+
   !> A strut's mass model: the constants of its mass functions (set by strut_from_mass).
   type :: strut_t
     private
@@ -37,6 +49,7 @@ module landyn_strut
     real(wp) :: s_0 = 0.0_wp                   !! m_o l_o [kg m]
   contains
     procedure :: properties => strut_properties
+    procedure :: at => strut_at
     procedure :: sliding_mass => strut_sliding_mass
     procedure :: total_mass => strut_total_mass
     procedure :: end_mass => strut_end_mass
@@ -59,6 +72,20 @@ contains
     strut%j_0 = mass%m_o*mass%l_o**2 + mass%i_o + mass%i_i
     strut%s_0 = mass%m_o*mass%l_o
   end function strut_from_mass
+
+  !> All mass functions at length len (the same expressions as the single functions below).
+  pure function strut_at(strut, len) result(f)
+    class(strut_t), intent(in) :: strut      !! strut
+    real(wp), intent(in) :: len              !! strut length [m]
+    type(strut_mass_functions_t) :: f        !! its mass functions [kg, kg m, kg m^2]
+    f%m_s = strut%m_s
+    f%m_tot = strut%m_tot
+    f%s = strut%s_0 + strut%mass%m_i*(len - strut%mass%l_i) + strut%mass%m_end*len
+    f%s0 = strut%s_0
+    f%s1 = strut%mass%m_i*(len - strut%mass%l_i) + strut%mass%m_end*len
+    f%j = strut%j_0 + strut%mass%m_i*(len - strut%mass%l_i)**2 + strut%mass%m_end*len*len
+    f%dj = 2.0_wp*strut%mass%m_i*(len - strut%mass%l_i) + 2.0_wp*strut%mass%m_end*len
+  end function strut_at
 
   !> The mass properties the strut was made from.
   pure function strut_properties(strut) result(mass)
