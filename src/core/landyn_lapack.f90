@@ -12,6 +12,19 @@ module landyn_lapack
 
   character(len=*), parameter :: constraint_hint = '; constraints redundant or singular configuration'  !! [-]
 
+  abstract interface
+    !> LAPACK's Cholesky factorisations (dpotrf blocked, dpotf2 unblocked) share one interface.
+    subroutine cholesky_iface(uplo, n, a, lda, info)
+      import :: wp
+      character(len=1), intent(in) :: uplo      !! 'U': upper triangle [-]
+      integer, intent(in) :: n, lda             !! order, leading dimension [-]
+      real(wp), intent(inout) :: a(lda, *)      !! matrix in, factor out [any]
+      integer, intent(out) :: info              !! LAPACK INFO [-]
+    end subroutine cholesky_iface
+  end interface
+
+  procedure(cholesky_iface) :: dpotrf, dpotf2
+
   interface
     subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp
@@ -20,20 +33,6 @@ module landyn_lapack
       integer, intent(out) :: ipiv(*)
       integer, intent(out) :: info
     end subroutine dgesv
-    subroutine dpotrf(uplo, n, a, lda, info)
-      import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dpotrf
-    subroutine dpotf2(uplo, n, a, lda, info)
-      import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dpotf2
     subroutine dtrsv(uplo, trans, diag, n, a, lda, x, incx)
       import :: wp
       character(len=1), intent(in) :: uplo, trans, diag

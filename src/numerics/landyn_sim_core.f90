@@ -32,7 +32,7 @@ module landyn_sim_core
   implicit none
   private
 
-  public :: sim_result_t, setup_model, model_t
+  public :: sim_result_t
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
   public :: sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
   public :: n_energy, energy_names
