@@ -63,17 +63,15 @@ module landyn_kinematics
   private
 
   ! --- small linear algebra
-  public :: cross3, skew3, norm3, det3, inv3, solve3, mv3, mtv3
+  public :: cross3, det3, inv3, solve3, mv3, mtv3
   ! --- rotations, attitude and transforms
   public :: rot_x, rot_y, rot_z, rot_zyx, euler_zyx_from_matrix
-  public :: transform_from, transform_compose, transform_inverse, transform_point
-  public :: euler_rate_matrix, euler_rate_matrix_inv, body_kinematics_matrix
-  public :: body_point_global, body_point_velocity
+  public :: euler_rate_matrix
+  public :: body_point_velocity
   ! --- gear frames and geometry
-  public :: gear_rotation, lander_to_gear, gear_to_lander
   public :: gear_geometry_t, build_gear_geometry
   ! --- strut kinematics
-  public :: strut_orientation, strut_axis, strut_axis_derivs, strut_angular_velocity_matrix
+  public :: strut_orientation, strut_axis, strut_axis_derivs
   public :: strut_angles_from_point
   ! --- gear kinematics, constraints and Jacobians
   public :: gear_points, gear_constraints, gear_constraint_jacobian, gear_constraint_gamma
@@ -82,7 +80,6 @@ module landyn_kinematics
   ! --- coordinate indices and sizes
   public :: n_gear_q, n_gear_phi
   public :: iq_d1, iq_th1, iq_th2, iq_db1, iq_thb1, iq_thb2, iq_dc1, iq_thc1, iq_thc2
-  public :: singular_tol
 
   integer, parameter :: n_gear_q = 9     !! generalized coordinates per gear [-]
   integer, parameter :: n_gear_phi = 6   !! constraint equations per gear [-]
@@ -159,15 +156,6 @@ contains
     y(2) = a(1,2)*x(1) + a(2,2)*x(2) + a(3,2)*x(3)
     y(3) = a(1,3)*x(1) + a(2,3)*x(2) + a(3,3)*x(3)
   end function mtv3
-
-  !> Skew-symmetric matrix of w: skew3(w) x = w x x.
-  pure function skew3(w) result(s)
-    real(wp), intent(in) :: w(3)  !! vector [any unit]
-    real(wp) :: s(3,3)            !! cross-product matrix [unit(w)]
-    s(1,1) = 0.0_wp;  s(1,2) = -w(3); s(1,3) = w(2)
-    s(2,1) = w(3);    s(2,2) = 0.0_wp; s(2,3) = -w(1)
-    s(3,1) = -w(2);   s(3,2) = w(1);  s(3,3) = 0.0_wp
-  end function skew3
 
   !> Euclidean norm of a 3-vector.
   pure function norm3(v) result(n)
@@ -345,46 +333,6 @@ contains
     end if
   end subroutine euler_zyx_from_matrix
 
-  !> Homogeneous transform T = [[R, p],[0, 1]] (eq. 2): x_parent = R x_child + p.
-  pure function transform_from(r, p) result(t)
-    real(wp), intent(in) :: r(3,3)  !! rotation child -> parent [-]
-    real(wp), intent(in) :: p(3)    !! child origin in parent coordinates [m]
-    real(wp) :: t(4,4)              !! homogeneous transform [-, m]
-    t(1:3,1:3) = r
-    t(1:3,4) = p
-    t(4,1:3) = 0.0_wp
-    t(4,4) = 1.0_wp
-  end function transform_from
-
-  !> Composition t1 t2 of homogeneous transforms (eq. 2: 0_T_i = 0_T_1 1_T_2 ... ).
-  pure function transform_compose(t1, t2) result(t)
-    real(wp), intent(in) :: t1(4,4)  !! parent <- middle transform [-, m]
-    real(wp), intent(in) :: t2(4,4)  !! middle <- child transform [-, m]
-    real(wp) :: t(4,4)               !! parent <- child transform [-, m]
-    t(1:3,1:3) = matmul(t1(1:3,1:3), t2(1:3,1:3))
-    t(1:3,4) = matmul(t1(1:3,1:3), t2(1:3,4)) + t1(1:3,4)
-    t(4,1:3) = 0.0_wp
-    t(4,4) = 1.0_wp
-  end function transform_compose
-
-  !> Inverse of a homogeneous transform in closed form: [[R^T, -R^T p],[0, 1]].
-  pure function transform_inverse(t) result(ti)
-    real(wp), intent(in) :: t(4,4)  !! transform [-, m]
-    real(wp) :: ti(4,4)             !! inverse transform [-, m]
-    ti(1:3,1:3) = transpose(t(1:3,1:3))
-    ti(1:3,4) = -matmul(ti(1:3,1:3), t(1:3,4))
-    ti(4,1:3) = 0.0_wp
-    ti(4,4) = 1.0_wp
-  end function transform_inverse
-
-  !> Apply a homogeneous transform to a point: R x + p.
-  pure function transform_point(t, x) result(y)
-    real(wp), intent(in) :: t(4,4)  !! transform [-, m]
-    real(wp), intent(in) :: x(3)    !! point in child coordinates [m]
-    real(wp) :: y(3)                !! point in parent coordinates [m]
-    y = matmul(t(1:3,1:3), x) + t(1:3,4)
-  end function transform_point
-
   !> Euler-rate matrix E (eq. 10): [psi_dot, theta_dot, phi_dot] = E [p, q, r].
   !! Requires cos(theta) /= 0.
   pure function euler_rate_matrix(theta, phi) result(e)
@@ -398,40 +346,6 @@ contains
     e(2,1) = 0.0_wp; e(2,2) = cph;         e(2,3) = -sph
     e(3,1) = 1.0_wp; e(3,2) = sph*sth/cth; e(3,3) = cph*sth/cth
   end function euler_rate_matrix
-
-  !> Inverse of the Euler-rate matrix: [p, q, r] = E^{-1} [psi_dot, theta_dot, phi_dot].
-  pure function euler_rate_matrix_inv(theta, phi) result(b)
-    real(wp), intent(in) :: theta  !! pitch [rad]
-    real(wp), intent(in) :: phi    !! roll [rad]
-    real(wp) :: b(3,3)             !! inverse Euler-rate matrix [-]
-    real(wp) :: cth, sth, cph, sph
-    cth = cos(theta); sth = sin(theta)
-    cph = cos(phi); sph = sin(phi)
-    b(1,1) = -sth;     b(1,2) = 0.0_wp; b(1,3) = 1.0_wp
-    b(2,1) = sph*cth;  b(2,2) = cph;    b(2,3) = 0.0_wp
-    b(3,1) = cph*cth;  b(3,2) = -sph;   b(3,3) = 0.0_wp
-  end function euler_rate_matrix_inv
-
-  !> The 6x6 map of eq. 10: [x_dot, y_dot, z_dot, psi_dot, theta_dot, phi_dot] =
-  !! K [u, v, w, p, q, r], K = diag(R, E); u, v, w is the velocity of O_L in lander axes.
-  pure function body_kinematics_matrix(psi, theta, phi) result(k)
-    real(wp), intent(in) :: psi    !! yaw [rad]
-    real(wp), intent(in) :: theta  !! pitch [rad], |theta| < pi/2
-    real(wp), intent(in) :: phi    !! roll [rad]
-    real(wp) :: k(6,6)             !! kinematic matrix [-]
-    k = 0.0_wp
-    k(1:3,1:3) = rot_zyx(psi, theta, phi)
-    k(4:6,4:6) = euler_rate_matrix(theta, phi)
-  end function body_kinematics_matrix
-
-  !> Global position of a point fixed in the lander: x_OL + R p_L.
-  pure function body_point_global(x_ol, r, p_l) result(x)
-    real(wp), intent(in) :: x_ol(3)  !! position of O_L in the global frame [m]
-    real(wp), intent(in) :: r(3,3)   !! body-to-global rotation [-]
-    real(wp), intent(in) :: p_l(3)   !! point in the lander frame [m]
-    real(wp) :: x(3)                 !! point in the global frame [m]
-    x = x_ol + matmul(r, p_l)
-  end function body_point_global
 
   !> Global velocity of a point fixed in the lander: v_O + R (omega_body x p_L).
   pure function body_point_velocity(v_o, r, omega_body, p_l) result(v)
@@ -448,37 +362,6 @@ contains
   ! =====================================================================================
   ! Gear frames and geometry
   ! =====================================================================================
-
-  !> Rotation gear frame -> lander frame: rot_z(angle).
-  pure function gear_rotation(angle) result(r)
-    real(wp), intent(in) :: angle  !! rotation of the gear about lander z [rad]
-    real(wp) :: r(3,3)             !! gear-to-lander rotation [-]
-    r = rot_z(angle)
-  end function gear_rotation
-
-  !> Lander-frame vector expressed in the gear frame: rot_z(angle)^T p_L.
-  pure function lander_to_gear(angle, p_l) result(p_g)
-    real(wp), intent(in) :: angle   !! rotation of the gear about lander z [rad]
-    real(wp), intent(in) :: p_l(3)  !! point or vector in the lander frame [any unit]
-    real(wp) :: p_g(3)              !! the same in the gear frame [unit(p_l)]
-    real(wp) :: c, s
-    c = cos(angle); s = sin(angle)
-    p_g(1) = c*p_l(1) + s*p_l(2)
-    p_g(2) = -s*p_l(1) + c*p_l(2)
-    p_g(3) = p_l(3)
-  end function lander_to_gear
-
-  !> Gear-frame vector expressed in the lander frame: rot_z(angle) p_g.
-  pure function gear_to_lander(angle, p_g) result(p_l)
-    real(wp), intent(in) :: angle   !! rotation of the gear about lander z [rad]
-    real(wp), intent(in) :: p_g(3)  !! point or vector in the gear frame [any unit]
-    real(wp) :: p_l(3)              !! the same in the lander frame [unit(p_g)]
-    real(wp) :: c, s
-    c = cos(angle); s = sin(angle)
-    p_l(1) = c*p_g(1) - s*p_g(2)
-    p_l(2) = s*p_g(1) + c*p_g(2)
-    p_l(3) = p_g(3)
-  end function gear_to_lander
 
   !> Nominal frame of a strut from its unit axis z0 (see module header).
   pure function strut_frame(z0) result(r0)
@@ -643,17 +526,6 @@ contains
     u12 = matmul(r0, [0.0_wp, c1*s2, s1*s2])
     u22 = -u
   end subroutine strut_axis_derivs
-
-  !> Angular velocity of a strut in the gear frame, omega = S [t1_dot, t2_dot], with
-  !! S = R0 [e_x, rot_x(t1) e_y] = R0 [[1,0],[0,cos t1],[0,sin t1]]. It has an axial (spin)
-  !! component omega.u = t1_dot sin t2 (a Hooke joint).
-  pure function strut_angular_velocity_matrix(r0, t1) result(s)
-    real(wp), intent(in) :: r0(3,3)  !! nominal strut frame [-]
-    real(wp), intent(in) :: t1       !! first joint angle [rad]
-    real(wp) :: s(3,2)               !! angular-velocity matrix [-]
-    s(:,1) = r0(:,1)
-    s(:,2) = cos(t1)*r0(:,2) + sin(t1)*r0(:,3)
-  end function strut_angular_velocity_matrix
 
   !> Length and joint angles of a strut from its upper joint P to a point X (closed form):
   !! L = |X - P|, u = R0^T (X - P)/L, t2 = asin(u1), t1 = atan2(-u2, u3). When X = P the

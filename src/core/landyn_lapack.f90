@@ -10,6 +10,21 @@ module landyn_lapack
   public :: solve_general, solve_spd, factor_spd, solve_spd_unblocked
   public :: factor_spd_unblocked
 
+  character(len=*), parameter :: constraint_hint = '; constraints redundant or singular configuration'  !! [-]
+
+  abstract interface
+    !> LAPACK's Cholesky factorisations (dpotrf blocked, dpotf2 unblocked) share one interface.
+    subroutine cholesky_iface(uplo, n, a, lda, info)
+      import :: wp
+      character(len=1), intent(in) :: uplo      !! 'U': upper triangle [-]
+      integer, intent(in) :: n, lda             !! order, leading dimension [-]
+      real(wp), intent(inout) :: a(lda, *)      !! matrix in, factor out [any]
+      integer, intent(out) :: info              !! LAPACK INFO [-]
+    end subroutine cholesky_iface
+  end interface
+
+  procedure(cholesky_iface) :: dpotrf, dpotf2
+
   interface
     subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp
@@ -18,20 +33,6 @@ module landyn_lapack
       integer, intent(out) :: ipiv(*)
       integer, intent(out) :: info
     end subroutine dgesv
-    subroutine dpotrf(uplo, n, a, lda, info)
-      import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dpotrf
-    subroutine dpotf2(uplo, n, a, lda, info)
-      import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, lda
-      real(wp), intent(inout) :: a(lda, *)
-      integer, intent(out) :: info
-    end subroutine dpotf2
     subroutine dtrsv(uplo, trans, diag, n, a, lda, x, incx)
       import :: wp
       character(len=1), intent(in) :: uplo, trans, diag
@@ -66,7 +67,7 @@ contains
       write (errmsg, '(a,a,i0,a,i0,a)') trim(what), ': matrix is singular (LAPACK dgesv: U(', info, ',', &
         info, ') = 0)'
     else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dgesv'
+      call illegal_argument(info, 'dgesv', what, errmsg)
     end if
   end subroutine solve_general
 
@@ -82,12 +83,7 @@ contains
     integer :: info
     call dposv('U', n, 1, a, lda, b, n, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dposv: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dposv'
-    end if
+    call spd_info(info, 'dposv', what, constraint_hint, errmsg)
   end subroutine solve_spd
 
   !> Solves A x = b for a small symmetric positive-definite A with LAPACK's unblocked Cholesky
@@ -104,14 +100,8 @@ contains
     integer :: info
     call dpotf2('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotf2: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-      return
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotf2'
-      return
-    end if
+    call spd_info(info, 'dpotf2', what, constraint_hint, errmsg)
+    if (info /= 0) return
     call dtrsv('U', 'T', 'N', n, a, lda, b, 1)
     call dtrsv('U', 'N', 'N', n, a, lda, b, 1)
   end subroutine solve_spd_unblocked
@@ -128,12 +118,7 @@ contains
     integer :: info
     call dpotrf('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotrf: leading minor ', &
-        info, ' is not positive; constraints redundant or singular configuration)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotrf'
-    end if
+    call spd_info(info, 'dpotrf', what, constraint_hint, errmsg)
   end subroutine factor_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
@@ -148,12 +133,31 @@ contains
     integer :: info
     call dpotf2('U', n, a, lda, info)
     stat = info
-    if (info > 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': matrix is not positive definite (LAPACK dpotf2: leading minor ', &
-        info, ' is not positive)'
-    else if (info < 0) then
-      write (errmsg, '(a,a,i0,a)') trim(what), ': illegal argument ', -info, ' to LAPACK dpotf2'
-    end if
+    call spd_info(info, 'dpotf2', what, '', errmsg)
   end subroutine factor_spd_unblocked
+
+  !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
+  subroutine spd_info(info, routine, what, hint, errmsg)
+    integer, intent(in) :: info                    !! LAPACK INFO [-]
+    character(len=*), intent(in) :: routine        !! LAPACK routine [-]
+    character(len=*), intent(in) :: what           !! name of the system [-]
+    character(len=*), intent(in) :: hint           !! text after the minor's number [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    if (info > 0) then
+      write (errmsg, '(a,a,a,a,i0,a,a,a)') trim(what), ': matrix is not positive definite (LAPACK ', routine, &
+        ': leading minor ', info, ' is not positive', hint, ')'
+    else if (info < 0) then
+      call illegal_argument(info, routine, what, errmsg)
+    end if
+  end subroutine spd_info
+
+  !> The message of a negative LAPACK INFO.
+  subroutine illegal_argument(info, routine, what, errmsg)
+    integer, intent(in) :: info                    !! LAPACK INFO, < 0 [-]
+    character(len=*), intent(in) :: routine        !! LAPACK routine [-]
+    character(len=*), intent(in) :: what           !! name of the system [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    write (errmsg, '(a,a,i0,a,a)') trim(what), ': illegal argument ', -info, ' to LAPACK ', routine
+  end subroutine illegal_argument
 
 end module landyn_lapack

@@ -35,6 +35,9 @@ module landyn_integrator_adaptive
 
   public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change
 
+  integer, parameter :: NO_STEP = 4   !! adaptive_step: no step down to dt_min succeeds (the value sim_accept
+                                      !! gives a non-finite state, SIM_NON_FINITE) [-]
+
   !> Adaptive integrator and its state between steps.
   type, extends(integrator_t) :: adaptive_integrator_t
     real(wp) :: tol = 1.0e-3_wp            !! local velocity error per step [m/s]
@@ -118,6 +121,7 @@ contains
     rejected = .false.
     do
       h = self%h
+      h_g = h
       t_new = self%t + h
       if (t_new >= self%t_end - self%slack) t_new = self%t_end
       err = 0.0_wp
@@ -171,22 +175,22 @@ contains
         res%n_evaluations = res%n_evaluations + 1
         if (stat /= 0) then
           errmsg = m2
-          call finish(sim%model, res, self%t)
-          done = .true.
-          return
+          exit
         end if
         cycle
       end if
       if (.not. ok) then
-        stat = max(stat, 4)
+        stat = max(stat, NO_STEP)
         write (errmsg, '(a,es10.3,a,es12.5,a,a)') 'adaptive integrator: no step down to dt_min = ', self%h_min, &
           ' s succeeds at t = ', self%t, ' s: ', trim(m2)
-        call finish(sim%model, res, self%t)
-        done = .true.
-        return
       end if
       exit
     end do
+    if (stat /= 0) then   ! failed: the re-evaluation of t, or no step down to dt_min
+      call finish(sim%model, res, self%t)
+      done = .true.
+      return
+    end if
 
     ! accepted
     if (err > 1.0_wp) res%n_forced = res%n_forced + 1

@@ -1,6 +1,7 @@
-!> The model and the building blocks of its time integration: set-up from the resolved input, the
-!! evaluation of forces and accelerations, the step of the paper's scheme (Fig. 6, Steps 1-7), the
-!! commit, snapshots, the energy audit and the summary. The integrators (landyn_integrator_*)
+!> The building blocks of the time integration: the evaluation of forces and accelerations, the
+!! step of the paper's scheme (Fig. 6, Steps 1-7), the commit, the booking of work and peaks, the
+!! end checks. The model, its state and snapshots are landyn_sim_model's, the result and its
+!! recording landyn_sim_result's (both re-exported here). The integrators (landyn_integrator_*)
 !! compose these; run_simulation (landyn_simulation) drives one landing. Library code: returns a
 !! status and a message; progress goes to a unit the caller chooses.
 !!
@@ -11,314 +12,35 @@
 !!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
 !!   4. gear step with the direct constraint-violation correction.
 module landyn_sim_core
-  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len, max_gears, g_earth, rad2deg
-  use landyn_config, only: landyn_input_t, is_set
-  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3, mtv3
-  use landyn_body, only: body_t, body_init, body_accelerations, body_step, body_point_position, &
-                         body_point_velocity, body_point_acceleration, body_kinetic_energy, inertia_tensor
-  use landyn_gear, only: gear_t, gear_state_t, gear_eval_t, strut_mass_t, gear_init, &
-                         gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, &
-                         gear_leg_momentum, gear_relative_momenta, gear_settle, gear_law_segments, n_q, idx_len
+  use landyn_config, only: landyn_input_t
+  use landyn_kinematics, only: cross3, mv3, mtv3
+  use landyn_body, only: body_t, body_accelerations, body_step, body_point_position, body_point_velocity, &
+                         body_point_acceleration, body_kinetic_energy
+  use landyn_gear, only: gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, gear_settle, &
+                         gear_law_segments, gear_rotation, gear_led_rates, gear_locks, gear_strut_lengths, &
+                         gear_strut_modes, strut_modes, n_q, n_struts
   use landyn_impact, only: system_velocity_projection
-  use landyn_loads, only: n_load, load_peaks_t, gear_load_vector, load_peaks_init, load_peaks_update
-  use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
-  use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration, penetration_rate, slip_velocity, &
-                            to_global
-  use landyn_contact, only: contact_law_t, make_contact_law, advance_contact_state
-  use landyn_friction, only: friction_law_t, make_friction_law
-  use landyn_footpad_state, only: footpad_state_t
-  use landyn_tube_friction, only: tube_friction_t, make_tube_friction
+  use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
+  use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
+  use landyn_contact, only: advance_contact_state
+  use landyn_status, only: STAT_OK
+  use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
+                              sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
+                              max_primary_stroke
+  use landyn_sim_result, only: sim_result_t, allocate_result, record, finish, n_energy, energy_names
   implicit none
   private
 
-  public :: sim_result_t, setup_model, model_t
+  public :: sim_result_t
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
   public :: sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
+  public :: n_energy, energy_names
+  public :: SIM_NON_FINITE
 
-  !> Everything the time loop integrates.
-  type :: model_t
-    integer :: n_gears = 0
-    type(body_t) :: body
-    type(gear_t) :: gear(max_gears)
-    type(terrain_plane_t) :: plane(max_gears)
-    ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
-    ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
-    class(contact_law_t), allocatable :: contact       !! normal contact law
-    class(friction_law_t), allocatable :: friction     !! friction law
-    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
-    real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
-    real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
-    real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
-  end type model_t
-
-  !> The integrator's own evolving state (accumulators of the fixed-step loop).
-  type :: sim_loop_t
-    integer :: n = 0                                   !! steps taken [-]
-    real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
-    integer :: next_progress = 1                       !! next progress report (in 5 % of the steps) [-]
-    real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
-    real(wp) :: w_friction = 0.0_wp                    !! friction dissipation [J]
-    real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
-    real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
-    real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
-    real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
-    real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
-    real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
-    real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous step [m]
-    real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
-    real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
-    logical :: touched = .false.                       !! a footpad has touched the ground [-]
-    integer :: mode(3, max_gears) = 0                  !! crush mode of each strut at the last step [-]
-  end type sim_loop_t
-
-  !> One simulation in progress: the model (parameters and evolving state) and the integrator.
-  type :: sim_t
-    type(model_t) :: model                             !! the model
-    type(sim_loop_t) :: loop                           !! integrator state
-    real(wp) :: dt = 0.0_wp                            !! time step [s]
-    integer :: nstep = 0                               !! steps to the end time [-]
-    real(wp) :: l_char = 0.0_wp                        !! largest mass-centre to footpad distance [m]
-    real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
-    real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
-    logical :: loads = .true.                          !! compute and record the interface loads [-]
-  end type sim_t
-
-  !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
-  type :: sim_eval_t
-    real(wp) :: t = 0.0_wp                             !! time of the state [s]
-    real(wp) :: xd(3, max_gears) = 0.0_wp              !! footpad positions, global [m]
-    real(wp) :: vd(3, max_gears) = 0.0_wp              !! footpad velocities, global [m/s]
-    real(wp) :: delta(max_gears) = 0.0_wp              !! penetrations [m]
-    real(wp) :: fn(max_gears) = 0.0_wp                 !! normal forces [N]
-    real(wp) :: fground(3, max_gears) = 0.0_wp         !! ground forces on the footpads, global [N]
-    type(footpad_state_t) :: trial(max_gears)          !! footpad states advanced by this evaluation
-    real(wp) :: thrust_g(3) = 0.0_wp                   !! thrust, global [N]
-    real(wp) :: acc(3) = 0.0_wp                        !! mass-centre acceleration, global [m/s^2]
-    real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
-    real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
-    type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
-                                                       !! forces, lock decisions (committed by sim_advance)
-    real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
-    real(wp) :: strut_len(3, max_gears) = 0.0_wp       !! strut lengths [m]
-    logical :: locks_changed = .false.                 !! a strut locked or was released [-]
-    ! discrete state after the evaluation: what an event changes
-    integer :: mode(3, max_gears) = 0                  !! strut modes (strut_modes) [-]
-    integer :: segment(3, max_gears) = 0               !! piece of each buffer law (stage, stop) [-]
-    logical :: contact(max_gears) = .false.            !! footpad in contact [-]
-    logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
-    real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
-  end type sim_eval_t
-
-  !> The stored velocities of body and gears, kept while lead_velocities has advanced them.
-  type :: velocities_t
-    real(wp) :: v(3) = 0.0_wp                          !! mass-centre velocity, global [m/s]
-    real(wp) :: omega(3) = 0.0_wp                      !! body rates, lander axes [rad/s]
-    real(wp) :: qd(n_q, max_gears) = 0.0_wp            !! gear rates [m/s, rad/s]
-  end type velocities_t
-
-  !> Everything of a simulation that evolves in time (see sim_save).
-  type :: sim_snapshot_t
-    type(body_t) :: body                               !! body state
-    type(gear_state_t) :: gear(max_gears)              !! gear states
-    type(footpad_state_t) :: footpad(max_gears)        !! footpad histories and stick states
-    type(sim_loop_t) :: loop                           !! integrator state
-  end type sim_snapshot_t
-
-  !> Time series (columns = output samples) and summary of one run.
-  type :: sim_result_t
-    integer :: n_gears = 0
-    integer :: n_out = 0                                   !! samples stored
-    real(wp), allocatable :: t(:)                          !! [s]
-    real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
-    real(wp), allocatable :: mc_position(:, :)             !! (3, n) mass centre, global [m]
-    real(wp), allocatable :: velocity(:, :)                !! (3, n) mass-centre velocity, global [m/s]
-    real(wp), allocatable :: euler(:, :)                   !! (3, n) yaw, pitch, roll [deg]
-    real(wp), allocatable :: rate(:, :)                    !! (3, n) body rates p, q, r [deg/s]
-    real(wp), allocatable :: overload(:, :)                !! (3, n) (a - g)/g0 in lander axes [g]
-    real(wp), allocatable :: strut_length(:, :, :)         !! (3, n_gears, n) [m]
-    real(wp), allocatable :: stroke(:, :, :)               !! (3, n_gears, n) Table-3 sense [m]
-    real(wp), allocatable :: strut_force(:, :, :)          !! (3, n_gears, n) axial, compression positive [N]
-    real(wp), allocatable :: footpad_position(:, :, :)     !! (3, n_gears, n) global [m]
-    real(wp), allocatable :: ground_force(:, :, :)         !! (3, n_gears, n) on the footpad, global [N]
-    real(wp), allocatable :: normal_force(:, :)            !! (n_gears, n) [N]
-    real(wp), allocatable :: friction_force(:, :)          !! (n_gears, n) magnitude [N]
-    real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
-    real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
-    real(wp), allocatable :: energy(:, :)                  !! (n, n_energy) audit channels, one column each [J]
-    ! interface loads (landyn_loads): each gear's load vector (joint forces a, b, c on the body,
-    ! footpad force at d, joint moments a, b, c), lander axes, and the gear's total force on the body
-    ! from its momentum balance (the equilibrium reference of the joint forces)
-    real(wp), allocatable :: loads(:, :, :)                !! (n_load, n_gears, n) [N, N m]
-    real(wp), allocatable :: interface_force(:, :, :)      !! (3, n_gears, n) [N]
-    real(wp), allocatable :: gear_rot(:, :, :)             !! (3, 3, n_gears) gear frame -> lander frame [-]
-    type(load_peaks_t) :: load_peaks                       !! peak-load table over every accepted step
-    ! Peaks over each output interval (every step since the previous sample, this one included),
-    ! so that the stored histories keep the peaks the summary reports.
-    real(wp), allocatable :: overload_peak(:)              !! (n) largest |a - g|/g0 [g]
-    real(wp), allocatable :: normal_force_peak(:, :)       !! (n_gears, n) [N]
-    real(wp), allocatable :: strut_force_peak(:, :, :)     !! (3, n_gears, n) largest |axial| [N]
-    real(wp) :: acc_overload = 0.0_wp                      !! running interval peak [g]
-    real(wp), allocatable :: acc_normal_force(:)           !! (n_gears) running interval peak [N]
-    real(wp), allocatable :: acc_strut_force(:, :)         !! (3, n_gears) running interval peak [N]
-    ! summary
-    real(wp), allocatable :: crush_net(:, :)               !! (3, n_gears) signed net crush [m]
-    real(wp), allocatable :: crush_pos(:, :)               !! (3, n_gears) crushed toward +s [m]
-    real(wp), allocatable :: crush_neg(:, :)               !! (3, n_gears) crushed toward -s [m]
-    real(wp), allocatable :: stroke_final(:, :)            !! (3, n_gears) [m]
-    real(wp), allocatable :: stroke_margin(:, :)           !! (3, n_gears) capacity minus crushed, worst direction [m]
-    real(wp), allocatable :: crush_work(:, :)              !! (3, n_gears) [J]
-    integer, allocatable :: bottomed(:, :)                 !! (3, n_gears) 1 when a stroke exceeded capacity
-    real(wp), allocatable :: peak_penetration(:)           !! (n_gears) [m]
-    real(wp), allocatable :: slide_distance(:)             !! (n_gears) [m]
-    real(wp), allocatable :: peak_normal_force(:)          !! (n_gears) [N]
-    real(wp), allocatable :: peak_strut_force(:, :)        !! (3, n_gears) largest |axial| [N]
-    integer, allocatable :: mode_switches(:, :)            !! (3, n_gears) crush-mode changes [-]
-    real(wp) :: peak_overload = 0.0_wp                     !! largest |a - g|/g0 [g]
-    real(wp) :: t_peak_overload = 0.0_wp                   !! [s]
-    real(wp) :: final_euler(3) = 0.0_wp                    !! [deg]
-    real(wp) :: final_tilt = 0.0_wp                        !! [deg]
-    real(wp) :: max_tilt = 0.0_wp                          !! [deg]
-    logical :: tipped_over = .false.
-    logical :: at_rest = .false.
-    character(len=64) :: end_reason = ''
-    real(wp) :: energy_input = 0.0_wp                      !! initial KE + potential released + thrust work [J]
-    real(wp) :: energy_residual = 0.0_wp                   !! final residual / energy_input [-]
-    real(wp) :: max_violation = 0.0_wp                     !! after correction [m]
-    real(wp) :: max_drift = 0.0_wp                         !! before correction [m]
-    real(wp) :: t_final = 0.0_wp                           !! [s]
-    integer :: n_steps = 0                                 !! accepted steps [-]
-    character(len=16) :: integrator = ''                   !! integrator that produced the result
-    integer :: n_evaluations = 0                           !! force evaluations, rejected steps included [-]
-    integer :: n_rejected = 0                              !! rejected steps (error or event) [-]
-    integer :: n_events = 0                                !! accepted steps that ended at a located event [-]
-    integer :: n_forced = 0                                !! steps of event_resolution accepted above the tolerance [-]
-    real(wp) :: dt_smallest = 0.0_wp                       !! smallest accepted step [s]
-    real(wp) :: dt_largest = 0.0_wp                        !! largest accepted step [s]
-    real(wp) :: wall_time = 0.0_wp                         !! [s]
-    real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
-  end type sim_result_t
-
-  integer, parameter, public :: n_energy = 11
-  character(len=24), parameter, public :: energy_names(n_energy) = [character(len=24) :: &
-    'kinetic_body', 'kinetic_legs', 'potential_released', 'honeycomb_work', 'contact_damping', &
-    'contact_elastic', 'friction', 'strut_impacts', 'thrust_work', 'input', 'residual']
+  integer, parameter :: SIM_NON_FINITE = 4   !! sim_accept: the solution became non-finite [-]
 
 contains
-
-  !> Builds the model (body, gears, terrain, laws) and places it at t = 0.
-  subroutine setup_model(inp, model, stat, errmsg)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
-    type(model_t), intent(out) :: model         !! model at t = 0
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! message on failure
-    type(gear_geometry_t) :: geom
-    type(strut_mass_t) :: sm(3)
-    type(tube_friction_t) :: tube
-    real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
-    integer :: i, k
-    character(len=msg_len) :: m2
-
-    stat = 0
-    model%n_gears = inp%gears%n_gears
-    model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_contact_law(inp%contact, model%contact, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
-    call make_friction_law(inp%friction, model%friction, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
-    model%footpad = footpad_state_t()
-    call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
-                            inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
-                            tube, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
-    call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
-
-    sm(1) = strut_mass_t(inp%primary%outer_mass, inp%primary%outer_cm, inp%primary%outer_inertia, &
-                         inp%primary%inner_mass, inp%primary%inner_cm, inp%primary%inner_inertia, &
-                         inp%primary%footpad_mass)
-    sm(2) = strut_mass_t(inp%secondary%outer_mass, inp%secondary%outer_cm, inp%secondary%outer_inertia, &
-                         inp%secondary%inner_mass, inp%secondary%inner_cm, inp%secondary%inner_inertia, 0.0_wp)
-    sm(3) = sm(2)
-    do i = 1, model%n_gears
-      rot = rot_z(inp%gears%rotation(i))
-      pts(:, 1) = inp%gears%point_a(:, i)
-      pts(:, 2) = inp%gears%point_b(:, i)
-      pts(:, 3) = inp%gears%point_c(:, i)
-      pts(:, 4) = inp%gears%point_d(:, i)
-      pts(:, 5) = inp%gears%point_e(:, i)
-      pts(:, 6) = inp%gears%point_f(:, i)
-      model%point_a(:, i) = pts(:, 1)
-      pts = matmul(transpose(rot), pts)          ! lander frame -> gear frame
-      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
-      if (stat /= 0) then
-        write (errmsg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
-        return
-      end if
-      allocate (model%gear(i)%buffer(1)%law, source=primary_honeycomb_t(n_stages=inp%primary%n_stages, &
-        stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
-        k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping))
-      do k = 2, 3
-        allocate (model%gear(i)%buffer(k)%law, source=secondary_honeycomb_t( &
-          f_lengthening=inp%secondary%force_lengthening, f_shortening=inp%secondary%force_shortening, &
-          stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
-          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping))
-      end do
-      call gear_init(model%gear(i), geom, rot, sm, stat, m2, tube)
-      if (stat /= 0) then; errmsg = m2; return; end if
-    end do
-
-    ! Placement: the given position, or the lowest footpad at `clearance` above its surface.
-    if (all(is_set(inp%initial%position))) then
-      x_ol = inp%initial%position
-    else
-      x_ol = 0.0_wp
-    end if
-    call body_init(model%body, inp%lander%mass, &
-      inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
-      inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
-    if (.not. all(is_set(inp%initial%position))) then
-      dz = huge(1.0_wp)
-      do i = 1, model%n_gears
-        call gear_footpad(model%gear(i), pos, vel)
-        xd = body_point_position(model%body, matmul(model%gear(i)%rot, pos))
-        ! moving the body down by dz raises the penetration by dz * (-n_z) = dz cos(slope)
-        dz = min(dz, (-inp%initial%clearance - penetration(model%plane(i), xd))/cos(inp%terrain%slope(i)))
-      end do
-      x_ol = [0.0_wp, 0.0_wp, dz]
-      call body_init(model%body, inp%lander%mass, &
-        inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
-        inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-      if (stat /= 0) then; errmsg = m2; return; end if
-    end if
-    model%body%acc = model%g_vec     ! free fall before touchdown
-    do i = 1, model%n_gears
-      call gear_leg_momentum(model%gear(i), pos, model%first_moment0(:, i), dz)
-    end do
-  end subroutine setup_model
-
-  !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross terms
-  !! V . p_rel + w . h_rel(mass centre) of the kinetic energy (the body carries the total mass; the
-  !! same quadratic form as landyn_impact's kinetic metric), and the potential energy of the legs'
-  !! relative displacement.
-  function leg_energy(model, gravity) result(e)
-    type(model_t), intent(in) :: model   !! model
-    real(wp), intent(in) :: gravity      !! [m/s^2]
-    real(wp) :: e                        !! [J]
-    integer :: i
-    real(wp) :: p_rel(3), h_rel(3), t_rel, fm(3), mleg, rg(3, 3), pl(3), hl(3), p_dummy(3)
-    e = 0.0_wp
-    do i = 1, model%n_gears
-      call gear_relative_momenta(model%gear(i), p_rel, h_rel, t_rel)
-      call gear_leg_momentum(model%gear(i), p_dummy, fm, mleg)
-      rg = matmul(model%body%r, model%gear(i)%rot)
-      pl = mv3(model%gear(i)%rot, p_rel)
-      hl = mv3(model%gear(i)%rot, h_rel) - cross3(model%body%mc, pl)
-      e = e + t_rel + dot_product(model%body%v, mv3(model%body%r, pl)) + dot_product(model%body%omega, hl) &
-            - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%first_moment0(:, i)))
-    end do
-  end function leg_energy
 
   !> Builds the model, allocates the result and sets the integrator's state at t = 0.
   subroutine sim_init(inp, sim, res, stat, errmsg)
@@ -328,7 +50,7 @@ contains
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! message on failure
     integer :: i, ng, n_cap
-    stat = 0
+    stat = STAT_OK
     ng = inp%gears%n_gears
     res%n_gears = ng
     call setup_model(inp, sim%model, stat, errmsg)
@@ -339,7 +61,7 @@ contains
     n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
     call allocate_result(res, ng, n_cap)
     do i = 1, ng
-      res%gear_rot(:, :, i) = sim%model%gear(i)%rot
+      res%gear_rot(:, :, i) = gear_rotation(sim%model%gear(i))
     end do
     sim%l_char = 0.0_wp
     do i = 1, ng
@@ -421,11 +143,11 @@ contains
     integer :: ng, i
     type(body_t) :: body
     logical :: thrusting
-    real(wp) :: r(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), qd_l(n_q)
+    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), qd_l(n_q)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
 
-    stat = 0
+    stat = STAT_OK
     ng = sim%model%n_gears
     ev%t = t
     associate (model => sim%model)
@@ -439,15 +161,16 @@ contains
       end if
       ! ---- Step 2: footpads and ground forces
       do i = 1, ng
+        rg = model%rot(:, :, i)
         if (present(v_lead)) then
-          qd_l = model%gear(i)%st%qd + v_lead*model%gear(i)%st%qdd
+          qd_l = gear_led_rates(model%gear(i), v_lead)
           call gear_footpad(model%gear(i), pos_g, vel_g, qd_l)
         else
           call gear_footpad(model%gear(i), pos_g, vel_g)
         end if
-        d_l = mv3(model%gear(i)%rot, pos_g)
+        d_l = mv3(rg, pos_g)
         ev%xd(:, i) = body_point_position(body, d_l)
-        ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(model%gear(i)%rot, vel_g))
+        ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(rg, vel_g))
         ev%delta(i) = penetration(model%plane(i), ev%xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), ev%vd(:, i))
         ! trial footpad state of this step: committed with the step (sim_advance)
@@ -485,22 +208,23 @@ contains
       moment = 0.0_wp
       ev%locks_changed = .false.
       do i = 1, ng
-        field = mtv3(model%gear(i)%rot, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
-        ffoot = mtv3(model%gear(i)%rot, mtv3(r, ev%fground(:, i)))
-        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(model%gear(i)%rot, body%alpha), &
+        rg = model%rot(:, :, i)
+        field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
+        ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
+        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
                            sim%loads)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           return
         end if
         associate (ge => ev%gear(i))
-          if (any(model%gear(i)%st%locked .neqv. ge%locked)) ev%locks_changed = .true.
-          gf(:, i) = mv3(model%gear(i)%rot, ge%f_body)
-          gm(:, i) = mv3(model%gear(i)%rot, ge%m_body)
+          if (any(gear_locks(model%gear(i)) .neqv. ge%locked)) ev%locks_changed = .true.
+          gf(:, i) = mv3(rg, ge%f_body)
+          gm(:, i) = mv3(rg, ge%m_body)
           ev%qdd(:, i) = ge%qdd
           ev%mode(:, i) = strut_modes(ge%locked, ge%axial, ge%dir)
         end associate
-        ev%strut_len(:, i) = model%gear(i)%st%q(idx_len)
+        ev%strut_len(:, i) = gear_strut_lengths(model%gear(i))
         ev%segment(:, i) = gear_law_segments(model%gear(i))
         ev%contact(i) = ev%delta(i) > 0.0_wp
         ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
@@ -664,7 +388,7 @@ contains
   end subroutine sim_advance
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
-  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = 4).
+  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = SIM_NON_FINITE = 4).
   subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due, ev)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
@@ -682,7 +406,7 @@ contains
     integer :: ng, i
     real(wp) :: tilt, speed_char
 
-    stat = 0
+    stat = STAT_OK
     done = .false.
     ng = sim%model%n_gears
     associate (model => sim%model)
@@ -690,17 +414,14 @@ contains
         if (present(ev)) then
           call count_mode_switches(ev%mode(:, i), sim%loop%mode(:, i), res%mode_switches(:, i))
         else
-          associate (st => model%gear(i)%st)
-            call count_mode_switches(strut_modes(st%locked, st%axial, st%dir), sim%loop%mode(:, i), &
-                                     res%mode_switches(:, i))
-          end associate
+          call count_mode_switches(gear_strut_modes(model%gear(i)), sim%loop%mode(:, i), res%mode_switches(:, i))
         end if
       end do
       res%n_steps = sim%loop%n
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then
-        stat = 4
+        stat = SIM_NON_FINITE
         write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t, &
           ' s: the integration diverged (reduce &simulation dt or check the input)'
         call finish(model, res, t)
@@ -730,19 +451,12 @@ contains
       if (progress_unit >= 0 .and. progress_due) then
         write (progress_unit, '(a,f8.4,a,f8.4,a,i3,a,f9.2,a)') 'landyn: t = ', t, ' s of ', &
           inp%simulation%t_end, ' s (', 5*sim%loop%next_progress, ' %), max primary stroke ', &
-          1000.0_wp*maxval([(model%gear(i)%st%s_hismax(1), i=1, ng)]), ' mm'
+          1000.0_wp*max_primary_stroke(model, ng), ' mm'
         flush (progress_unit)
         sim%loop%next_progress = sim%loop%next_progress + 1
       end if
     end associate
   end subroutine sim_accept
-
-  !> The body's state is finite (no NaN or Inf in position, velocity, attitude, rates).
-  pure logical function body_is_finite(body) result(ok)
-    type(body_t), intent(in) :: body   !! body
-    ok = all(ieee_is_finite(body%x)) .and. all(ieee_is_finite(body%v)) .and. &
-         all(ieee_is_finite(body%euler)) .and. all(ieee_is_finite(body%omega))
-  end function body_is_finite
 
   !> Ends the run before t_end: the reason, a final sample of the state at t (unless one was just
   !! recorded) with the forces of an evaluation of that state, the summary.
@@ -771,37 +485,6 @@ contains
     if (stat == 0) call record_sample(work, inp, res, ev, h_last)
     call finish(sim%model, res, t)
   end subroutine end_early
-
-  !> Snapshot of everything that evolves in a simulation: body, gears (coordinates, rates, crush
-  !! modes and history, caches), footpad histories and stick states, and the integrator's
-  !! accumulators. Restoring it makes the simulation continue exactly as from the moment it was
-  !! taken (bit for bit): the basis of rejected steps and event location.
-  subroutine sim_save(sim, snap)
-    type(sim_t), intent(in) :: sim              !! simulation
-    ! inout, not out: intent(out) would first reset the whole snapshot (max_gears gear states)
-    ! to its default values, a cost of the same order as the copy itself, at every step
-    type(sim_snapshot_t), intent(inout) :: snap !! its evolving state (previous contents replaced)
-    integer :: i
-    snap%body = sim%model%body
-    do i = 1, sim%model%n_gears
-      snap%gear(i) = sim%model%gear(i)%st
-    end do
-    snap%footpad = sim%model%footpad
-    snap%loop = sim%loop
-  end subroutine sim_save
-
-  !> Puts a snapshot from sim_save back.
-  subroutine sim_restore(sim, snap)
-    type(sim_t), intent(inout) :: sim           !! simulation
-    type(sim_snapshot_t), intent(in) :: snap    !! snapshot
-    integer :: i
-    sim%model%body = snap%body
-    do i = 1, sim%model%n_gears
-      sim%model%gear(i)%st = snap%gear(i)
-    end do
-    sim%model%footpad = snap%footpad
-    sim%loop = snap%loop
-  end subroutine sim_restore
 
   !> Sum of the gears' loads, adding diametrically opposed gears (i, i + n/2) first when n is even:
   !! for a lander symmetric under rotation by 360/n deg their contributions then cancel exactly in
@@ -833,203 +516,18 @@ contains
     integer :: i
     v = 0.0_wp
     do i = 1, model%n_gears
-      v(:, i) = gear_load_vector(model%gear(i)%rot, ev%gear(i))
+      v(:, i) = gear_load_vector(model%rot(:, :, i), ev%gear(i))
     end do
   end function eval_loads
-
-  !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
-  !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
-  !! of motion is not a mode).
-  pure function strut_modes(locked, axial, dir) result(m)
-    logical, intent(in) :: locked(3)          !! struts locked [-]
-    real(wp), intent(in) :: axial(3)          !! axial buffer forces [N]
-    integer, intent(in) :: dir(3)             !! sliding directions [-]
-    integer :: m(3)                           !! modes [-]
-    integer :: k
-    do k = 1, 3
-      if (locked(k)) then
-        m(k) = 0
-      else if (abs(axial(k)) > tiny(1.0_wp)) then
-        m(k) = sign(1, dir(k))
-      else
-        m(k) = 2
-      end if
-    end do
-  end function strut_modes
 
   !> Counts the changes of each strut's crush mode (strut_modes), i.e. the switches of the buffer
   !! force law.
   pure subroutine count_mode_switches(m, mode, switches)
-    integer, intent(in) :: m(3)               !! modes after the step [-]
-    integer, intent(inout) :: mode(3)         !! mode at the previous step, updated [-]
-    integer, intent(inout) :: switches(3)     !! mode changes so far [-]
+    integer, intent(in) :: m(n_struts)        !! modes after the step [-]
+    integer, intent(inout) :: mode(n_struts)  !! mode at the previous step, updated [-]
+    integer, intent(inout) :: switches(n_struts)  !! mode changes so far [-]
     where (m /= mode) switches = switches + 1
     mode = m
   end subroutine count_mode_switches
-
-  !> Advances the stored velocities of body and gears by `lead` times the accelerations of an
-  !! evaluation, keeping the stored ones in `kept` (restore_velocities puts them back). The
-  !! semi-implicit Euler step is the leapfrog: its positions belong to t and its stored velocities
-  !! to t - h/2, so lead = h/2 with the accelerations at t gives the velocities at t.
-  pure subroutine lead_velocities(model, lead, ev, kept)
-    type(model_t), intent(inout) :: model       !! model
-    real(wp), intent(in) :: lead                !! [s]
-    type(sim_eval_t), intent(in) :: ev          !! evaluation with the accelerations
-    type(velocities_t), intent(out) :: kept     !! the stored velocities
-    integer :: i
-    kept%v = model%body%v
-    kept%omega = model%body%omega
-    model%body%v = kept%v + lead*ev%acc
-    model%body%omega = kept%omega + lead*ev%alpha
-    do i = 1, model%n_gears
-      kept%qd(:, i) = model%gear(i)%st%qd
-      model%gear(i)%st%qd = kept%qd(:, i) + lead*ev%gear(i)%qdd
-    end do
-  end subroutine lead_velocities
-
-  !> Puts back the velocities kept by lead_velocities.
-  pure subroutine restore_velocities(model, kept)
-    type(model_t), intent(inout) :: model       !! model
-    type(velocities_t), intent(in) :: kept      !! the stored velocities
-    integer :: i
-    model%body%v = kept%v
-    model%body%omega = kept%omega
-    do i = 1, model%n_gears
-      model%gear(i)%st%qd = kept%qd(:, i)
-    end do
-  end subroutine restore_velocities
-
-  !> Records one output sample.
-  subroutine record(res, model, ev, w_normal, w_friction, w_thrust, w_impact, &
-                    ke0, pe0, ke_legs, e_el, gravity)
-    type(sim_result_t), intent(inout) :: res      !! result
-    type(model_t), intent(in) :: model            !! model at ev%t (velocities synchronised)
-    type(sim_eval_t), intent(in) :: ev            !! its evaluation (forces, footpads, overload)
-    real(wp), intent(in) :: w_normal              !! work into the ground (normal) [J]
-    real(wp), intent(in) :: w_friction            !! friction dissipation [J]
-    real(wp), intent(in) :: w_thrust              !! thrust work [J]
-    real(wp), intent(in) :: w_impact              !! energy dissipated in strut impacts [J]
-    real(wp), intent(in) :: ke0                   !! initial kinetic energy [J]
-    real(wp), intent(in) :: pe0                   !! initial potential energy [J]
-    real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
-    real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
-    real(wp), intent(in) :: gravity               !! [m/s^2]
-    integer :: k, i
-    real(wp) :: s(3), pe, ke, crush, e_in
-    if (res%n_out >= size(res%t)) return
-    res%n_out = res%n_out + 1
-    k = res%n_out
-    res%t(k) = ev%t
-    res%mc_position(:, k) = model%body%x
-    res%position(:, k) = model%body%x - matmul(model%body%r, model%body%mc)
-    res%velocity(:, k) = model%body%v
-    res%euler(:, k) = model%body%euler*rad2deg
-    res%rate(:, k) = model%body%omega*rad2deg
-    res%overload(:, k) = ev%ovl
-    crush = 0.0_wp
-    do i = 1, res%n_gears
-      associate (g => model%gear(i))
-        res%strut_length(:, i, k) = g%st%q(idx_len)
-        s = g%sigma*(g%st%q(idx_len) - g%len0)
-        res%stroke(:, i, k) = s
-        res%strut_force(:, i, k) = ev%gear(i)%axial
-        res%loads(:, i, k) = gear_load_vector(g%rot, ev%gear(i))
-        res%interface_force(:, i, k) = matmul(g%rot, ev%gear(i)%f_interface)
-        crush = crush + sum(g%st%work_crush)
-      end associate
-      res%footpad_position(:, i, k) = ev%xd(:, i)
-      res%ground_force(:, i, k) = ev%fground(:, i)
-      res%normal_force(i, k) = ev%fn(i)
-      res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(ev%fground(:, i), ev%fground(:, i)) - ev%fn(i)**2))
-      res%penetration(i, k) = ev%delta(i)
-      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), ev%vd(:, i)))
-    end do
-    res%overload_peak(k) = max(res%acc_overload, norm2(ev%ovl))
-    res%normal_force_peak(:, k) = max(res%acc_normal_force, ev%fn(1:res%n_gears))
-    res%strut_force_peak(:, :, k) = res%acc_strut_force
-    res%acc_overload = 0.0_wp
-    res%acc_normal_force = 0.0_wp
-    res%acc_strut_force = 0.0_wp
-    ke = body_kinetic_energy(model%body)
-    pe = -model%body%mass*gravity*model%body%x(3)
-    e_in = ke0 + (pe0 - pe) + w_thrust
-    res%energy(k, 1) = ke
-    res%energy(k, 2) = ke_legs
-    res%energy(k, 3) = pe0 - pe
-    res%energy(k, 4) = crush
-    res%energy(k, 5) = w_normal - e_el
-    res%energy(k, 6) = e_el
-    res%energy(k, 7) = w_friction
-    res%energy(k, 8) = w_impact
-    res%energy(k, 9) = w_thrust
-    res%energy(k, 10) = ke0 + (pe0 - pe) + w_thrust
-    res%energy(k, 11) = e_in - (ke + ke_legs + crush + w_normal + w_friction + w_impact)
-    res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
-    res%energy_residual = res%energy(k, 11)/res%energy_input
-  end subroutine record
-
-  !> Fills the summary from the final model state.
-  subroutine finish(model, res, t)
-    type(model_t), intent(in) :: model         !! model
-    type(sim_result_t), intent(inout) :: res   !! result
-    real(wp), intent(in) :: t                  !! final time [s]
-    integer :: i, k
-    real(wp) :: s(3), cap_pos, cap_neg, mpos, mneg
-    res%t_final = t
-    do i = 1, res%n_gears
-      associate (g => model%gear(i))
-        s = g%sigma*(g%st%q(idx_len) - g%len0)
-        res%stroke_final(:, i) = s
-        res%crush_pos(:, i) = g%st%s_hismax
-        res%crush_neg(:, i) = 0.0_wp - g%st%s_hismin
-        res%crush_net(:, i) = g%st%s_hismax + g%st%s_hismin
-        res%crush_work(:, i) = g%st%work_crush
-        do k = 1, 3
-          call g%buffer(k)%law%capacity(cap_pos, cap_neg)
-          mpos = cap_pos - g%st%s_hismax(k)
-          mneg = huge(1.0_wp)
-          if (cap_neg > 0.0_wp) mneg = cap_neg + g%st%s_hismin(k)
-          res%stroke_margin(k, i) = min(mpos, mneg)
-          res%bottomed(k, i) = merge(1, 0, res%stroke_margin(k, i) < 0.0_wp)
-        end do
-        res%max_violation = max(res%max_violation, g%st%max_violation)
-        res%max_drift = max(res%max_drift, g%st%max_drift)
-      end associate
-    end do
-    res%final_euler = model%body%euler*rad2deg
-    res%final_tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))*rad2deg
-  end subroutine finish
-
-  !> Allocates the result arrays (once, before the time loop).
-  subroutine allocate_result(res, ng, n_cap)
-    type(sim_result_t), intent(inout) :: res  !! result
-    integer, intent(in) :: ng                 !! number of gears
-    integer, intent(in) :: n_cap              !! capacity in samples
-    allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
-              res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
-    allocate (res%strut_length(3, ng, n_cap), res%stroke(3, ng, n_cap), res%strut_force(3, ng, n_cap), &
-              res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
-    allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
-              res%slip_speed(ng, n_cap), res%energy(n_cap, n_energy))
-    allocate (res%overload_peak(n_cap), res%normal_force_peak(ng, n_cap), res%strut_force_peak(3, ng, n_cap), &
-              res%acc_normal_force(ng), res%acc_strut_force(3, ng))
-    res%acc_overload = 0.0_wp
-    res%acc_normal_force = 0.0_wp
-    res%acc_strut_force = 0.0_wp
-    allocate (res%crush_net(3, ng), res%crush_pos(3, ng), res%crush_neg(3, ng), res%stroke_final(3, ng), &
-              res%stroke_margin(3, ng), res%crush_work(3, ng), res%bottomed(3, ng), res%peak_strut_force(3, ng))
-    allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))
-    res%peak_penetration = 0.0_wp
-    res%slide_distance = 0.0_wp
-    res%peak_normal_force = 0.0_wp
-    res%peak_strut_force = 0.0_wp
-    allocate (res%mode_switches(3, ng))
-    res%mode_switches = 0
-    allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
-    res%loads = 0.0_wp                 ! stays zero when the interface loads are not computed
-    res%interface_force = 0.0_wp
-    call load_peaks_init(res%load_peaks, ng)
-    res%n_out = 0
-  end subroutine allocate_result
 
 end module landyn_sim_core

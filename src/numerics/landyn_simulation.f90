@@ -4,7 +4,7 @@
 module landyn_simulation
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t, integrator_names
-  use landyn_sim_core, only: sim_result_t, setup_model, model_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
+  use landyn_sim_core, only: sim_result_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
                              sim_save, sim_restore, n_energy, energy_names
   use landyn_integrator, only: integrator_t
   use landyn_integrator_fixed, only: fixed_integrator_t
@@ -12,7 +12,7 @@ module landyn_simulation
   implicit none
   private
 
-  public :: sim_result_t, run_simulation, setup_model, model_t, make_integrator
+  public :: sim_result_t, run_simulation, make_integrator
   public :: sim_t, sim_snapshot_t, sim_init, sim_step, sim_save, sim_restore
   public :: n_energy, energy_names
 

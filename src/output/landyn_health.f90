@@ -125,7 +125,7 @@ contains
     ! ---- 4 strut lengths within their geometry (positive and finite at every stored sample)
     if (n >= 1 .and. allocated(res%strut_length)) then
       do ig = 1, ng
-        do k = 1, 3
+        do k = 1, size(res%strut_length, 1)
           if (all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
             r = minval(res%strut_length(k, ig, 1:n))
           else

@@ -8,12 +8,13 @@
 !! angles advance with eq. 10's rate transform. Integration is semi-implicit Euler (velocities
 !! first, then positions with the new velocities), the "direct integration" of the paper.
 module landyn_body
-  use landyn_kinds, only: wp
-  use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3, mv3, mtv3
+  use landyn_kinds, only: wp, msg_len
+  use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3, mv3, mtv3, det3, inv3
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
-  public :: body_t, body_init, body_rotation, body_accelerations, body_step
+  public :: body_t, body_init, body_accelerations, body_step
   public :: body_point_position, body_point_velocity, body_point_acceleration
   public :: body_kinetic_energy, inertia_tensor
 
@@ -56,27 +57,24 @@ contains
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! message
     real(wp) :: det, t(3, 3)
-    stat = 0
+    character(len=msg_len) :: m2
+    stat = STAT_OK
     body%mass = mass
     body%inertia = inertia
     body%mc = mc
     t = inertia
-    det = t(1,1)*(t(2,2)*t(3,3) - t(2,3)*t(3,2)) - t(1,2)*(t(2,1)*t(3,3) - t(2,3)*t(3,1)) &
-        + t(1,3)*(t(2,1)*t(3,2) - t(2,2)*t(3,1))
+    det = det3(t)
     if (det <= 0.0_wp) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'body_init: inertia tensor is singular'
       return
     end if
-    body%inv_inertia(1,1) = (t(2,2)*t(3,3) - t(2,3)*t(3,2))/det
-    body%inv_inertia(1,2) = (t(1,3)*t(3,2) - t(1,2)*t(3,3))/det
-    body%inv_inertia(1,3) = (t(1,2)*t(2,3) - t(1,3)*t(2,2))/det
-    body%inv_inertia(2,1) = (t(2,3)*t(3,1) - t(2,1)*t(3,3))/det
-    body%inv_inertia(2,2) = (t(1,1)*t(3,3) - t(1,3)*t(3,1))/det
-    body%inv_inertia(2,3) = (t(1,3)*t(2,1) - t(1,1)*t(2,3))/det
-    body%inv_inertia(3,1) = (t(2,1)*t(3,2) - t(2,2)*t(3,1))/det
-    body%inv_inertia(3,2) = (t(1,2)*t(3,1) - t(1,1)*t(3,2))/det
-    body%inv_inertia(3,3) = (t(1,1)*t(2,2) - t(1,2)*t(2,1))/det
+    call inv3(t, body%inv_inertia, stat, m2)
+    if (stat /= STAT_OK) then
+      stat = STAT_FAILED
+      errmsg = 'body_init: inertia tensor is singular'
+      return
+    end if
     body%euler = euler
     body%omega = omega
     body%r = rot_zyx(euler(1), euler(2), euler(3))
@@ -85,13 +83,6 @@ contains
     body%acc = 0.0_wp
     body%alpha = 0.0_wp
   end subroutine body_init
-
-  !> Lander -> global rotation matrix of the body's attitude.
-  pure function body_rotation(body) result(r)
-    type(body_t), intent(in) :: body  !! body
-    real(wp) :: r(3, 3)               !! rotation [-]
-    r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))
-  end function body_rotation
 
   !> Accelerations for a total force (global) and a moment about the mass centre (lander axes).
   pure subroutine body_accelerations(body, force, moment)

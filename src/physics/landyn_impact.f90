@@ -31,7 +31,8 @@
 module landyn_impact
   use landyn_kinds, only: wp, msg_len, max_gears
   use landyn_body, only: body_t
-  use landyn_gear, only: gear_t, n_q, n_phi, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_matrix
+  use landyn_gear, only: gear_t, n_q, n_phi, max_rows, gear_velocity_rows, gear_momentum_maps, gear_mass_diagonal, &
+                         gear_rotation, gear_is_rigid, gear_cache_jacobian, gear_rates, gear_set_rates
   use landyn_kinematics, only: mv3
   use landyn_lapack, only: factor_spd_unblocked
   use landyn_small_spd, only: small_upper_solve, small_upper_solve_multi
@@ -51,12 +52,13 @@ contains
     type(body_t), intent(in) :: body     !! body (attitude r, mass centre mc)
     type(gear_t), intent(in) :: gear     !! gear
     real(wp) :: c(6, n_q)                !! coupling [kg, kg m, kg m^2]
-    real(wp) :: pm(3, n_q), hm(3, n_q), pl(3), hl(3)
+    real(wp) :: pm(3, n_q), hm(3, n_q), pl(3), hl(3), rot(3, 3)
     integer :: j
     call gear_momentum_maps(gear, pm, hm)
+    rot = gear_rotation(gear)
     do j = 1, n_q
-      pl = mv3(gear%rot, pm(:, j))
-      hl = mv3(gear%rot, hm(:, j))
+      pl = mv3(rot, pm(:, j))
+      hl = mv3(rot, hm(:, j))
       c(1:3, j) = mv3(body%r, pl)
       c(4:6, j) = hl - [body%mc(2)*pl(3) - body%mc(3)*pl(2), body%mc(3)*pl(1) - body%mc(1)*pl(3), &
                         body%mc(1)*pl(2) - body%mc(2)*pl(1)]
@@ -76,7 +78,7 @@ contains
     character(len=*), intent(inout) :: errmsg    !! message on failure
     real(wp) :: a(max_rows, n_q, max_gears), c(6, n_q, max_gears), minv(n_q, max_gears)
     real(wp) :: g(max_sys_rows), lam(max_sys_rows), u(max_sys_rows, 6), z(max_sys_rows), zz(max_sys_rows, 6)
-    real(wp) :: d(max_rows, max_rows, max_gears), s(6, 6), kk(6, 6), rr(6), y(6), dq(n_q), db(6), resid
+    real(wp) :: d(max_rows, max_rows, max_gears), s(6, 6), kk(6, 6), rr(6), y(6), dq(n_q), qd(n_q), db(6), resid
     real(wp) :: rhs(max_rows, 7)
     integer :: nrow(max_gears), off(max_gears), i, j, k, ii, jj, nr, n_act
     integer :: act(max_gears)
@@ -89,17 +91,16 @@ contains
     nr = 0
     resid = 0.0_wp
     do i = 1, ng
-      if (gear(i)%st%rigid) cycle
+      if (gear_is_rigid(gear(i))) cycle
       n_act = n_act + 1
       act(n_act) = i
       call gear_velocity_rows(gear(i), a(:, :, n_act), nrow(n_act))
       ! Phi_q at this configuration is what the next step's DAE needs too: cache it.
-      gear(i)%st%phq = a(1:n_phi, :, n_act)
-      gear(i)%st%phq_q = gear(i)%st%q
-      gear(i)%st%phq_ok = .true.
+      call gear_cache_jacobian(gear(i), a(1:n_phi, :, n_act))
       off(n_act) = nr
+      qd = gear_rates(gear(i))
       do k = 1, nrow(n_act)
-        g(nr + k) = dot_product(a(k, :, n_act), gear(i)%st%qd)
+        g(nr + k) = dot_product(a(k, :, n_act), qd)
       end do
       resid = max(resid, maxval(abs(g(nr + 1:nr + nrow(n_act)))))
       nr = nr + nrow(n_act)
@@ -119,7 +120,7 @@ contains
     rr = 0.0_wp
     do j = 1, n_act
       i = act(j)
-      minv(:, j) = 1.0_wp/gear_mass_matrix(gear(i), gear(i)%st%q)
+      minv(:, j) = 1.0_wp/gear_mass_diagonal(gear(i))
       c(:, :, j) = coupling_matrix(body, gear(i))
       do jj = 1, 6
         do ii = 1, jj
@@ -179,7 +180,7 @@ contains
       i = act(j)
       dq = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), :, j)) + matmul(y, c(:, :, j))
       dq = -minv(:, j)*dq
-      gear(i)%st%qd = gear(i)%st%qd + dq
+      call gear_set_rates(gear(i), gear_rates(gear(i)) + dq)
       db = db + matmul(c(:, :, j), dq)
     end do
     body%v = body%v - db(1:3)/body%mass

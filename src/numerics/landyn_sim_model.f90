@@ -1,0 +1,320 @@
+!> The simulation's model and state: the model assembled from the resolved input (body, gears,
+!! terrain, contact and friction laws) placed at t = 0, the simulation record with the integrator's
+!! accumulators, the evaluation record, snapshots (save/restore) and the legs' energy for the
+!! audit. The time integration that works on them is landyn_sim_core.
+module landyn_sim_model
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use landyn_kinds, only: wp, msg_len, max_gears
+  use landyn_config, only: landyn_input_t, is_set
+  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3
+  use landyn_body, only: body_t, body_init, body_point_position, inertia_tensor
+  use landyn_gear, only: gear_t, gear_state_t, gear_eval_t, strut_mass_t, gear_init, gear_footpad, gear_leg_momentum, &
+                         gear_relative_momenta, gear_rotation, gear_rates, gear_set_rates, gear_set_buffer, &
+                         gear_save_state, gear_restore_state, gear_crush_history, n_q, n_struts
+  use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
+  use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
+  use landyn_contact, only: contact_law_t, make_contact_law
+  use landyn_friction, only: friction_law_t, make_friction_law
+  use landyn_footpad_state, only: footpad_state_t
+  use landyn_status, only: STAT_OK
+  use landyn_tube_friction, only: tube_friction_t, make_tube_friction
+  implicit none
+  private
+
+  public :: model_t, sim_loop_t, sim_t, sim_eval_t, velocities_t, sim_snapshot_t
+  public :: setup_model, leg_energy, sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite
+  public :: max_primary_stroke
+
+  !> Everything the time loop integrates.
+  type :: model_t
+    integer :: n_gears = 0
+    type(body_t) :: body
+    type(gear_t) :: gear(max_gears)
+    type(terrain_plane_t) :: plane(max_gears)
+    ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
+    ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
+    class(contact_law_t), allocatable :: contact       !! normal contact law
+    class(friction_law_t), allocatable :: friction     !! friction law
+    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
+    real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
+    real(wp) :: rot(3, 3, max_gears) = 0.0_wp   !! gear frame -> lander frame of each gear (gear_rotation,
+                                                !! set at assembly) [-]
+    real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
+    real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
+  end type model_t
+
+  !> The integrator's own evolving state (accumulators of the fixed-step loop).
+  type :: sim_loop_t
+    integer :: n = 0                                   !! steps taken [-]
+    real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
+    integer :: next_progress = 1                       !! next progress report (in 5 % of the steps) [-]
+    real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
+    real(wp) :: w_friction = 0.0_wp                    !! friction dissipation [J]
+    real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
+    real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
+    real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
+    real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
+    real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
+    real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
+    real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous step [m]
+    real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
+    real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
+    logical :: touched = .false.                       !! a footpad has touched the ground [-]
+    integer :: mode(n_struts, max_gears) = 0           !! crush mode of each strut at the last step [-]
+  end type sim_loop_t
+
+  !> One simulation in progress: the model (parameters and evolving state) and the integrator.
+  type :: sim_t
+    type(model_t) :: model                             !! the model
+    type(sim_loop_t) :: loop                           !! integrator state
+    real(wp) :: dt = 0.0_wp                            !! time step [s]
+    integer :: nstep = 0                               !! steps to the end time [-]
+    real(wp) :: l_char = 0.0_wp                        !! largest mass-centre to footpad distance [m]
+    real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
+    real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
+    logical :: loads = .true.                          !! compute and record the interface loads [-]
+  end type sim_t
+
+  !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
+  type :: sim_eval_t
+    real(wp) :: t = 0.0_wp                             !! time of the state [s]
+    real(wp) :: xd(3, max_gears) = 0.0_wp              !! footpad positions, global [m]
+    real(wp) :: vd(3, max_gears) = 0.0_wp              !! footpad velocities, global [m/s]
+    real(wp) :: delta(max_gears) = 0.0_wp              !! penetrations [m]
+    real(wp) :: fn(max_gears) = 0.0_wp                 !! normal forces [N]
+    real(wp) :: fground(3, max_gears) = 0.0_wp         !! ground forces on the footpads, global [N]
+    type(footpad_state_t) :: trial(max_gears)          !! footpad states advanced by this evaluation
+    real(wp) :: thrust_g(3) = 0.0_wp                   !! thrust, global [N]
+    real(wp) :: acc(3) = 0.0_wp                        !! mass-centre acceleration, global [m/s^2]
+    real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
+    real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
+    type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
+                                                       !! forces, lock decisions (committed by sim_advance)
+    real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
+    real(wp) :: strut_len(n_struts, max_gears) = 0.0_wp  !! strut lengths [m]
+    logical :: locks_changed = .false.                 !! a strut locked or was released [-]
+    ! discrete state after the evaluation: what an event changes
+    integer :: mode(n_struts, max_gears) = 0           !! strut modes (strut_modes) [-]
+    integer :: segment(n_struts, max_gears) = 0        !! piece of each buffer law (stage, stop) [-]
+    logical :: contact(max_gears) = .false.            !! footpad in contact [-]
+    logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
+    real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
+  end type sim_eval_t
+
+  !> The stored velocities of body and gears, kept while lead_velocities has advanced them.
+  type :: velocities_t
+    real(wp) :: v(3) = 0.0_wp                          !! mass-centre velocity, global [m/s]
+    real(wp) :: omega(3) = 0.0_wp                      !! body rates, lander axes [rad/s]
+    real(wp) :: qd(n_q, max_gears) = 0.0_wp            !! gear rates [m/s, rad/s]
+  end type velocities_t
+
+  !> Everything of a simulation that evolves in time (see sim_save).
+  type :: sim_snapshot_t
+    type(body_t) :: body                               !! body state
+    type(gear_state_t) :: gear(max_gears)              !! gear states
+    type(footpad_state_t) :: footpad(max_gears)        !! footpad histories and stick states
+    type(sim_loop_t) :: loop                           !! integrator state
+  end type sim_snapshot_t
+
+contains
+
+  !> Builds the model (body, gears, terrain, laws) and places it at t = 0.
+  subroutine setup_model(inp, model, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(model_t), intent(out) :: model         !! model at t = 0
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! message on failure
+    type(gear_geometry_t) :: geom
+    type(strut_mass_t) :: sm(n_struts)
+    type(tube_friction_t) :: tube
+    real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
+    integer :: i, k
+    character(len=msg_len) :: m2
+
+    stat = STAT_OK
+    model%n_gears = inp%gears%n_gears
+    model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
+    call make_contact_law(inp%contact, model%contact, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    call make_friction_law(inp%friction, model%friction, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    model%footpad = footpad_state_t()
+    call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
+                            inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
+                            tube, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+
+    sm(1) = strut_mass_t(inp%primary%outer_mass, inp%primary%outer_cm, inp%primary%outer_inertia, &
+                         inp%primary%inner_mass, inp%primary%inner_cm, inp%primary%inner_inertia, &
+                         inp%primary%footpad_mass)
+    sm(2) = strut_mass_t(inp%secondary%outer_mass, inp%secondary%outer_cm, inp%secondary%outer_inertia, &
+                         inp%secondary%inner_mass, inp%secondary%inner_cm, inp%secondary%inner_inertia, 0.0_wp)
+    sm(3) = sm(2)
+    do i = 1, model%n_gears
+      rot = rot_z(inp%gears%rotation(i))
+      pts(:, 1) = inp%gears%point_a(:, i)
+      pts(:, 2) = inp%gears%point_b(:, i)
+      pts(:, 3) = inp%gears%point_c(:, i)
+      pts(:, 4) = inp%gears%point_d(:, i)
+      pts(:, 5) = inp%gears%point_e(:, i)
+      pts(:, 6) = inp%gears%point_f(:, i)
+      model%point_a(:, i) = pts(:, 1)
+      pts = matmul(transpose(rot), pts)          ! lander frame -> gear frame
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
+      if (stat /= 0) then
+        write (errmsg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
+        return
+      end if
+      call gear_set_buffer(model%gear(i), 1, primary_honeycomb_t(n_stages=inp%primary%n_stages, &
+        stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
+        k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping))
+      do k = 2, n_struts
+        call gear_set_buffer(model%gear(i), k, secondary_honeycomb_t( &
+          f_lengthening=inp%secondary%force_lengthening, f_shortening=inp%secondary%force_shortening, &
+          stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
+          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping))
+      end do
+      call gear_init(model%gear(i), geom, rot, sm, stat, m2, tube)
+      if (stat /= 0) then; errmsg = m2; return; end if
+      model%rot(:, :, i) = gear_rotation(model%gear(i))
+    end do
+
+    ! Placement: the given position, or the lowest footpad at `clearance` above its surface.
+    if (all(is_set(inp%initial%position))) then
+      x_ol = inp%initial%position
+    else
+      x_ol = 0.0_wp
+    end if
+    call body_init(model%body, inp%lander%mass, &
+      inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
+      inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
+    if (stat /= 0) then; errmsg = m2; return; end if
+    if (.not. all(is_set(inp%initial%position))) then
+      dz = huge(1.0_wp)
+      do i = 1, model%n_gears
+        call gear_footpad(model%gear(i), pos, vel)
+        xd = body_point_position(model%body, matmul(gear_rotation(model%gear(i)), pos))
+        ! moving the body down by dz raises the penetration by dz * (-n_z) = dz cos(slope)
+        dz = min(dz, (-inp%initial%clearance - penetration(model%plane(i), xd))/cos(inp%terrain%slope(i)))
+      end do
+      x_ol = [0.0_wp, 0.0_wp, dz]
+      call body_init(model%body, inp%lander%mass, &
+        inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
+        inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
+      if (stat /= 0) then; errmsg = m2; return; end if
+    end if
+    model%body%acc = model%g_vec     ! free fall before touchdown
+    do i = 1, model%n_gears
+      call gear_leg_momentum(model%gear(i), pos, model%first_moment0(:, i), dz)
+    end do
+  end subroutine setup_model
+
+  !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross terms
+  !! V . p_rel + w . h_rel(mass centre) of the kinetic energy (the body carries the total mass; the
+  !! same quadratic form as landyn_impact's kinetic metric), and the potential energy of the legs'
+  !! relative displacement.
+  function leg_energy(model, gravity) result(e)
+    type(model_t), intent(in) :: model   !! model
+    real(wp), intent(in) :: gravity      !! [m/s^2]
+    real(wp) :: e                        !! [J]
+    integer :: i
+    real(wp) :: p_rel(3), h_rel(3), t_rel, fm(3), mleg, rg(3, 3), rot(3, 3), pl(3), hl(3), p_dummy(3)
+    e = 0.0_wp
+    do i = 1, model%n_gears
+      call gear_relative_momenta(model%gear(i), p_rel, h_rel, t_rel)
+      call gear_leg_momentum(model%gear(i), p_dummy, fm, mleg)
+      rot = gear_rotation(model%gear(i))
+      rg = matmul(model%body%r, rot)
+      pl = mv3(rot, p_rel)
+      hl = mv3(rot, h_rel) - cross3(model%body%mc, pl)
+      e = e + t_rel + dot_product(model%body%v, mv3(model%body%r, pl)) + dot_product(model%body%omega, hl) &
+            - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%first_moment0(:, i)))
+    end do
+  end function leg_energy
+
+  !> Snapshot of everything that evolves in a simulation: body, gears (coordinates, rates, crush
+  !! modes and history, caches), footpad histories and stick states, and the integrator's
+  !! accumulators. Restoring it makes the simulation continue exactly as from the moment it was
+  !! taken (bit for bit): the basis of rejected steps and event location.
+  subroutine sim_save(sim, snap)
+    type(sim_t), intent(in) :: sim              !! simulation
+    ! inout, not out: intent(out) would first reset the whole snapshot (max_gears gear states)
+    ! to its default values, a cost of the same order as the copy itself, at every step
+    type(sim_snapshot_t), intent(inout) :: snap !! its evolving state (previous contents replaced)
+    integer :: i
+    snap%body = sim%model%body
+    do i = 1, sim%model%n_gears
+      call gear_save_state(sim%model%gear(i), snap%gear(i))
+    end do
+    snap%footpad = sim%model%footpad
+    snap%loop = sim%loop
+  end subroutine sim_save
+
+  !> Puts a snapshot from sim_save back.
+  subroutine sim_restore(sim, snap)
+    type(sim_t), intent(inout) :: sim           !! simulation
+    type(sim_snapshot_t), intent(in) :: snap    !! snapshot
+    integer :: i
+    sim%model%body = snap%body
+    do i = 1, sim%model%n_gears
+      call gear_restore_state(sim%model%gear(i), snap%gear(i))
+    end do
+    sim%model%footpad = snap%footpad
+    sim%loop = snap%loop
+  end subroutine sim_restore
+
+  !> Advances the stored velocities of body and gears by `lead` times the accelerations of an
+  !! evaluation, keeping the stored ones in `kept` (restore_velocities puts them back). The
+  !! semi-implicit Euler step is the leapfrog: its positions belong to t and its stored velocities
+  !! to t - h/2, so lead = h/2 with the accelerations at t gives the velocities at t.
+  pure subroutine lead_velocities(model, lead, ev, kept)
+    type(model_t), intent(inout) :: model       !! model
+    real(wp), intent(in) :: lead                !! [s]
+    type(sim_eval_t), intent(in) :: ev          !! evaluation with the accelerations
+    type(velocities_t), intent(out) :: kept     !! the stored velocities
+    integer :: i
+    kept%v = model%body%v
+    kept%omega = model%body%omega
+    model%body%v = kept%v + lead*ev%acc
+    model%body%omega = kept%omega + lead*ev%alpha
+    do i = 1, model%n_gears
+      kept%qd(:, i) = gear_rates(model%gear(i))
+      call gear_set_rates(model%gear(i), kept%qd(:, i) + lead*ev%gear(i)%qdd)
+    end do
+  end subroutine lead_velocities
+
+  !> Puts back the velocities kept by lead_velocities.
+  pure subroutine restore_velocities(model, kept)
+    type(model_t), intent(inout) :: model       !! model
+    type(velocities_t), intent(in) :: kept      !! the stored velocities
+    integer :: i
+    model%body%v = kept%v
+    model%body%omega = kept%omega
+    do i = 1, model%n_gears
+      call gear_set_rates(model%gear(i), kept%qd(:, i))
+    end do
+  end subroutine restore_velocities
+
+  !> The body's state is finite (no NaN or Inf in position, velocity, attitude, rates).
+  pure logical function body_is_finite(body) result(ok)
+    type(body_t), intent(in) :: body   !! body
+    ok = all(ieee_is_finite(body%x)) .and. all(ieee_is_finite(body%v)) .and. &
+         all(ieee_is_finite(body%euler)) .and. all(ieee_is_finite(body%omega))
+  end function body_is_finite
+
+  !> The largest primary stroke reached by any gear (progress lines).
+  pure real(wp) function max_primary_stroke(model, ng) result(s)
+    type(model_t), intent(in) :: model          !! model
+    integer, intent(in) :: ng                   !! number of gears [-]
+    real(wp) :: s_min(n_struts), s_max(n_struts), v(ng)
+    integer :: i
+    do i = 1, ng
+      call gear_crush_history(model%gear(i), s_min, s_max)
+      v(i) = s_max(1)
+    end do
+    s = maxval(v)
+  end function max_primary_stroke
+
+end module landyn_sim_model

@@ -1,0 +1,234 @@
+!> The result of one run: the time series (one column per output sample), the summary, the
+!! energy audit's channels; their allocation, the recording of a sample and the summary at the end.
+module landyn_sim_result
+  use landyn_kinds, only: wp, rad2deg
+  use landyn_body, only: body_kinetic_energy
+  use landyn_gear, only: gear_rotation, gear_strut_lengths, gear_strokes, gear_crush_work, gear_crush_history, &
+                         gear_buffer_capacity, gear_violations, n_struts
+  use landyn_loads, only: n_load, load_peaks_t, gear_load_vector, load_peaks_init
+  use landyn_terrain, only: slip_velocity
+  use landyn_sim_model, only: model_t, sim_eval_t
+  implicit none
+  private
+
+  public :: sim_result_t, allocate_result, record, finish
+
+  !> Time series (columns = output samples) and summary of one run.
+  type :: sim_result_t
+    integer :: n_gears = 0
+    integer :: n_out = 0                                   !! samples stored
+    real(wp), allocatable :: t(:)                          !! [s]
+    real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
+    real(wp), allocatable :: mc_position(:, :)             !! (3, n) mass centre, global [m]
+    real(wp), allocatable :: velocity(:, :)                !! (3, n) mass-centre velocity, global [m/s]
+    real(wp), allocatable :: euler(:, :)                   !! (3, n) yaw, pitch, roll [deg]
+    real(wp), allocatable :: rate(:, :)                    !! (3, n) body rates p, q, r [deg/s]
+    real(wp), allocatable :: overload(:, :)                !! (3, n) (a - g)/g0 in lander axes [g]
+    real(wp), allocatable :: strut_length(:, :, :)         !! (3, n_gears, n) [m]
+    real(wp), allocatable :: stroke(:, :, :)               !! (3, n_gears, n) Table-3 sense [m]
+    real(wp), allocatable :: strut_force(:, :, :)          !! (3, n_gears, n) axial, compression positive [N]
+    real(wp), allocatable :: footpad_position(:, :, :)     !! (3, n_gears, n) global [m]
+    real(wp), allocatable :: ground_force(:, :, :)         !! (3, n_gears, n) on the footpad, global [N]
+    real(wp), allocatable :: normal_force(:, :)            !! (n_gears, n) [N]
+    real(wp), allocatable :: friction_force(:, :)          !! (n_gears, n) magnitude [N]
+    real(wp), allocatable :: penetration(:, :)             !! (n_gears, n) [m]
+    real(wp), allocatable :: slip_speed(:, :)              !! (n_gears, n) [m/s]
+    real(wp), allocatable :: energy(:, :)                  !! (n, n_energy) audit channels, one column each [J]
+    ! interface loads (landyn_loads): each gear's load vector (joint forces a, b, c on the body,
+    ! footpad force at d, joint moments a, b, c), lander axes, and the gear's total force on the body
+    ! from its momentum balance (the equilibrium reference of the joint forces)
+    real(wp), allocatable :: loads(:, :, :)                !! (n_load, n_gears, n) [N, N m]
+    real(wp), allocatable :: interface_force(:, :, :)      !! (3, n_gears, n) [N]
+    real(wp), allocatable :: gear_rot(:, :, :)             !! (3, 3, n_gears) gear frame -> lander frame [-]
+    type(load_peaks_t) :: load_peaks                       !! peak-load table over every accepted step
+    ! Peaks over each output interval (every step since the previous sample, this one included),
+    ! so that the stored histories keep the peaks the summary reports.
+    real(wp), allocatable :: overload_peak(:)              !! (n) largest |a - g|/g0 [g]
+    real(wp), allocatable :: normal_force_peak(:, :)       !! (n_gears, n) [N]
+    real(wp), allocatable :: strut_force_peak(:, :, :)     !! (3, n_gears, n) largest |axial| [N]
+    real(wp) :: acc_overload = 0.0_wp                      !! running interval peak [g]
+    real(wp), allocatable :: acc_normal_force(:)           !! (n_gears) running interval peak [N]
+    real(wp), allocatable :: acc_strut_force(:, :)         !! (3, n_gears) running interval peak [N]
+    ! summary
+    real(wp), allocatable :: crush_net(:, :)               !! (3, n_gears) signed net crush [m]
+    real(wp), allocatable :: crush_pos(:, :)               !! (3, n_gears) crushed toward +s [m]
+    real(wp), allocatable :: crush_neg(:, :)               !! (3, n_gears) crushed toward -s [m]
+    real(wp), allocatable :: stroke_final(:, :)            !! (3, n_gears) [m]
+    real(wp), allocatable :: stroke_margin(:, :)           !! (3, n_gears) capacity minus crushed, worst direction [m]
+    real(wp), allocatable :: crush_work(:, :)              !! (3, n_gears) [J]
+    integer, allocatable :: bottomed(:, :)                 !! (3, n_gears) 1 when a stroke exceeded capacity
+    real(wp), allocatable :: peak_penetration(:)           !! (n_gears) [m]
+    real(wp), allocatable :: slide_distance(:)             !! (n_gears) [m]
+    real(wp), allocatable :: peak_normal_force(:)          !! (n_gears) [N]
+    real(wp), allocatable :: peak_strut_force(:, :)        !! (3, n_gears) largest |axial| [N]
+    integer, allocatable :: mode_switches(:, :)            !! (3, n_gears) crush-mode changes [-]
+    real(wp) :: peak_overload = 0.0_wp                     !! largest |a - g|/g0 [g]
+    real(wp) :: t_peak_overload = 0.0_wp                   !! [s]
+    real(wp) :: final_euler(3) = 0.0_wp                    !! [deg]
+    real(wp) :: final_tilt = 0.0_wp                        !! [deg]
+    real(wp) :: max_tilt = 0.0_wp                          !! [deg]
+    logical :: tipped_over = .false.
+    logical :: at_rest = .false.
+    character(len=64) :: end_reason = ''
+    real(wp) :: energy_input = 0.0_wp                      !! initial KE + potential released + thrust work [J]
+    real(wp) :: energy_residual = 0.0_wp                   !! final residual / energy_input [-]
+    real(wp) :: max_violation = 0.0_wp                     !! after correction [m]
+    real(wp) :: max_drift = 0.0_wp                         !! before correction [m]
+    real(wp) :: t_final = 0.0_wp                           !! [s]
+    integer :: n_steps = 0                                 !! accepted steps [-]
+    character(len=16) :: integrator = ''                   !! integrator that produced the result
+    integer :: n_evaluations = 0                           !! force evaluations, rejected steps included [-]
+    integer :: n_rejected = 0                              !! rejected steps (error or event) [-]
+    integer :: n_events = 0                                !! accepted steps that ended at a located event [-]
+    integer :: n_forced = 0                                !! steps of event_resolution accepted above the tolerance [-]
+    real(wp) :: dt_smallest = 0.0_wp                       !! smallest accepted step [s]
+    real(wp) :: dt_largest = 0.0_wp                        !! largest accepted step [s]
+    real(wp) :: wall_time = 0.0_wp                         !! [s]
+    real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
+  end type sim_result_t
+
+  integer, parameter, public :: n_energy = 11
+  character(len=24), parameter, public :: energy_names(n_energy) = [character(len=24) :: &
+    'kinetic_body', 'kinetic_legs', 'potential_released', 'honeycomb_work', 'contact_damping', &
+    'contact_elastic', 'friction', 'strut_impacts', 'thrust_work', 'input', 'residual']
+
+contains
+
+  !> Allocates the result arrays (once, before the time loop).
+  subroutine allocate_result(res, ng, n_cap)
+    type(sim_result_t), intent(inout) :: res  !! result
+    integer, intent(in) :: ng                 !! number of gears
+    integer, intent(in) :: n_cap              !! capacity in samples
+    allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
+              res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
+    allocate (res%strut_length(n_struts, ng, n_cap), res%stroke(n_struts, ng, n_cap), res%strut_force(n_struts, ng, n_cap), &
+              res%footpad_position(3, ng, n_cap), res%ground_force(3, ng, n_cap))
+    allocate (res%normal_force(ng, n_cap), res%friction_force(ng, n_cap), res%penetration(ng, n_cap), &
+              res%slip_speed(ng, n_cap), res%energy(n_cap, n_energy))
+    allocate (res%overload_peak(n_cap), res%normal_force_peak(ng, n_cap), res%strut_force_peak(n_struts, ng, n_cap), &
+              res%acc_normal_force(ng), res%acc_strut_force(n_struts, ng))
+    res%acc_overload = 0.0_wp
+    res%acc_normal_force = 0.0_wp
+    res%acc_strut_force = 0.0_wp
+    allocate (res%crush_net(n_struts, ng), res%crush_pos(n_struts, ng), res%crush_neg(n_struts, ng), &
+              res%stroke_final(n_struts, ng), res%stroke_margin(n_struts, ng), res%crush_work(n_struts, ng), &
+              res%bottomed(n_struts, ng), res%peak_strut_force(n_struts, ng))
+    allocate (res%peak_penetration(ng), res%slide_distance(ng), res%peak_normal_force(ng))
+    res%peak_penetration = 0.0_wp
+    res%slide_distance = 0.0_wp
+    res%peak_normal_force = 0.0_wp
+    res%peak_strut_force = 0.0_wp
+    allocate (res%mode_switches(n_struts, ng))
+    res%mode_switches = 0
+    allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
+    res%loads = 0.0_wp                 ! stays zero when the interface loads are not computed
+    res%interface_force = 0.0_wp
+    call load_peaks_init(res%load_peaks, ng)
+    res%n_out = 0
+  end subroutine allocate_result
+
+  !> Records one output sample.
+  subroutine record(res, model, ev, w_normal, w_friction, w_thrust, w_impact, &
+                    ke0, pe0, ke_legs, e_el, gravity)
+    type(sim_result_t), intent(inout) :: res      !! result
+    type(model_t), intent(in) :: model            !! model at ev%t (velocities synchronised)
+    type(sim_eval_t), intent(in) :: ev            !! its evaluation (forces, footpads, overload)
+    real(wp), intent(in) :: w_normal              !! work into the ground (normal) [J]
+    real(wp), intent(in) :: w_friction            !! friction dissipation [J]
+    real(wp), intent(in) :: w_thrust              !! thrust work [J]
+    real(wp), intent(in) :: w_impact              !! energy dissipated in strut impacts [J]
+    real(wp), intent(in) :: ke0                   !! initial kinetic energy [J]
+    real(wp), intent(in) :: pe0                   !! initial potential energy [J]
+    real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
+    real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
+    real(wp), intent(in) :: gravity               !! [m/s^2]
+    integer :: k, i
+    real(wp) :: s(n_struts), sd(n_struts), rot(3, 3), pe, ke, crush, e_in
+    if (res%n_out >= size(res%t)) return
+    res%n_out = res%n_out + 1
+    k = res%n_out
+    res%t(k) = ev%t
+    res%mc_position(:, k) = model%body%x
+    res%position(:, k) = model%body%x - matmul(model%body%r, model%body%mc)
+    res%velocity(:, k) = model%body%v
+    res%euler(:, k) = model%body%euler*rad2deg
+    res%rate(:, k) = model%body%omega*rad2deg
+    res%overload(:, k) = ev%ovl
+    crush = 0.0_wp
+    do i = 1, res%n_gears
+      associate (g => model%gear(i))
+        rot = gear_rotation(g)
+        res%strut_length(:, i, k) = gear_strut_lengths(g)
+        call gear_strokes(g, s, sd)
+        res%stroke(:, i, k) = s
+        res%strut_force(:, i, k) = ev%gear(i)%axial
+        res%loads(:, i, k) = gear_load_vector(rot, ev%gear(i))
+        res%interface_force(:, i, k) = matmul(rot, ev%gear(i)%f_interface)
+        crush = crush + sum(gear_crush_work(g))
+      end associate
+      res%footpad_position(:, i, k) = ev%xd(:, i)
+      res%ground_force(:, i, k) = ev%fground(:, i)
+      res%normal_force(i, k) = ev%fn(i)
+      res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(ev%fground(:, i), ev%fground(:, i)) - ev%fn(i)**2))
+      res%penetration(i, k) = ev%delta(i)
+      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), ev%vd(:, i)))
+    end do
+    res%overload_peak(k) = max(res%acc_overload, norm2(ev%ovl))
+    res%normal_force_peak(:, k) = max(res%acc_normal_force, ev%fn(1:res%n_gears))
+    res%strut_force_peak(:, :, k) = res%acc_strut_force
+    res%acc_overload = 0.0_wp
+    res%acc_normal_force = 0.0_wp
+    res%acc_strut_force = 0.0_wp
+    ke = body_kinetic_energy(model%body)
+    pe = -model%body%mass*gravity*model%body%x(3)
+    e_in = ke0 + (pe0 - pe) + w_thrust
+    res%energy(k, 1) = ke
+    res%energy(k, 2) = ke_legs
+    res%energy(k, 3) = pe0 - pe
+    res%energy(k, 4) = crush
+    res%energy(k, 5) = w_normal - e_el
+    res%energy(k, 6) = e_el
+    res%energy(k, 7) = w_friction
+    res%energy(k, 8) = w_impact
+    res%energy(k, 9) = w_thrust
+    res%energy(k, 10) = ke0 + (pe0 - pe) + w_thrust
+    res%energy(k, 11) = e_in - (ke + ke_legs + crush + w_normal + w_friction + w_impact)
+    res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
+    res%energy_residual = res%energy(k, 11)/res%energy_input
+  end subroutine record
+
+  !> Fills the summary from the final model state.
+  subroutine finish(model, res, t)
+    type(model_t), intent(in) :: model         !! model
+    type(sim_result_t), intent(inout) :: res   !! result
+    real(wp), intent(in) :: t                  !! final time [s]
+    integer :: i, k
+    real(wp) :: s(n_struts), sd(n_struts), s_min(n_struts), s_max(n_struts), cap_pos, cap_neg, mpos, mneg, viol, drift
+    res%t_final = t
+    do i = 1, res%n_gears
+      associate (g => model%gear(i))
+        call gear_strokes(g, s, sd)
+        call gear_crush_history(g, s_min, s_max)
+        res%stroke_final(:, i) = s
+        res%crush_pos(:, i) = s_max
+        res%crush_neg(:, i) = 0.0_wp - s_min
+        res%crush_net(:, i) = s_max + s_min
+        res%crush_work(:, i) = gear_crush_work(g)
+        do k = 1, n_struts
+          call gear_buffer_capacity(g, k, cap_pos, cap_neg)
+          mpos = cap_pos - s_max(k)
+          mneg = huge(1.0_wp)
+          if (cap_neg > 0.0_wp) mneg = cap_neg + s_min(k)
+          res%stroke_margin(k, i) = min(mpos, mneg)
+          res%bottomed(k, i) = merge(1, 0, res%stroke_margin(k, i) < 0.0_wp)
+        end do
+        call gear_violations(g, viol, drift)
+        res%max_violation = max(res%max_violation, viol)
+        res%max_drift = max(res%max_drift, drift)
+      end associate
+    end do
+    res%final_euler = model%body%euler*rad2deg
+    res%final_tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))*rad2deg
+  end subroutine finish
+
+end module landyn_sim_result

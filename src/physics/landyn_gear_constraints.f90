@@ -1,0 +1,231 @@
+!> The gear's step and constraint correction (Step 4 of section 3.1): semi-implicit Euler, crush
+!! modes at the end of the step, the direct position correction dq = -A^+ Phi iterated to the
+!! tolerance (A^+ = A^T (A A^T)^-1), the crush history and work; the velocity rows A of the system
+!! velocity projection (landyn_impact).
+module landyn_gear_constraints
+  use landyn_kinds, only: wp, msg_len
+  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
+  use landyn_lapack, only: solve_spd_unblocked
+  use landyn_small_spd, only: small_spd_solve
+  use landyn_status, only: STAT_OK
+  use landyn_tube_friction, only: add_tube_bound
+  use landyn_gear_model, only: gear_t, n_q, n_phi, n_struts, max_rows, idx_len, strokes, gear_mass_matrix
+  implicit none
+  private
+
+  public :: gear_integrate, gear_settle, gear_velocity_rows
+  public :: GEAR_DRIFT, GEAR_NOT_CONVERGED
+
+  integer, parameter :: GEAR_DRIFT = 2            !! gear_integrate: the violation before correction exceeds max_drift [-]
+  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! gear_integrate: the position correction did not converge [-]
+
+contains
+
+  !> Advances the gear one step (semi-implicit Euler), decides the crush modes at the end of the
+  !! step, applies the direct position correction of Step 4 and updates the crush history and the
+  !! absorbed work. The velocity correction (Step 4's second half) is a plastic impact of the whole
+  !! system and is done by the caller for all gears and the body together (landyn_impact); for a
+  !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
+  !! kinetic metric (used by the unit tests of a free gear).
+  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity, kick)
+    type(gear_t), intent(inout) :: gear          !! gear
+    real(wp), intent(in) :: dt                   !! time step [s]
+    real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
+    integer, intent(in) :: max_iter              !! iteration cap of the position correction
+    real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
+    real(wp), intent(in), optional :: kick       !! velocity update length (variable-step leapfrog); default dt [s]
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), hk
+    real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg, mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
+    integer :: k, iter, nrow, i, j
+    character(len=msg_len) :: buf
+
+    stat = STAT_OK
+    if (gear%st%rigid .and. all(gear%st%locked)) return   ! no degree of freedom: nothing moves
+    gear%st%rigid = .false.
+    call strokes(gear, gear%st%q, gear%st%qd, s0, sd0)
+    hk = dt
+    if (present(kick)) hk = kick
+    qd_new = gear%st%qd + gear%st%qdd*hk
+    call strokes(gear, gear%st%q, qd_new, s1, sd1)
+    ! A crushing strut whose sliding speed reaches zero locks (it cannot be driven back by its own
+    ! buffer force); a free strut (bound 0 in its direction of motion) keeps moving.
+    do k = 1, 3
+      if (gear%st%locked(k)) cycle
+      call gear%buffer(k)%law%resistance(s0(k), sd0(k), gear%st%s_hismin(k), gear%st%s_hismax(k), fpos, fneg)
+      if (k == 1 .and. gear%tube%on) call add_tube_bound(gear%st%tube_bound, fpos, fneg)   ! tube friction sticks too
+      if (gear%st%dir(k) > 0 .and. sd1(k) <= 0.0_wp .and. fpos > 0.0_wp) gear%st%locked(k) = .true.
+      if (gear%st%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%st%locked(k) = .true.
+      if (gear%st%locked(k)) gear%st%s_lock(k) = s0(k)
+    end do
+    gear%st%qd = qd_new
+    ! Crush work during this step: the buffer force times the stroke increment, for sliding struts.
+    gear%st%q = gear%st%q + gear%st%qd*dt
+    gear%st%phq_ok = .false.
+    call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
+    do k = 1, 3
+      if (.not. gear%st%locked(k)) then
+        gear%st%work_crush(k) = gear%st%work_crush(k) + gear%sigma(k)*gear%st%axial(k)*(s0(k) - s1(k))
+      end if
+    end do
+
+    ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A
+    ! are built only when a correction is needed (a locked gear at rest needs none).
+    nrow = n_phi + count(gear%st%locked)
+    call position_residual(gear, gear%st%q, nrow, r)
+    viol = maxval(abs(r(1:n_phi)))
+    gear%st%max_drift = max(gear%st%max_drift, viol)
+    if (viol > max_drift) then
+      stat = GEAR_DRIFT
+      write (buf, '(a,es10.3,a,es10.3,a)') 'constraint drift ', viol, ' m in one step exceeds ', max_drift, &
+        ' m: the time step is too large for this landing (reduce &simulation dt)'
+      errmsg = buf
+      return
+    end if
+    do iter = 1, max_iter
+      if (maxval(abs(r(1:nrow))) <= tol) exit
+      call build_rows(gear, gear%st%q, a, nrow)
+      call min_norm_correction(nrow, a, r, gear%st%q, stat, errmsg)
+      if (stat /= 0) return
+      call position_residual(gear, gear%st%q, nrow, r)
+      gear%st%n_correction_iter = max(gear%st%n_correction_iter, iter)
+    end do
+    viol = maxval(abs(r(1:nrow)))
+    if (viol > tol) then
+      stat = GEAR_NOT_CONVERGED
+      write (buf, '(a,i0,a,es10.3,a,es10.3,a)') 'position constraint correction did not converge in ', max_iter, &
+        ' iterations (violation ', viol, ' m, tolerance ', tol, ' m)'
+      errmsg = buf
+      return
+    end if
+    gear%st%max_violation = max(gear%st%max_violation, viol)
+    ! Crush history (positions only).
+    call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
+    gear%st%s_hismax = max(gear%st%s_hismax, s1)
+    gear%st%s_hismin = min(gear%st%s_hismin, s1)
+
+    if (present(velocity)) then
+      if (velocity) then
+        ! Gear alone, body fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd (kinetic metric).
+        call build_rows(gear, gear%st%q, a, nrow)
+        call row_products(nrow, a, gear%st%qd, r)
+        if (maxval(abs(r(1:nrow))) > 0.0_wp) then
+          mdiag = gear_mass_matrix(gear, gear%st%q)
+          do j = 1, nrow
+            do i = 1, j
+              w(i, j) = sum(a(i, :)*a(j, :)/mdiag)
+            end do
+          end do
+          lam(1:nrow) = r(1:nrow)
+          call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
+          if (stat /= 0) return
+          do i = 1, nrow
+            gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
+          end do
+        end if
+        call gear_settle(gear)
+      end if
+    end if
+  end subroutine gear_integrate
+
+  !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
+  !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.
+  pure subroutine gear_settle(gear)
+    type(gear_t), intent(inout) :: gear    !! gear after the velocity projection
+    if (all(gear%st%locked) .and. .not. gear%st%rigid) then
+      gear%st%qd = 0.0_wp
+      gear%st%qdd = 0.0_wp
+      gear%st%rigid = .true.
+      gear%st%rigid_cache = .false.
+    end if
+  end subroutine gear_settle
+
+  !> Velocity constraint rows of the gear at its current configuration: Phi_q and one row per
+  !! locked strut (its stroke rate held at zero). A qd = 0 is the velocity constraint.
+  pure subroutine gear_velocity_rows(gear, a, nrow)
+    type(gear_t), intent(in) :: gear           !! gear
+    real(wp), intent(out) :: a(max_rows, n_q)  !! rows [m/rad, -]
+    integer, intent(out) :: nrow               !! number of rows [-]
+    call build_rows(gear, gear%st%q, a, nrow)
+  end subroutine gear_velocity_rows
+
+  !> Rows of the correction: Phi_q and one row per locked strut.
+  pure subroutine build_rows(gear, qv, a, nrow)
+    type(gear_t), intent(in) :: gear           !! gear
+    real(wp), intent(in) :: qv(n_q)            !! coordinates
+    real(wp), intent(out) :: a(max_rows, n_q)  !! rows
+    integer, intent(out) :: nrow               !! number of rows
+    integer :: k
+    a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv)
+    nrow = n_phi
+    do k = 1, 3
+      if (gear%st%locked(k)) then
+        nrow = nrow + 1
+        a(nrow, :) = 0.0_wp
+        a(nrow, idx_len(k)) = gear%sigma(k)
+      end if
+    end do
+  end subroutine build_rows
+
+  !> Position residual: Phi(q) and the locked strokes' departure from their held values.
+  subroutine position_residual(gear, qv, nrow, r)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: qv(n_q)         !! coordinates
+    integer, intent(in) :: nrow             !! number of rows
+    real(wp), intent(out) :: r(max_rows)    !! residual
+    integer :: k, row
+    real(wp) :: s(3), sd(3)
+    r(1:n_phi) = gear_constraints(gear%geom, qv)
+    call strokes(gear, qv, gear%st%qd, s, sd)
+    row = n_phi
+    do k = 1, 3
+      if (gear%st%locked(k)) then
+        row = row + 1
+        r(row) = s(k) - gear%st%s_lock(k)
+      end if
+    end do
+    if (row /= nrow) r(row + 1:) = 0.0_wp
+  end subroutine position_residual
+
+  !> r = A x for the first nrow rows.
+  pure subroutine row_products(nrow, a, x, r)
+    integer, intent(in) :: nrow                  !! rows
+    real(wp), intent(in) :: a(max_rows, n_q)     !! rows
+    real(wp), intent(in) :: x(n_q)               !! vector
+    real(wp), intent(out) :: r(max_rows)         !! products
+    integer :: i
+    do i = 1, nrow
+      r(i) = dot_product(a(i, :), x)
+    end do
+  end subroutine row_products
+
+  !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
+  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+    integer, intent(in) :: nrow                  !! rows
+    real(wp), intent(in) :: a(:, :)              !! Jacobian rows
+    real(wp), intent(in) :: r(:)                 !! residual
+    real(wp), intent(inout) :: x(n_q)            !! vector to correct
+    integer, intent(out) :: stat                 !! 0 on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: s(max_rows, max_rows), y(max_rows)
+    integer :: i, j
+    do j = 1, nrow
+      do i = 1, j
+        s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+      end do
+    end do
+    y(1:nrow) = r(1:nrow)
+    call small_spd_solve(nrow, s, max_rows, y, stat)
+    if (stat /= 0) then
+      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
+        '): redundant constraints or a singular configuration'
+      return
+    end if
+    do i = 1, nrow
+      x = x - y(i)*a(i, 1:n_q)
+    end do
+  end subroutine min_norm_correction
+
+end module landyn_gear_constraints
