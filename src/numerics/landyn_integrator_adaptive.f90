@@ -35,7 +35,7 @@ module landyn_integrator_adaptive
 
   public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change
 
-  integer, parameter :: NO_STEP = 4   !! adaptive_step: no step down to dt_min succeeds (the value sim_accept
+  integer, parameter :: NO_STEP = 4   !! from adaptive_step when no step down to dt_min succeeds (the value sim_accept
                                       !! gives a non-finite state, SIM_NON_FINITE) [-]
 
   !> Adaptive integrator and its state between steps.

@@ -38,7 +38,7 @@ module landyn_sim_core
   public :: n_energy, energy_names
   public :: SIM_NON_FINITE
 
-  integer, parameter :: SIM_NON_FINITE = 4   !! sim_accept: the solution became non-finite [-]
+  integer, parameter :: SIM_NON_FINITE = 4   !! from sim_accept when the solution became non-finite [-]
 
 contains
 

@@ -16,8 +16,8 @@ module landyn_gear_constraints
   public :: gear_integrate, gear_settle, gear_velocity_rows
   public :: GEAR_DRIFT, GEAR_NOT_CONVERGED
 
-  integer, parameter :: GEAR_DRIFT = 2            !! gear_integrate: the violation before correction exceeds max_drift [-]
-  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! gear_integrate: the position correction did not converge [-]
+  integer, parameter :: GEAR_DRIFT = 2            !! from gear_integrate when the violation before correction exceeds max_drift [-]
+  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! from gear_integrate when the position correction did not converge [-]
 
 contains
 
