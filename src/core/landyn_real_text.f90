@@ -1,14 +1,14 @@
-!> Real numbers as the shortest decimal text that reads back exactly (fmt_real): the value text
-!! of input messages and written decks. Moved out of landyn_input so that the law modules can
-!! report parameter problems in the same format.
+!> Real numbers as the shortest decimal text that reads back exactly: fmt_real, fmt_angle (an
+!! angle in radians written in degrees), and value lists with repeat counts (fmt_reals,
+!! fmt_angles). The value text of input messages, written decks and the law checks' messages.
 module landyn_real_text
   use, intrinsic :: iso_fortran_env, only: int64
-  use landyn_kinds, only: wp
+  use landyn_kinds, only: wp, deg2rad, rad2deg
   use landyn_strings, only: fmt_int => int_text
   implicit none
   private
 
-  public :: fmt_real
+  public :: fmt_real, fmt_angle, fmt_reals, fmt_angles
 
   integer, parameter :: short_digits = 3           !! digit counts tried one by one before bisection [-]
   !> ES formats with 1..17 significant digits and a 3-digit exponent (es_text)
@@ -120,6 +120,119 @@ contains
   end subroutine whole_number_text
 
   !> Shortest decimal degrees that deg_to_rad converts back to exactly x: the candidates are
+  !! x*rad2deg and its neighbours (+-1, +-2 ulp), tried digit count by digit count, the first
+  !! that works wins. As in fmt_real, short texts (d <= 3) are tried one by one and longer ones
+  !! by bisection over d, so the text always converts back to x; it is the shortest one except
+  !! where a non-exact neighbour happens to work at fewer digits than the exact candidates.
+  pure function fmt_angle(x) result(s)
+    real(wp), intent(in) :: x              !! angle [rad]
+    character(len=:), allocatable :: s     !! angle in degrees [-]
+    real(wp) :: cand(5)
+    integer :: d, k, lo, hi, mid, d_lo
+    cand(1) = x*rad2deg
+    if (.not. abs(x) >= tiny(1.0_wp)) then   ! zero (or subnormal): no neighbours to try
+      s = fmt_real(cand(1))
+      return
+    end if
+    cand(2) = nearest(cand(1), 1.0_wp)
+    cand(3) = nearest(cand(1), -1.0_wp)
+    cand(4) = nearest(cand(2), 1.0_wp)
+    cand(5) = nearest(cand(3), -1.0_wp)
+    d_lo = fewest_digits(cand(1))
+    do d = d_lo, short_digits
+      k = first_ok(d)
+      if (k > 0) then
+        s = pretty(es_text(cand(k), d))
+        return
+      end if
+    end do
+    if (first_ok(17) == 0) then
+      s = pretty(es_text(cand(1), 17))
+      return
+    end if
+    lo = max(short_digits, d_lo - 1)
+    hi = 17
+    do while (hi - lo > 1)
+      mid = (lo + hi)/2
+      if (first_ok(mid) > 0) then
+        hi = mid
+      else
+        lo = mid
+      end if
+    end do
+    s = pretty(es_text(cand(first_ok(hi)), hi))
+  contains
+    !> First candidate whose dd-digit text converts back to x (0: none).
+    pure integer function first_ok(dd)
+      integer, intent(in) :: dd   !! significant digits [-]
+      real(wp) :: y
+      character(len=40) :: b
+      integer :: kk
+      first_ok = 0
+      do kk = 1, size(cand)
+        b = es_text(cand(kk), dd)
+        read (b, *) y
+        if (same_real(y*deg2rad, x)) then
+          first_ok = kk
+          return
+        end if
+      end do
+    end function first_ok
+  end function fmt_angle
+
+  !> Values joined with ', ', runs of four or more equal values written as r*value.
+  pure function fmt_reals(x) result(s)
+    real(wp), intent(in) :: x(:)           !! values [any unit]
+    character(len=:), allocatable :: s     !! deck text [-]
+    s = fmt_list(x, .false.)
+  end function fmt_reals
+
+  !> Angles [rad] in degrees, joined as fmt_reals does.
+  pure function fmt_angles(x) result(s)
+    real(wp), intent(in) :: x(:)           !! angles [rad]
+    character(len=:), allocatable :: s     !! deck text in degrees [-]
+    s = fmt_list(x, .true.)
+  end function fmt_angles
+
+  !> fmt_real (or fmt_angle) of each value, joined by join_runs.
+  pure function fmt_list(x, angle) result(s)
+    real(wp), intent(in) :: x(:)           !! values [any unit, or rad]
+    logical, intent(in) :: angle           !! write angles in degrees [-]
+    character(len=:), allocatable :: s     !! deck text [-]
+    integer :: i
+    character(len=40) :: items(size(x))
+    do i = 1, size(x)
+      if (angle) then
+        items(i) = fmt_angle(x(i))
+      else
+        items(i) = fmt_real(x(i))
+      end if
+    end do
+    s = join_runs(items)
+  end function fmt_list
+
+  pure function join_runs(items) result(s)
+    character(len=*), intent(in) :: items(:)  !! formatted values [-]
+    character(len=:), allocatable :: s        !! joined text [-]
+    integer :: i, j
+    s = ''
+    i = 1
+    do while (i <= size(items))
+      j = i
+      do while (j < size(items))
+        if (items(j + 1) /= items(i)) exit
+        j = j + 1
+      end do
+      if (len(s) > 0) s = s//', '
+      if (j - i + 1 >= 4) then
+        s = s//fmt_int(j - i + 1)//'*'//trim(items(i))
+        i = j + 1
+      else
+        s = s//trim(items(i))
+        i = i + 1
+      end if
+    end do
+  end function join_runs
 
   !> x in ES format with d significant digits and a 3-digit exponent.
   pure function es_text(x, d) result(buf)
