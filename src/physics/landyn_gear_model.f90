@@ -390,7 +390,7 @@ contains
   !! velocity projection at the same configuration).
   pure subroutine gear_cache_jacobian(gear, phq)
     type(gear_t), intent(inout) :: gear     !! gear
-    real(wp), intent(in) :: phq(n_phi, n_q) !! Phi_q at gear%st%q [-, m]
+    real(wp), intent(in) :: phq(:, :)       !! Phi_q at gear%st%q, n_phi x n_q [-, m]
     gear%st%phq = phq
     gear%st%phq_q = gear%st%q
     gear%st%phq_ok = .true.
