@@ -24,9 +24,10 @@ module landyn_campaign_deck
   use landyn_kinds, only: wp
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
   use landyn_input, only: input_errors_t, read_text_or_report
+  use landyn_files, only: base_name
   use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, &
                                  real_text_short, quote_text, close_name_hint, dir_of, join_path, &
-                                 base_name_no_ext, hint_and_list, name_list
+                                 hint_and_list, name_list
   use landyn_campaign_types, only: campaign_t, param_t, criteria_t, raw_campaign_t, raw_parameter_t, &
                                    raw_criteria_t, max_values, max_saved, max_body_points, max_params, &
                                    label_len, max_cases
@@ -254,7 +255,7 @@ contains
     if (len_trim(rc%summary_file) > 0) then
       camp%summary_file = trim(rc%summary_file)
     else
-      camp%summary_file = base_name_no_ext(deck_name)//'.h5'
+      camp%summary_file = base_name(deck_name)//'.h5'
     end if
     if (len_trim(rc%history_prefix) > 0) then
       camp%history_prefix = trim(rc%history_prefix)

@@ -27,7 +27,7 @@ module landyn_campaign_nml
 
   public :: nml_item_t, nml_group_t, split_namelist
   public :: lower_case, int_text, real_text, real_text_short, edit_distance, is_blank_char, one_line_text
-  public :: quote_text, close_name_hint, dir_of, join_path, base_name_no_ext, hint_and_list, name_list, ints_text
+  public :: quote_text, close_name_hint, dir_of, join_path, hint_and_list, name_list, ints_text
 
   !> One `name = value` item of a group.
   type :: nml_item_t
@@ -251,16 +251,6 @@ contains
     if (s(1:1) == '/') return
     s = dir//s
   end function join_path
-
-  !> File name without directory and without its last extension: 'a/b/mc.nml' -> 'mc'.
-  pure function base_name_no_ext(path) result(s)
-    character(len=*), intent(in) :: path  !! file name [-]
-    character(len=:), allocatable :: s    !! base name [-]
-    integer :: p
-    s = trim(path(index(path, '/', back=.true.) + 1:))
-    p = index(s, '.', back=.true.)
-    if (p > 1) s = s(1:p - 1)
-  end function base_name_no_ext
 
   ! ================================================================ lists in messages
 

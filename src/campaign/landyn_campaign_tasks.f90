@@ -9,7 +9,7 @@ module landyn_campaign_tasks
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
-  use landyn_campaign_nml, only: int_text, real_text_short, lower_case
+  use landyn_campaign_nml, only: int_text, ints_text, real_text_short, lower_case
   use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, n_criteria, criterion_name, &
                                   failed_criteria_names, failure_counts
@@ -289,7 +289,7 @@ contains
     call results_missing(table, missing)
     if (size(missing) > 0) then
       write (err_u, '(a)') 'landyn_batch: --merge: '//int_text(size(missing))//' case(s) missing, e.g. '// &
-        ids_text(missing(1:min(20, size(missing))))
+        ints_text(missing(1:min(20, size(missing))))
       code = EXIT_INCOMPLETE
     end if
 
@@ -309,17 +309,5 @@ contains
     end subroutine grow
 
   end subroutine merge_summaries
-
-  !> Case ids as comma-separated text.
-  pure function ids_text(v) result(s)
-    integer, intent(in) :: v(:)         !! ids [-]
-    character(len=:), allocatable :: s  !! 'a, b, c' [-]
-    integer :: i
-    s = ''
-    do i = 1, size(v)
-      if (i > 1) s = s//', '
-      s = s//int_text(v(i))
-    end do
-  end function ids_text
 
 end module landyn_campaign_tasks

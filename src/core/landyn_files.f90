@@ -26,7 +26,7 @@ module landyn_files
 
   public :: read_whole_file, normalize_line_ends, file_kind, same_file, output_file_problem, is_hdf5_file
   public :: kind_missing, kind_regular, kind_directory, kind_other, kind_unknown, max_name_component
-  public :: directory_of
+  public :: directory_of, base_name
 
   integer, parameter :: kind_unknown = -1   !! cannot tell (permission denied on the way, ...)
   integer, parameter :: kind_missing = 0    !! no such file
@@ -198,6 +198,19 @@ contains
   end function is_hdf5_file
 
   !> Directory part of a path ('.' when there is none).
+  !> File name without its directory and its last extension ('a/b/mc.nml' -> 'mc'); `fallback`
+  !! (default '') when nothing is left.
+  pure function base_name(path, fallback) result(b)
+    character(len=*), intent(in) :: path                !! file name [-]
+    character(len=*), intent(in), optional :: fallback  !! returned for an empty base name [-]
+    character(len=:), allocatable :: b                  !! base name [-]
+    integer :: d
+    b = trim(path(index(path, '/', back=.true.) + 1:))
+    d = index(b, '.', back=.true.)
+    if (d > 1) b = b(1:d - 1)
+    if (len(b) == 0 .and. present(fallback)) b = fallback
+  end function base_name
+
   pure function directory_of(path) result(d)
     character(len=*), intent(in) :: path   !! file name [-]
     character(len=:), allocatable :: d     !! its directory [-]

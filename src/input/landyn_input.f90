@@ -22,7 +22,7 @@ module landyn_input
   use landyn_kinematics, only: rot_z
   use landyn_config, only: landyn_input_t, gears_cfg_t, default_input, is_set
   use landyn_strings, only: lower => lower_case, fmt_int => int_text
-  use landyn_files, only: read_whole_file
+  use landyn_files, only: read_whole_file, base_name
   use landyn_input_reader, only: parse_deck
   use landyn_input_validate, only: validate_input
   use landyn_input_writer, only: write_resolved_input, resolved_input_text
@@ -228,13 +228,7 @@ contains
   pure function default_output_file(deck) result(file)
     character(len=*), intent(in) :: deck     !! deck path ('' for none) [-]
     character(len=:), allocatable :: file    !! result file name [-]
-    integer :: s, d
-    s = index(deck, '/', back=.true.)
-    file = trim(deck(s + 1:))
-    d = index(file, '.', back=.true.)
-    if (d > 1) file = file(1:d - 1)
-    if (len(file) == 0) file = 'landyn'
-    file = file//'.h5'
+    file = base_name(deck, 'landyn')//'.h5'
   end function default_output_file
 
 end module landyn_input

@@ -30,13 +30,13 @@ module landyn_study
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears
   use landyn_config, only: landyn_input_t, path_len
-  use landyn_input, only: input_errors_t, read_input_file, apply_input_text, resolve_input, validate_input
+  use landyn_input, only: input_errors_t, read_text_or_report, read_input_file, apply_input_text, resolve_input, validate_input
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_health, only: health_t, check_health, health_fail
   use landyn_output, only: write_result_file
   use landyn_strings, only: int_text, lower_case
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH
-  use landyn_files, only: read_whole_file
+  use landyn_files, only: base_name
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
   implicit none
@@ -127,7 +127,7 @@ contains
     integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study, s0, s1, g
     integer, allocatable :: bad(:)
     character(len=msg_len) :: msg
-    character(len=:), allocatable :: text, dir, ovr, work, gname, rmsg, buf
+    character(len=:), allocatable :: text, dir, ovr, work, gname, buf
     integer, allocatable :: vs(:), ve(:)
     type(variant_t), allocatable :: tmp(:)
     logical :: terminated
@@ -135,12 +135,8 @@ contains
     n0 = errors%count()
     stat = STAT_OK
     sd%deck_name = trim(path)
-    call read_whole_file(path, text, ios, rmsg)
-    if (ios /= 0) then
-      call errors%add(path//': cannot read the study deck: '//rmsg)
-      stat = STAT_INPUT
-      return
-    end if
+    call read_text_or_report(path, path//': cannot read the study deck: ', text, errors, stat)
+    if (stat /= STAT_OK) return
     sd%deck_text = text
     dir = ''
     i = index(path, '/', back=.true.)
@@ -232,9 +228,9 @@ contains
     sd%common = ''
     call join_sets(common, 'common', path, sd%common, errors)
     sd%output = output
-    if (len_trim(output) == 0) sd%output = base_name(path)//'.h5'
+    if (len_trim(output) == 0) sd%output = base_name(path, 'study')//'.h5'
     sd%csv = csv
-    if (len_trim(csv) == 0) sd%csv = base_name(path)//'.csv'
+    if (len_trim(csv) == 0) sd%csv = base_name(path, 'study')//'.csv'
     sd%keep_results = keep_results
     call set_measures(sd, measure_case, measure_gear, measure_strut, path, errors, 4)
 
@@ -531,24 +527,12 @@ contains
     name = b//'_'//int_text(v, 3)//'_'//group_name(study%case_label(c))//'.h5'
   end function run_file_name
 
-  !> Base name of a path without directory and extension.
-  pure function base_name(path) result(b)
-    character(len=*), intent(in) :: path   !! path [-]
-    character(len=:), allocatable :: b     !! base name [-]
-    integer :: s, d
-    s = index(path, '/', back=.true.)
-    b = trim(path(s + 1:))
-    d = index(b, '.', back=.true.)
-    if (d > 1) b = b(1:d - 1)
-    if (len(b) == 0) b = 'study'
-  end function base_name
-
   !> 'LC-1' from 'lc1.nml' (upper-case base name with a dash before a trailing number), else the base name.
   pure function default_case_label(deck) result(label)
     character(len=*), intent(in) :: deck   !! deck path [-]
     character(len=label_len) :: label      !! label [-]
     character(len=:), allocatable :: b
-    b = base_name(deck)
+    b = base_name(deck, 'study')
     if (len(b) == 3 .and. lower_case(b(1:2)) == 'lc') then
       label = 'LC-'//b(3:3)
     else
