@@ -24,9 +24,9 @@ module landyn_files
   implicit none
   private
 
-  public :: read_whole_file, normalize_line_ends, file_kind, same_file, output_file_problem, is_hdf5_file
-  public :: kind_missing, kind_regular, kind_directory, kind_other, kind_unknown, max_name_component
-  public :: directory_of, base_name
+  public :: read_whole_file, normalize_line_ends, file_kind, output_file_problem
+  public :: kind_missing, kind_regular, kind_directory, kind_other, kind_unknown
+  public :: base_name
 
   integer, parameter :: kind_unknown = -1   !! cannot tell (permission denied on the way, ...)
   integer, parameter :: kind_missing = 0    !! no such file

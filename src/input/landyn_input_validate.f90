@@ -21,7 +21,7 @@ module landyn_input_validate
   implicit none
   private
 
-  public :: validate_input, validate_laws
+  public :: validate_input
 
   ! Bounds of docs/input that relate variables (the single-variable ranges are in the registry)
   real(wp), parameter :: max_steps = 1.0e9_wp          !! most time steps of a run, t_end/dt [-]

@@ -10,7 +10,7 @@ module landyn_namelist_text
   implicit none
   private
 
-  public :: strip_comments, next_ampersand, group_name_end, find_group_end, find_item_names, name_start
+  public :: strip_comments, find_item_names
   public :: next_group
   public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
   public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word, leading_text

@@ -12,7 +12,7 @@ module landyn_simulation
   implicit none
   private
 
-  public :: sim_result_t, run_simulation, make_integrator
+  public :: sim_result_t, run_simulation
   public :: sim_t, sim_snapshot_t, sim_init, sim_step, sim_save, sim_restore
   public :: n_energy, energy_names
 

@@ -15,7 +15,7 @@ module landyn_provenance
   implicit none
   private
 
-  public :: write_meta, iso_timestamp
+  public :: write_meta
 
 contains
 

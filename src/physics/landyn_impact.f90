@@ -39,7 +39,7 @@ module landyn_impact
   implicit none
   private
 
-  public :: system_velocity_projection, coupling_matrix
+  public :: system_velocity_projection
 
   integer, parameter :: max_sys_rows = max_rows*max_gears   !! constraint rows of all gears at most
 
