@@ -145,7 +145,7 @@ contains
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
     integer :: st, i
-    integer(kind=8) :: c0, c1, crate, c_in, c_sim
+    integer(int64) :: c0, c1, crate, c_in, c_sim
 
     call system_clock(c0, crate)
     c_in = -1

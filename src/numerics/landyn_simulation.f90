@@ -2,6 +2,7 @@
 !! &simulation (landyn_integrator_fixed or landyn_integrator_adaptive) and steps it to the end of
 !! the run. Re-exports the model and result types the callers use.
 module landyn_simulation
+  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t, integrator_names
   use landyn_sim_core, only: sim_result_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
@@ -49,7 +50,7 @@ contains
     type(sim_t) :: sim
     class(integrator_t), allocatable :: integ
     logical :: done
-    integer(kind=8) :: c0, c1, crate
+    integer(int64) :: c0, c1, crate
 
     call system_clock(c0, crate)
     call sim_init(inp, sim, res, stat, errmsg)

@@ -39,7 +39,7 @@ module landyn_buffer
     !> Largest axial force the buffer can exert against motion toward +s (f_pos) and toward -s (f_neg).
     pure subroutine resistance_iface(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
       import :: buffer_law_t, wp
-      class(buffer_law_t), intent(in) :: self
+      class(buffer_law_t), intent(in) :: self     !! the buffer law
       real(wp), intent(in) :: s          !! stroke [m]
       real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
       real(wp), intent(in) :: s_hismin   !! most negative stroke reached so far [m]
@@ -50,7 +50,7 @@ module landyn_buffer
     !> Stroke capacity in each direction.
     pure subroutine capacity_iface(self, cap_pos, cap_neg)
       import :: buffer_law_t, wp
-      class(buffer_law_t), intent(in) :: self
+      class(buffer_law_t), intent(in) :: self     !! the buffer law
       real(wp), intent(out) :: cap_pos   !! stroke available toward +s [m]
       real(wp), intent(out) :: cap_neg   !! stroke available toward -s [m] (0: rigid stop at s = 0)
     end subroutine capacity_iface
@@ -59,7 +59,7 @@ module landyn_buffer
     !! adaptive integrator can locate those instants as events. Its values mean nothing else.
     pure integer function segment_iface(self, s)
       import :: buffer_law_t, wp
-      class(buffer_law_t), intent(in) :: self
+      class(buffer_law_t), intent(in) :: self     !! the buffer law
       real(wp), intent(in) :: s          !! stroke [m]
     end function segment_iface
   end interface
@@ -95,7 +95,7 @@ module landyn_buffer
 contains
 
   pure subroutine primary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
-    class(primary_honeycomb_t), intent(in) :: self
+    class(primary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (shortening positive) [m]
     real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
     real(wp), intent(in) :: s_hismin   !! smallest stroke reached (the primary never crushes in extension: <= 0) [m]
@@ -128,7 +128,7 @@ contains
   end subroutine primary_resistance
 
   pure subroutine primary_capacity(self, cap_pos, cap_neg)
-    class(primary_honeycomb_t), intent(in) :: self
+    class(primary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(out) :: cap_pos   !! stroke capacity in shortening [m]
     real(wp), intent(out) :: cap_neg   !! 0: rigid stop at the original length [m]
     cap_pos = self%stage_end(self%n_stages)
@@ -137,7 +137,7 @@ contains
 
   !> Stage k (1..n_stages) while s <= stage_end(k), n_stages + 1 on the end-of-stroke stop.
   pure integer function primary_segment(self, s) result(seg)
-    class(primary_honeycomb_t), intent(in) :: self
+    class(primary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (shortening positive) [m]
     integer :: k
     seg = self%n_stages + 1
@@ -150,7 +150,7 @@ contains
   end function primary_segment
 
   pure subroutine secondary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
-    class(secondary_honeycomb_t), intent(in) :: self
+    class(secondary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
     real(wp), intent(in) :: s_dot      !! stroke rate [m/s]
     real(wp), intent(in) :: s_hismin   !! most negative stroke reached so far [m]
@@ -174,7 +174,7 @@ contains
   end subroutine secondary_resistance
 
   pure subroutine secondary_capacity(self, cap_pos, cap_neg)
-    class(secondary_honeycomb_t), intent(in) :: self
+    class(secondary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(out) :: cap_pos   !! stroke available in lengthening [m]
     real(wp), intent(out) :: cap_neg   !! stroke available in shortening [m]
     cap_pos = self%stroke_lengthening
@@ -183,7 +183,7 @@ contains
 
   !> 0 within the stroke, +1 on the lengthening stop, -1 on the shortening stop.
   pure integer function secondary_segment(self, s) result(seg)
-    class(secondary_honeycomb_t), intent(in) :: self
+    class(secondary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
     seg = 0
     if (s > self%stroke_lengthening) seg = 1
