@@ -273,7 +273,9 @@ module landyn_input_registry
     input_var_t(g_contact, 'damping_depth', k_real, unit='m', takes='a real number', &
       meaning='D1 (base), d_max (adams_impact), d (kelvin_voigt_step)', &
       doc='D1 (base: penetration of full damping), d_max (adams_impact), d (kelvin_voigt_step: damping only for δ '// &
-      '<= d)', doc_valid='`> 0`'), &
+      '<= d)', &
+      doc_valid='`> 0` for adams_impact and kelvin_voigt_step; `>= 0` for the other laws (base: 0 = no ramp, '// &
+        'full damping at once)'), &
     input_var_t(g_contact, 'damping2', k_real, unit='N s^2/m^2', takes='a real number', &
       meaning='D2 of kelvin_voigt_bilinear', lo_op='>=', lo='0', &
       doc='D2 of kelvin_voigt_bilinear (Table 5: 10 × 1000)'), &
@@ -310,7 +312,8 @@ module landyn_input_registry
       meaning='stiction transition slip speed', lo_op='>', lo='0', &
       doc='v_s of coulomb_step; the regularisation / stiction speed v0 of ty3 and ty6 (Table 8: 0.1)'), &
     input_var_t(g_friction, 'v_dynamic', k_real, unit='m/s', takes='a real number', &
-      meaning='friction transition slip speed', doc='v_d of coulomb_step', doc_valid='`> v_static`'), &
+      meaning='friction transition slip speed', doc='v_d of coulomb_step', &
+      doc_valid='`> v_static` for coulomb_step and adams_step (the laws that use it)'), &
     input_var_t(g_friction, 'viscous', k_real, unit='N s/m', takes='a real number', meaning='C_v of ty2, ty5, ty6', &
       lo_op='>=', lo='0', doc='C_v of ty2, ty5, ty6 (Table 8 TY-2)'), &
     input_var_t(g_friction, 'stribeck_speed', k_real, unit='m/s', takes='a real number', &

@@ -8,8 +8,8 @@
 module landyn_input_validate
   use landyn_kinds, only: wp, max_gears
   use landyn_errors, only: input_errors_t
-  use landyn_contact, only: contact_law_names
-  use landyn_friction, only: friction_law_names
+  use landyn_contact, only: contact_law_names, check_contact_law_input
+  use landyn_friction, only: friction_law_names, check_friction_law_input
   use landyn_kinematics, only: det3
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, gears_cfg_t, primary_cfg_t, &
                            secondary_cfg_t, terrain_cfg_t, initial_cfg_t, output_cfg_t, is_set, max_stages, &
@@ -51,22 +51,14 @@ contains
   end subroutine validate_input
 
   !> The law-dependent checks of &contact and &friction (those that depend on the law name or
-  !! compare two variables of those groups). To be replaced by the law factories' checks
-  !! (check_contact_law_input, check_friction_law_input).
+  !! compare two variables of those groups): the law registries' checks, the same code the law
+  !! factories run, so a deck is accepted exactly when its laws can be built.
   subroutine validate_laws(inp, pre, errors)
     type(landyn_input_t), intent(in) :: inp        !! resolved input
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    associate (c => inp%contact, f => inp%friction)
-      call require(errors, c%damping_depth > 0.0_wp, pre, 'contact', 'damping_depth', &
-                   fmt_real(c%damping_depth)//' m', 'damping_depth > 0 m')
-      call require(errors, f%v_dynamic > f%v_static, pre, 'friction', 'v_dynamic', fmt_real(f%v_dynamic)//' m/s', &
-                   'v_dynamic > v_static = '//fmt_real(f%v_static)//' m/s')
-      if (in_name_list(f%law, 'ty4, ty5, ty6')) &
-        call require(errors, f%mu_dynamic <= f%mu_static, pre, 'friction', 'mu_dynamic', fmt_real(f%mu_dynamic), &
-                     'mu_dynamic <= mu_static = '//fmt_real(f%mu_static)//' for law '//quoted(trim(f%law))// &
-                     ' (stiction)')
-    end associate
+    call check_contact_law_input(inp%contact, pre, errors)
+    call check_friction_law_input(inp%friction, pre, errors)
   end subroutine validate_laws
 
   !> The generic checks of the registry: each scalar with a range (real values that are set),
