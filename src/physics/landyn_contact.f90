@@ -8,10 +8,9 @@
 !! The factory, the input checks and contact_law_names() all walk the same lines, so the law is
 !! reachable from a deck (&contact law = '<law>') and named in the messages.
 module landyn_contact
-  use landyn_config, only: contact_cfg_t, name_len
+  use landyn_config, only: contact_cfg_t
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK
-  use landyn_strings, only: lower_case
   use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, advance_contact_state
   use landyn_contact_base, only: base_contact_t, base_contact
   use landyn_contact_hunt_crossley, only: hunt_crossley_t, hunt_crossley
@@ -34,18 +33,13 @@ contains
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(contact_build_t) :: b
-    character(len=name_len) :: key
-    logical :: known
-
-    key = lower_case(trim(adjustl(cfg%law)))
-    b%group = 'contact'
+    call b%start('contact', cfg%law, '')
     b%cfg = cfg
-    b%pre = ''
-    known = built(key, b)
-    call b%outcome(known, cfg%law, contact_law_names(), stat, errmsg)
+    call walk(b)
+    call b%outcome(cfg%law, contact_law_names(), stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
-      law%name = key
+      law%name = b%key
     end if
   end subroutine make_contact_law
 
@@ -57,31 +51,18 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(contact_build_t) :: b
-    b%group = 'contact'
+    call b%start('contact', cfg%law, pre, check_only=.true.)
     b%cfg = cfg
-    b%pre = pre
-    b%check_only = .true.
-    if (built(lower_case(trim(adjustl(cfg%law))), b)) call b%pass_on(errors)
-  end subroutine check_contact_law_input
-
-  !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
-  function built(key, b) result(known)
-    character(len=*), intent(in) :: key            !! law name, lower case [-]
-    type(contact_build_t), intent(inout) :: b      !! the build: input, messages, law
-    logical :: known                               !! key is a registered law [-]
-    b%key = key
-    b%found = .false.
     call walk(b)
-    known = b%found
-  end function built
+    if (b%found) call b%pass_on(errors)
+  end subroutine check_contact_law_input
 
   !> Names accepted in &contact law, in the order of the registry, for messages and documentation:
   !! 'base, ...'.
   function contact_law_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(contact_build_t) :: b
-    b%listing = .true.
-    b%names = ''
+    call b%start('contact', '', '', listing=.true.)
     call walk(b)
     names = b%names
   end function contact_law_names

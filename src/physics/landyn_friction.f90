@@ -7,10 +7,9 @@
 !!   block; use landyn_friction_<law>, only: build; if (b%offered('<law>')) call build(b); end block
 !! The factory, the input checks and friction_law_names() all walk the same lines.
 module landyn_friction
-  use landyn_config, only: friction_cfg_t, name_len
+  use landyn_config, only: friction_cfg_t
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK
-  use landyn_strings, only: lower_case
   use landyn_friction_law, only: friction_law_t, friction_build_t, friction_state_t, adams_step, opposing_force, &
                                  default_stribeck_speed
   use landyn_friction_coulomb_step, only: coulomb_step_t, coulomb_step
@@ -32,18 +31,13 @@ contains
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(friction_build_t) :: b
-    character(len=name_len) :: key
-    logical :: known
-
-    key = lower_case(trim(adjustl(cfg%law)))
-    b%group = 'friction'
+    call b%start('friction', cfg%law, '')
     b%cfg = cfg
-    b%pre = ''
-    known = built(key, b)
-    call b%outcome(known, cfg%law, friction_law_names(), stat, errmsg)
+    call walk(b)
+    call b%outcome(cfg%law, friction_law_names(), stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
-      law%name = key
+      law%name = b%key
     end if
   end subroutine make_friction_law
 
@@ -55,31 +49,18 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(friction_build_t) :: b
-    b%group = 'friction'
+    call b%start('friction', cfg%law, pre, check_only=.true.)
     b%cfg = cfg
-    b%pre = pre
-    b%check_only = .true.
-    if (built(lower_case(trim(adjustl(cfg%law))), b)) call b%pass_on(errors)
-  end subroutine check_friction_law_input
-
-  !> Runs the builder of the law named key (lower case) on b; .false. when key is not registered.
-  function built(key, b) result(known)
-    character(len=*), intent(in) :: key            !! law name, lower case [-]
-    type(friction_build_t), intent(inout) :: b     !! the build: input, messages, law
-    logical :: known                               !! key is a registered law [-]
-    b%key = key
-    b%found = .false.
     call walk(b)
-    known = b%found
-  end function built
+    if (b%found) call b%pass_on(errors)
+  end subroutine check_friction_law_input
 
   !> Names accepted in &friction law, in the order of the registry, for messages and documentation:
   !! 'coulomb_step, ...'.
   function friction_law_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(friction_build_t) :: b
-    b%listing = .true.
-    b%names = ''
+    call b%start('friction', '', '', listing=.true.)
     call walk(b)
     names = b%names
   end function friction_law_names

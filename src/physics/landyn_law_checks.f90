@@ -7,6 +7,7 @@ module landyn_law_checks
   use landyn_errors, only: input_errors_t
   use landyn_real_text, only: fmt_real
   use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_strings, only: lower_case
   implicit none
   private
 
@@ -25,6 +26,7 @@ module landyn_law_checks
     character(len=:), allocatable :: names          !! with listing: the registered names, ', '-separated [-]
     logical :: found = .false.                      !! a registered law answered to key [-]
   contains
+    procedure :: start => build_start               !! set up a build, a check or a listing
     procedure :: offered => build_offered           !! a registry line: is this law the one asked for?
     procedure :: require => build_require           !! append a message unless a requirement holds
     procedure :: outcome => build_outcome           !! the factory's stat and errmsg
@@ -63,14 +65,13 @@ contains
 
   !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown law name
   !! first adds "&group law = 'name' is not known; known laws: names").
-  subroutine build_outcome(self, known, law, names, stat, errmsg)
-    class(law_build_t), intent(inout) :: self      !! the build
-    logical, intent(in) :: known                   !! the law name is registered [-]
+  subroutine build_outcome(self, law, names, stat, errmsg)
+    class(law_build_t), intent(inout) :: self      !! the build, after the registry walk
     character(len=*), intent(in) :: law           !! law name as given [-]
     character(len=*), intent(in) :: names          !! the registered names, for the message [-]
     integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
     character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
-    if (.not. known) call self%errors%add('&'//trim(self%group)//" law = '"//trim(adjustl(law))// &
+    if (.not. self%found) call self%errors%add('&'//trim(self%group)//" law = '"//trim(adjustl(law))// &
                                           "' is not known; known laws: "//names)
     stat = STAT_OK
     errmsg = ''
@@ -79,6 +80,27 @@ contains
       errmsg = self%errors%message(1)
     end if
   end subroutine build_outcome
+
+  !> Set up a walk of the registry: build (or, with check_only, only check) the law named `law`
+  !! (case-insensitive, blanks ignored) of namelist group `group`, messages prefixed by `pre`; with
+  !! `listing`, collect the registered names instead.
+  subroutine build_start(self, group, law, pre, check_only, listing)
+    class(law_build_t), intent(inout) :: self      !! the build
+    character(len=*), intent(in) :: group          !! namelist group without '&' [-]
+    character(len=*), intent(in) :: law            !! law name as given ('' for a listing) [-]
+    character(len=*), intent(in) :: pre            !! message prefix (deck name or '') [-]
+    logical, intent(in), optional :: check_only    !! only the law-dependent checks [-]
+    logical, intent(in), optional :: listing       !! list the registered names [-]
+    self%group = group
+    self%key = lower_case(trim(adjustl(law)))
+    self%pre = pre
+    self%found = .false.
+    self%check_only = .false.
+    if (present(check_only)) self%check_only = check_only
+    self%listing = .false.
+    if (present(listing)) self%listing = listing
+    self%names = ''
+  end subroutine build_start
 
   !> One registry line offers the law `name`: .true. when it is the one asked for (b%key), so
   !! the line builds it; with b%listing, the name is appended to b%names and nothing is built.
