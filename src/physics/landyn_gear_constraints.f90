@@ -78,6 +78,7 @@ contains
       return
     end if
     gear%st%max_violation = max(gear%st%max_violation, viol)
+    call cache_kinematics(gear)
     ! Crush history (positions only).
     call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
     gear%st%s_hismax = max(gear%st%s_hismax, s1)
@@ -105,6 +106,48 @@ contains
         call gear_settle(gear)
       end if
     end if
+
+  contains
+
+    !> r = A x for the first nrow rows.
+    pure subroutine row_products(nrow, a, x, r)
+      integer, intent(in) :: nrow                  !! rows
+      real(wp), intent(in) :: a(max_rows, n_q)     !! rows
+      real(wp), intent(in) :: x(n_q)               !! vector
+      real(wp), intent(out) :: r(max_rows)         !! products
+      integer :: i
+      do i = 1, nrow
+        r(i) = dot_product(a(i, :), x)
+      end do
+    end subroutine row_products
+
+    !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
+    subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+      integer, intent(in) :: nrow                  !! rows
+      real(wp), intent(in) :: a(:, :)              !! Jacobian rows
+      real(wp), intent(in) :: r(:)                 !! residual
+      real(wp), intent(inout) :: x(n_q)            !! vector to correct
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp) :: s(max_rows, max_rows), y(max_rows)
+      integer :: i, j
+      do j = 1, nrow
+        do i = 1, j
+          s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+        end do
+      end do
+      y(1:nrow) = r(1:nrow)
+      call small_spd_solve(nrow, s, max_rows, y, stat)
+      if (stat /= STAT_OK) then
+        write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
+          '): redundant constraints or a singular configuration'
+        return
+      end if
+      do i = 1, nrow
+        x = x - y(i)*a(i, 1:n_q)
+      end do
+    end subroutine min_norm_correction
+
   end procedure gear_integrate
 
   module procedure gear_settle
@@ -157,44 +200,5 @@ contains
     end do
     if (row /= nrow) r(row + 1:) = 0.0_wp
   end subroutine position_residual
-
-  !> r = A x for the first nrow rows.
-  pure subroutine row_products(nrow, a, x, r)
-    integer, intent(in) :: nrow                  !! rows
-    real(wp), intent(in) :: a(max_rows, n_q)     !! rows
-    real(wp), intent(in) :: x(n_q)               !! vector
-    real(wp), intent(out) :: r(max_rows)         !! products
-    integer :: i
-    do i = 1, nrow
-      r(i) = dot_product(a(i, :), x)
-    end do
-  end subroutine row_products
-
-  !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
-  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
-    integer, intent(in) :: nrow                  !! rows
-    real(wp), intent(in) :: a(:, :)              !! Jacobian rows
-    real(wp), intent(in) :: r(:)                 !! residual
-    real(wp), intent(inout) :: x(n_q)            !! vector to correct
-    integer, intent(out) :: stat                 !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp) :: s(max_rows, max_rows), y(max_rows)
-    integer :: i, j
-    do j = 1, nrow
-      do i = 1, j
-        s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
-      end do
-    end do
-    y(1:nrow) = r(1:nrow)
-    call small_spd_solve(nrow, s, max_rows, y, stat)
-    if (stat /= STAT_OK) then
-      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
-        '): redundant constraints or a singular configuration'
-      return
-    end if
-    do i = 1, nrow
-      x = x - y(i)*a(i, 1:n_q)
-    end do
-  end subroutine min_norm_correction
 
 end submodule landyn_gear_constraints

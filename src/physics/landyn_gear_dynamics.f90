@@ -56,7 +56,7 @@ contains
       if (stat /= STAT_OK .or. done) return
     end if
     call strut_kinematics(gear, gear%st%q, sk)
-    mdiag = gear_mass_matrix(gear, gear%st%q)
+    mdiag = mass_diagonal(sk%mf, gear%st%q)
     call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
     if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
@@ -163,6 +163,79 @@ contains
     ge%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
     if (with_loads) call joint_loads(gear, sk, gear%st%q, gear%st%qd, ge%qdd, f_strut, h_strut, lam(1:n_phi), f_foot, f_field, &
                      alpha_or_zero(alpha), ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
+
+  contains
+
+    !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
+    !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
+    pure real(wp) function tube_bound_now(gear) result(bound)
+      type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces
+      type(strut_kin_t) :: sk(3)
+      call strut_kinematics(gear, gear%st%q, sk)
+      bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
+    end function tube_bound_now
+
+    !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
+    subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
+      integer, intent(in) :: nrow                  !! number of constraint rows
+      real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
+      real(wp), intent(in) :: b(:)                 !! constraint right-hand side
+      real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
+      real(wp), intent(in) :: qf(n_q)              !! generalized force
+      real(wp), intent(out) :: qdd(n_q)            !! accelerations
+      real(wp), intent(out) :: lam(:)              !! multipliers
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
+      integer :: i, j
+      do j = 1, n_q
+        aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
+      end do
+      do j = 1, nrow
+        do i = 1, j
+          s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
+        end do
+      end do
+      do i = 1, nrow
+        r(i) = dot_product(aw(i, :), qf) - b(i)
+      end do
+      call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
+      if (stat /= STAT_OK) return
+      lam(1:nrow) = r(1:nrow)
+      qdd = qf
+      do i = 1, nrow
+        qdd = qdd - lam(i)*a(i, 1:n_q)
+      end do
+      qdd = qdd/mdiag
+    end subroutine solve_reduced
+
+    !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
+    !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
+    !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
+    subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
+      type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
+      type(gear_eval_t), intent(inout) :: ge       !! its evaluation
+      real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+      logical, intent(in) :: loads                 !! compute the interface loads [-]
+      real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
+      logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+      type(gear_state_t) :: c
+      stat = STAT_OK
+      done = .false.
+      if (gear%st%rigid_cache) then
+        call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
+      else
+        ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
+        c = gear%st
+        call rigid_cache(gear, c, stat, errmsg)
+        if (stat /= STAT_OK) return
+        call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
+      end if
+    end subroutine rigid_dynamics
+
   end procedure gear_evaluate
 
   !> alpha when given, else zero.
@@ -172,42 +245,6 @@ contains
     a = 0.0_wp
     if (present(alpha)) a = alpha
   end function alpha_or_zero
-
-  !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
-  !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
-  pure real(wp) function tube_bound_now(gear) result(bound)
-    type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces
-    type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%st%q, sk)
-    bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
-  end function tube_bound_now
-
-  !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
-  !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
-  !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
-  subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
-    type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
-    type(gear_eval_t), intent(inout) :: ge       !! its evaluation
-    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
-    logical, intent(in) :: loads                 !! compute the interface loads [-]
-    real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
-    logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
-    type(gear_state_t) :: c
-    stat = STAT_OK
-    done = .false.
-    if (gear%st%rigid_cache) then
-      call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
-    else
-      ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
-      c = gear%st
-      call rigid_cache(gear, c, stat, errmsg)
-      if (stat /= STAT_OK) return
-      call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
-    end if
-  end subroutine rigid_dynamics
 
   !> The rigid gear's caches (strut kinematics, mass matrix, constraint rows with the three lock rows
   !! and the Cholesky factor of A M^-1 A^T), computed from its coordinates.
@@ -219,7 +256,7 @@ contains
     integer :: k, i, j, nrow
     nrow = n_phi + 3
     call strut_kinematics(gear, c%q, c%sk_c)
-    c%mdiag_c = gear_mass_matrix(gear, c%q)
+    c%mdiag_c = mass_diagonal(c%sk_c%mf, c%q)
     c%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, c%q)
     do k = 1, 3
       c%a_c(n_phi + k, :) = 0.0_wp
@@ -310,39 +347,5 @@ contains
     stat = STAT_OK
     if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, stat, errmsg)
   end procedure gear_prepare
-
-  !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
-  subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
-    integer, intent(in) :: nrow                  !! number of constraint rows
-    real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
-    real(wp), intent(in) :: b(:)                 !! constraint right-hand side
-    real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
-    real(wp), intent(in) :: qf(n_q)              !! generalized force
-    real(wp), intent(out) :: qdd(n_q)            !! accelerations
-    real(wp), intent(out) :: lam(:)              !! multipliers
-    integer, intent(out) :: stat                 !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
-    integer :: i, j
-    do j = 1, n_q
-      aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
-    end do
-    do j = 1, nrow
-      do i = 1, j
-        s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
-      end do
-    end do
-    do i = 1, nrow
-      r(i) = dot_product(aw(i, :), qf) - b(i)
-    end do
-    call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
-    if (stat /= STAT_OK) return
-    lam(1:nrow) = r(1:nrow)
-    qdd = qf
-    do i = 1, nrow
-      qdd = qdd - lam(i)*a(i, 1:n_q)
-    end do
-    qdd = qdd/mdiag
-  end subroutine solve_reduced
 
 end submodule landyn_gear_dynamics

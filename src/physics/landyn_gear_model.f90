@@ -109,6 +109,12 @@ module landyn_gear_model
     logical :: phq_ok = .false.                   !! Phi_q cache valid [-]
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
     real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
+    ! The strut kinematics and mass functions at the current coordinates (strut_kinematics),
+    ! computed once per step (gear_integrate) and reused by every evaluation at the same q (the
+    ! dynamics, the velocity projection's momentum maps and mass matrix, the energy audit).
+    logical :: kin_ok = .false.                   !! kin is valid for the coordinates kin_q [-]
+    real(wp) :: kin_q(n_q) = 0.0_wp               !! coordinates of the cached kinematics [m, rad]
+    type(strut_kin_t) :: kin(n_struts)            !! cached strut kinematics at kin_q
   end type gear_state_t
 
   !> What one evaluation of a gear decides and computes (gear_evaluate) from its committed state,
@@ -170,7 +176,7 @@ module landyn_gear_model
     end subroutine gear_footpad
 
     !> Upper joint, axis and axis partials of each strut at q, and its mass functions at its length
-    !! (computed once per use).
+    !! (the cached ones when q is the configuration they were computed at: the same values).
     module pure subroutine strut_kinematics(gear, q, sk)
       type(gear_t), intent(in) :: gear        !! gear
       real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
@@ -183,6 +189,18 @@ module landyn_gear_model
       real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
       real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
     end function gear_mass_matrix
+
+    !> Diagonal of the mass matrix at q from the struts' mass functions at their lengths q(idx_len).
+    module pure function mass_diagonal(mf, q) result(mdiag)
+      type(strut_mass_functions_t), intent(in) :: mf(n_struts)  !! mass functions [kg, kg m, kg m^2]
+      real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
+      real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
+    end function mass_diagonal
+
+    !> Caches the strut kinematics at the current coordinates (after they changed).
+    module pure subroutine cache_kinematics(gear)
+      type(gear_t), intent(inout) :: gear   !! gear
+    end subroutine cache_kinematics
 
     !> Relative kinetic energy of the leg parts, 1/2 qd^T M qd.
     module pure function gear_relative_kinetic_energy(gear) result(t)

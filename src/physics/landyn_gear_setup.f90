@@ -1,6 +1,7 @@
 !> The gear's set-up (gear_init), footpad, strut kinematics, mass matrix and strokes, and the
 !! accessors through which the other layers and the tests read and set its (private) state.
 submodule (landyn_gear_model) landyn_gear_setup
+  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinematics, only: strut_axis_derivs
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strut, only: strut_from_mass
@@ -27,6 +28,7 @@ contains
     gear%len0 = [geom%L0, geom%Lb0, geom%Lc0]
     gear%st%q = 0.0_wp
     gear%st%q(idx_len) = gear%len0
+    call cache_kinematics(gear)
     gear%st%qd = 0.0_wp
     gear%st%qdd = 0.0_wp
     gear%st%locked = .true.
@@ -71,6 +73,20 @@ contains
   end procedure gear_footpad
 
   module procedure strut_kinematics
+    if (gear%st%kin_ok) then
+      if (same_coordinates(q, gear%st%kin_q)) then
+        sk = gear%st%kin
+        return
+      end if
+    end if
+    call kinematics_at(gear, q, sk)
+  end procedure strut_kinematics
+
+  !> strut_kinematics computed afresh.
+  pure subroutine kinematics_at(gear, q, sk)
+    type(gear_t), intent(in) :: gear        !! gear
+    real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
+    type(strut_kin_t), intent(inout) :: sk(3)  !! per-strut kinematics (every component set)
     sk(1)%p = gear%geom%a
     sk(2)%p = gear%geom%b
     sk(3)%p = gear%geom%c
@@ -80,23 +96,54 @@ contains
     sk(1)%mf = gear%strut(1)%at(q(idx_len(1)))
     sk(2)%mf = gear%strut(2)%at(q(idx_len(2)))
     sk(3)%mf = gear%strut(3)%at(q(idx_len(3)))
-  end procedure strut_kinematics
+  end subroutine kinematics_at
+
+  !> a and b are the same coordinates, bit for bit (so that a cache keyed on them gives exactly
+  !! what computing afresh would).
+  pure logical function same_coordinates(a, b) result(same)
+    real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
+    real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
+    integer :: i
+    same = .false.
+    do i = 1, n_q
+      if (transfer(a(i), 0_int64) /= transfer(b(i), 0_int64)) return
+    end do
+    same = .true.
+  end function same_coordinates
+
+  module procedure cache_kinematics
+    call kinematics_at(gear, gear%st%q, gear%st%kin)
+    gear%st%kin_q = gear%st%q
+    gear%st%kin_ok = .true.
+  end procedure cache_kinematics
 
   module procedure gear_mass_matrix
+    type(strut_mass_functions_t) :: mf(n_struts)
+    integer :: k
+    if (gear%st%kin_ok) then
+      if (same_coordinates(q, gear%st%kin_q)) then
+        mdiag = mass_diagonal(gear%st%kin%mf, q)
+        return
+      end if
+    end if
+    do k = 1, n_struts
+      mf(k) = gear%strut(k)%at(q(idx_len(k)))
+    end do
+    mdiag = mass_diagonal(mf, q)
+  end procedure gear_mass_matrix
+
+  module procedure mass_diagonal
     integer :: k, i0
-    type(strut_mass_functions_t) :: mf
-    real(wp) :: jr, c, len
+    real(wp) :: jr, c
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = q(i0 + 1)
-      mf = gear%strut(k)%at(len)
-      jr = mf%j
+      jr = mf(k)%j
       c = cos(q(i0 + 3))
-      mdiag(i0 + 1) = mf%m_s
+      mdiag(i0 + 1) = mf(k)%m_s
       mdiag(i0 + 2) = jr*c*c
       mdiag(i0 + 3) = jr
     end do
-  end procedure gear_mass_matrix
+  end procedure mass_diagonal
 
   module procedure gear_relative_kinetic_energy
     t = 0.5_wp*sum(gear_mass_matrix(gear, gear%st%q)*gear%st%qd**2)
@@ -242,6 +289,7 @@ contains
 
   module procedure gear_set_coordinates
     gear%st%q = q
+    call cache_kinematics(gear)
     if (present(qd)) gear%st%qd = qd
   end procedure gear_set_coordinates
 
