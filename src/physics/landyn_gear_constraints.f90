@@ -2,41 +2,18 @@
 !! modes at the end of the step, the direct position correction dq = -A^+ Phi iterated to the
 !! tolerance (A^+ = A^T (A A^T)^-1), the crush history and work; the velocity rows A of the system
 !! velocity projection (landyn_impact).
-module landyn_gear_constraints
-  use landyn_kinds, only: wp, msg_len
+submodule (landyn_gear_model) landyn_gear_constraints
+  use landyn_kinds, only: msg_len
   use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK
   use landyn_tube_friction, only: add_tube_bound
-  use landyn_gear_model, only: gear_t, n_q, n_phi, n_struts, max_rows, idx_len, strokes, gear_mass_matrix
   implicit none
-  private
-
-  public :: gear_integrate, gear_settle, gear_velocity_rows
-  public :: GEAR_DRIFT, GEAR_NOT_CONVERGED
-
-  integer, parameter :: GEAR_DRIFT = 2            !! from gear_integrate when the violation before correction exceeds max_drift [-]
-  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! from gear_integrate when the position correction did not converge [-]
 
 contains
 
-  !> Advances the gear one step (semi-implicit Euler), decides the crush modes at the end of the
-  !! step, applies the direct position correction of Step 4 and updates the crush history and the
-  !! absorbed work. The velocity correction (Step 4's second half) is a plastic impact of the whole
-  !! system and is done by the caller for all gears and the body together (landyn_impact); for a
-  !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
-  !! kinetic metric (used by the unit tests of a free gear).
-  subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity, kick)
-    type(gear_t), intent(inout) :: gear          !! gear
-    real(wp), intent(in) :: dt                   !! time step [s]
-    real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
-    integer, intent(in) :: max_iter              !! iteration cap of the position correction
-    real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-    logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
-    real(wp), intent(in), optional :: kick       !! velocity update length (variable-step leapfrog); default dt [s]
+  module procedure gear_integrate
     real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), hk
     real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg, mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
     integer :: k, iter, nrow, i, j
@@ -88,7 +65,7 @@ contains
       if (maxval(abs(r(1:nrow))) <= tol) exit
       call build_rows(gear, gear%st%q, a, nrow)
       call min_norm_correction(nrow, a, r, gear%st%q, stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= STAT_OK) return
       call position_residual(gear, gear%st%q, nrow, r)
       gear%st%n_correction_iter = max(gear%st%n_correction_iter, iter)
     end do
@@ -101,6 +78,7 @@ contains
       return
     end if
     gear%st%max_violation = max(gear%st%max_violation, viol)
+    call cache_kinematics(gear)
     ! Crush history (positions only).
     call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
     gear%st%s_hismax = max(gear%st%s_hismax, s1)
@@ -120,7 +98,7 @@ contains
           end do
           lam(1:nrow) = r(1:nrow)
           call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
-          if (stat /= 0) return
+          if (stat /= STAT_OK) return
           do i = 1, nrow
             gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
           end do
@@ -128,28 +106,62 @@ contains
         call gear_settle(gear)
       end if
     end if
-  end subroutine gear_integrate
 
-  !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
-  !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.
-  pure subroutine gear_settle(gear)
-    type(gear_t), intent(inout) :: gear    !! gear after the velocity projection
+  contains
+
+    !> r = A x for the first nrow rows.
+    pure subroutine row_products(nrow, a, x, r)
+      integer, intent(in) :: nrow                  !! rows
+      real(wp), intent(in) :: a(max_rows, n_q)     !! rows
+      real(wp), intent(in) :: x(n_q)               !! vector
+      real(wp), intent(out) :: r(max_rows)         !! products
+      integer :: i
+      do i = 1, nrow
+        r(i) = dot_product(a(i, :), x)
+      end do
+    end subroutine row_products
+
+    !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
+    subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+      integer, intent(in) :: nrow                  !! rows
+      real(wp), intent(in) :: a(:, :)              !! Jacobian rows
+      real(wp), intent(in) :: r(:)                 !! residual
+      real(wp), intent(inout) :: x(n_q)            !! vector to correct
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp) :: s(max_rows, max_rows), y(max_rows)
+      integer :: i, j
+      do j = 1, nrow
+        do i = 1, j
+          s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+        end do
+      end do
+      y(1:nrow) = r(1:nrow)
+      call small_spd_solve(nrow, s, max_rows, y, stat)
+      if (stat /= STAT_OK) then
+        write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
+          '): redundant constraints or a singular configuration'
+        return
+      end if
+      do i = 1, nrow
+        x = x - y(i)*a(i, 1:n_q)
+      end do
+    end subroutine min_norm_correction
+
+  end procedure gear_integrate
+
+  module procedure gear_settle
     if (all(gear%st%locked) .and. .not. gear%st%rigid) then
       gear%st%qd = 0.0_wp
       gear%st%qdd = 0.0_wp
       gear%st%rigid = .true.
       gear%st%rigid_cache = .false.
     end if
-  end subroutine gear_settle
+  end procedure gear_settle
 
-  !> Velocity constraint rows of the gear at its current configuration: Phi_q and one row per
-  !! locked strut (its stroke rate held at zero). A qd = 0 is the velocity constraint.
-  pure subroutine gear_velocity_rows(gear, a, nrow)
-    type(gear_t), intent(in) :: gear           !! gear
-    real(wp), intent(out) :: a(max_rows, n_q)  !! rows [m/rad, -]
-    integer, intent(out) :: nrow               !! number of rows [-]
+  module procedure gear_velocity_rows
     call build_rows(gear, gear%st%q, a, nrow)
-  end subroutine gear_velocity_rows
+  end procedure gear_velocity_rows
 
   !> Rows of the correction: Phi_q and one row per locked strut.
   pure subroutine build_rows(gear, qv, a, nrow)
@@ -189,43 +201,4 @@ contains
     if (row /= nrow) r(row + 1:) = 0.0_wp
   end subroutine position_residual
 
-  !> r = A x for the first nrow rows.
-  pure subroutine row_products(nrow, a, x, r)
-    integer, intent(in) :: nrow                  !! rows
-    real(wp), intent(in) :: a(max_rows, n_q)     !! rows
-    real(wp), intent(in) :: x(n_q)               !! vector
-    real(wp), intent(out) :: r(max_rows)         !! products
-    integer :: i
-    do i = 1, nrow
-      r(i) = dot_product(a(i, :), x)
-    end do
-  end subroutine row_products
-
-  !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
-  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
-    integer, intent(in) :: nrow                  !! rows
-    real(wp), intent(in) :: a(:, :)              !! Jacobian rows
-    real(wp), intent(in) :: r(:)                 !! residual
-    real(wp), intent(inout) :: x(n_q)            !! vector to correct
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp) :: s(max_rows, max_rows), y(max_rows)
-    integer :: i, j
-    do j = 1, nrow
-      do i = 1, j
-        s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
-      end do
-    end do
-    y(1:nrow) = r(1:nrow)
-    call small_spd_solve(nrow, s, max_rows, y, stat)
-    if (stat /= 0) then
-      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
-        '): redundant constraints or a singular configuration'
-      return
-    end if
-    do i = 1, nrow
-      x = x - y(i)*a(i, 1:n_q)
-    end do
-  end subroutine min_norm_correction
-
-end module landyn_gear_constraints
+end submodule landyn_gear_constraints

@@ -12,54 +12,18 @@
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
 !! complement A M^-1 A^T is small and SPD); test_gear solves the unreduced system with LU for
 !! cross-checking.
-module landyn_gear_dynamics
-  use landyn_kinds, only: wp
+submodule (landyn_gear_model) landyn_gear_dynamics
   use landyn_buffer, only: rigid_force
   use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
   use landyn_status, only: STAT_OK
   use landyn_tube_friction, only: tube_friction_bound, add_tube_bound
-  use landyn_gear_model, only: gear_t, gear_state_t, gear_eval_t, strut_kin_t, n_q, n_phi, n_struts, max_rows, idx_len, &
-                               strut_kinematics, strokes, gear_mass_matrix
-  use landyn_gear_inertia, only: generalized_forces, alpha_forces, relative_inertia
-  use landyn_gear_joint_loads, only: joint_loads
   implicit none
-  private
-
-  public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
 
 contains
 
-  !> Accelerations, buffer forces and the force on the body for the current state (Steps 2-4).
-  !! f_foot is the ground force on the footpad and f_field the uniform field, both in the gear frame.
-  !!
-  !! With `dt` present the lock decision is made at velocity level over the coming step (Moreau's
-  !! time-stepping reading of the complementarity): a crushing strut whose sliding speed would
-  !! reverse within the step is locked now with the lock row demanding sd(t + dt) = 0, and it stays
-  !! locked when the force that needs lies within the buffer's bounds. The strut then stops exactly
-  !! at the end of the step instead of overshooting under its full crush force and being stopped by
-  !! the velocity projection, which made the modes chatter (crushing -> locked -> free every few
-  !! steps) and the projection dissipate energy that the crush work had not accounted for.
-  !!
-  !! `alpha` is the body's angular acceleration (gear axes). The uniform field f is the
-  !! acceleration field at the upper primary joint a; the leg parts away from a also feel
-  !! -alpha x (r - a), whose generalized force is -H_a^T alpha with H_a the map from qd to the
-  !! legs' relative angular momentum about a. Without it the legs and the body disagree on the
-  !! work of the angular acceleration during an impact (an energy audit error of ~0.2 % in
-  !! landings with rotation). The remaining frame terms (centrifugal variation over the leg,
-  !! Coriolis) are two orders smaller at the body rates of a landing and are neglected.
-  subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state (unchanged)
-    type(gear_eval_t), intent(out) :: ge         !! accelerations, buffer forces, lock decisions, body load
-    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
-    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-    real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
-    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
-    logical, intent(in), optional :: loads       !! compute the interface loads (f_joint, m_joint,
-                                                 !! f_interface); default .true. [-]
+  module procedure gear_evaluate
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q), q_alp(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
@@ -89,10 +53,10 @@ contains
     stop_hit = .false.
     if (ge%rigid .and. all(ge%locked)) then
       call rigid_dynamics(gear, ge, f_foot, f_field, with_loads, done, stat, errmsg, alpha)
-      if (stat /= 0 .or. done) return
+      if (stat /= STAT_OK .or. done) return
     end if
     call strut_kinematics(gear, gear%st%q, sk)
-    mdiag = gear_mass_matrix(gear, gear%st%q)
+    mdiag = mass_diagonal(sk%mf, gear%st%q)
     call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
     if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
@@ -151,7 +115,7 @@ contains
       end do
       q_tot = q_ine + q_grv + q_ext + q_buf + q_alp
       call solve_reduced(nrow, a, b, mdiag, q_tot, ge%qdd, lam, stat, errmsg)
-      if (stat /= 0) return
+      if (stat /= STAT_OK) return
       ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
       changed = .false.
       if (present(dt)) then
@@ -199,7 +163,80 @@ contains
     ge%m_body = cross3(gear%geom%a + gear%st%q(1)*sk(1)%u, f_foot) - m_rel
     if (with_loads) call joint_loads(gear, sk, gear%st%q, gear%st%qd, ge%qdd, f_strut, h_strut, lam(1:n_phi), f_foot, f_field, &
                      alpha_or_zero(alpha), ge%f_body, ge%f_joint, ge%m_joint, ge%f_interface)
-  end subroutine gear_evaluate
+
+  contains
+
+    !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
+    !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
+    pure real(wp) function tube_bound_now(gear) result(bound)
+      type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces
+      type(strut_kin_t) :: sk(3)
+      call strut_kinematics(gear, gear%st%q, sk)
+      bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
+    end function tube_bound_now
+
+    !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
+    subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
+      integer, intent(in) :: nrow                  !! number of constraint rows
+      real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
+      real(wp), intent(in) :: b(:)                 !! constraint right-hand side
+      real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
+      real(wp), intent(in) :: qf(n_q)              !! generalized force
+      real(wp), intent(out) :: qdd(n_q)            !! accelerations
+      real(wp), intent(out) :: lam(:)              !! multipliers
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
+      integer :: i, j
+      do j = 1, n_q
+        aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
+      end do
+      do j = 1, nrow
+        do i = 1, j
+          s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
+        end do
+      end do
+      do i = 1, nrow
+        r(i) = dot_product(aw(i, :), qf) - b(i)
+      end do
+      call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
+      if (stat /= STAT_OK) return
+      lam(1:nrow) = r(1:nrow)
+      qdd = qf
+      do i = 1, nrow
+        qdd = qdd - lam(i)*a(i, 1:n_q)
+      end do
+      qdd = qdd/mdiag
+    end subroutine solve_reduced
+
+    !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
+    !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
+    !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
+    subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
+      type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
+      type(gear_eval_t), intent(inout) :: ge       !! its evaluation
+      real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+      logical, intent(in) :: loads                 !! compute the interface loads [-]
+      real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
+      logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+      type(gear_state_t) :: c
+      stat = STAT_OK
+      done = .false.
+      if (gear%st%rigid_cache) then
+        call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
+      else
+        ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
+        c = gear%st
+        call rigid_cache(gear, c, stat, errmsg)
+        if (stat /= STAT_OK) return
+        call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
+      end if
+    end subroutine rigid_dynamics
+
+  end procedure gear_evaluate
 
   !> alpha when given, else zero.
   pure function alpha_or_zero(alpha) result(a)
@@ -209,53 +246,17 @@ contains
     if (present(alpha)) a = alpha
   end function alpha_or_zero
 
-  !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
-  !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
-  pure real(wp) function tube_bound_now(gear) result(bound)
-    type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces
-    type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%st%q, sk)
-    bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
-  end function tube_bound_now
-
-  !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
-  !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
-  !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
-  subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
-    type(gear_t), intent(in) :: gear             !! rigid gear (committed state)
-    type(gear_eval_t), intent(inout) :: ge       !! its evaluation
-    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
-    logical, intent(in) :: loads                 !! compute the interface loads [-]
-    real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
-    logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
-    type(gear_state_t) :: c
-    stat = STAT_OK
-    done = .false.
-    if (gear%st%rigid_cache) then
-      call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
-    else
-      ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
-      c = gear%st
-      call rigid_cache(gear, c, stat, errmsg)
-      if (stat /= 0) return
-      call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
-    end if
-  end subroutine rigid_dynamics
-
   !> The rigid gear's caches (strut kinematics, mass matrix, constraint rows with the three lock rows
   !! and the Cholesky factor of A M^-1 A^T), computed from its coordinates.
   subroutine rigid_cache(gear, c, stat, errmsg)
     type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
     type(gear_state_t), intent(inout) :: c       !! state whose caches are set
-    integer, intent(out) :: stat                 !! 0 on success
+    integer, intent(out) :: stat                 !! STAT_OK on success
     character(len=*), intent(inout) :: errmsg    !! message
     integer :: k, i, j, nrow
     nrow = n_phi + 3
     call strut_kinematics(gear, c%q, c%sk_c)
-    c%mdiag_c = gear_mass_matrix(gear, c%q)
+    c%mdiag_c = mass_diagonal(c%sk_c%mf, c%q)
     c%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, c%q)
     do k = 1, 3
       c%a_c(n_phi + k, :) = 0.0_wp
@@ -267,7 +268,7 @@ contains
       end do
     end do
     call factor_spd(nrow, c%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
-    if (stat /= 0) return
+    if (stat /= STAT_OK) return
     c%rigid_cache = .true.
   end subroutine rigid_cache
 
@@ -280,7 +281,7 @@ contains
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     logical, intent(in) :: loads                 !! compute the interface loads [-]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! 0 (the cached factor is regular)
+    integer, intent(out) :: stat                 !! STAT_OK (the cached factor is regular)
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q), f_strut(3, 3)
     real(wp) :: s(3), sd(3), fpos, fneg, demand
@@ -318,29 +319,16 @@ contains
     done = .true.
   end subroutine rigid_solve
 
-  !> Evaluates the gear (gear_evaluate) and commits the result at once (gear_commit), preparing a
-  !! rigid gear's caches first: the gear alone, as the unit tests drive it.
-  subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt, alpha)
-    type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
-    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
-    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-    real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
-    real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+  module procedure gear_dynamics
     type(gear_eval_t) :: ge
     call gear_prepare(gear, stat, errmsg)
-    if (stat /= 0) return
+    if (stat /= STAT_OK) return
     call gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha)
-    if (stat /= 0) return
+    if (stat /= STAT_OK) return
     call gear_commit(gear, ge)
-  end subroutine gear_dynamics
+  end procedure gear_dynamics
 
-  !> Makes an evaluation (gear_evaluate) the gear's state: accelerations, buffer forces, lock
-  !! decisions, the load on the body; a gear that broke loose from the rigid state leaves it.
-  pure subroutine gear_commit(gear, ge)
-    type(gear_t), intent(inout) :: gear          !! gear
-    type(gear_eval_t), intent(in) :: ge          !! its evaluation
+  module procedure gear_commit
     gear%st%qdd = ge%qdd
     gear%st%axial = ge%axial
     gear%st%f_body = ge%f_body
@@ -353,50 +341,11 @@ contains
       gear%st%rigid = .false.
       gear%st%rigid_cache = .false.
     end if
-  end subroutine gear_commit
+  end procedure gear_commit
 
-  !> Computes the caches of a gear that has become rigid (gear_settle), so that evaluating it needs
-  !! only the cached factor. Nothing is done for a gear that is not rigid or already prepared.
-  subroutine gear_prepare(gear, stat, errmsg)
-    type(gear_t), intent(inout) :: gear          !! gear
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+  module procedure gear_prepare
     stat = STAT_OK
     if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, stat, errmsg)
-  end subroutine gear_prepare
+  end procedure gear_prepare
 
-  !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
-  subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
-    integer, intent(in) :: nrow                  !! number of constraint rows
-    real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q)
-    real(wp), intent(in) :: b(:)                 !! constraint right-hand side
-    real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal
-    real(wp), intent(in) :: qf(n_q)              !! generalized force
-    real(wp), intent(out) :: qdd(n_q)            !! accelerations
-    real(wp), intent(out) :: lam(:)              !! multipliers
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message
-    real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
-    integer :: i, j
-    do j = 1, n_q
-      aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
-    end do
-    do j = 1, nrow
-      do i = 1, j
-        s(i, j) = dot_product(aw(i, :), a(j, 1:n_q))
-      end do
-    end do
-    do i = 1, nrow
-      r(i) = dot_product(aw(i, :), qf) - b(i)
-    end do
-    call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
-    if (stat /= 0) return
-    lam(1:nrow) = r(1:nrow)
-    qdd = qf
-    do i = 1, nrow
-      qdd = qdd - lam(i)*a(i, 1:n_q)
-    end do
-    qdd = qdd/mdiag
-  end subroutine solve_reduced
-
-end module landyn_gear_dynamics
+end submodule landyn_gear_dynamics

@@ -1,52 +1,12 @@
 !> Interface loads of a gear: the forces and moments of the upper joints on the body and of the
 !! footpad on the primary, from each strut's free-body balance (landyn_loads collects them).
-module landyn_gear_joint_loads
-  use landyn_kinds, only: wp
-  use landyn_strut, only: strut_mass_functions_t
+submodule (landyn_gear_model) landyn_gear_joint_loads
   use landyn_kinematics, only: cross3
-  use landyn_gear_model, only: gear_t, strut_kin_t, n_q, n_phi, n_struts, idx_len, leg_first_moment
   implicit none
-  private
-
-  public :: joint_loads
 
 contains
 
-  !> Interface loads of a gear, gear frame: the force each upper joint a, b, c puts on the body and
-  !! the force the footpad puts on the primary at its ball joint d (f_joint columns 1-4), and the
-  !! gear's total force on the body (f_interface) from the leg's momentum balance.
-  !!
-  !! Each strut is a free body between its upper joint (no moment: universal joint, spin neglected)
-  !! and its lower end: the ground force at the footpad and the lugs' reactions for the primary
-  !! (-lambda_e, -lambda_f: the multipliers of Phi = [e_pri - e_sec; f_pri - f_sec], M qdd = Q -
-  !! Phi_q^T lambda), +lambda_e, +lambda_f for the left and right secondaries. Its force balance in
-  !! the body frame, with the frame field on all its parts (uniform g - a_frame and the angular
-  !! part -alpha x (r - a)), gives the joint force: body on strut = f_k - F_field,k - F_lower,k,
-  !! with f_k the rate of the strut's relative momentum; the joint's force on the body is its
-  !! negative. The buffer and lock forces are internal to a strut. The footpad (the primary's end
-  !! mass) puts f_foot - m_fp (d_rel'' - field at d) on the primary.
-  !!
-  !! The body of the model carries the legs' mass, so what it receives from a gear in its equations
-  !! is f_body = f_foot - f_rel; the physical interface force adds the legs' weight and inertia in
-  !! the moving frame: f_interface = f_body + m_leg f_field - alpha x (first moment of the legs
-  !! about a). The sum of the three joint forces equals it (the lug reactions cancel).
-  pure subroutine joint_loads(gear, sk, q, qd, qdd, f_strut, h_strut, lam_phi, f_foot, f_field, alpha, f_body, &
-                              f_joint, m_joint, f_interface)
-    type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
-    type(strut_kin_t), intent(in) :: sk(3)       !! strut kinematics at q
-    real(wp), intent(in) :: q(n_q)               !! coordinates [m, rad]
-    real(wp), intent(in) :: qd(n_q)              !! velocities [m/s, rad/s]
-    real(wp), intent(in) :: qdd(n_q)             !! accelerations [m/s^2, rad/s^2]
-    real(wp), intent(in) :: f_strut(3, 3)        !! rate of each strut's relative momentum [N]
-    real(wp), intent(in) :: h_strut(3, 3)        !! rate of its relative angular momentum about its upper joint [N m]
-    real(wp), intent(in) :: lam_phi(n_phi)       !! multipliers of the lug constraints [N]
-    real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad [N]
-    real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame [m/s^2]
-    real(wp), intent(in) :: alpha(3)             !! body angular acceleration, gear axes [rad/s^2]
-    real(wp), intent(in) :: f_body(3)            !! the gear's load on the body in the model, f_foot - f_rel [N]
-    real(wp), intent(out) :: f_joint(3, 4)       !! forces of a, b, c on the body; footpad on primary at d [N]
-    real(wp), intent(out) :: m_joint(3, 3)       !! moments of a, b, c on the body [N m]
-    real(wp), intent(out) :: f_interface(3)      !! the gear's total physical force on the body [N]
+  module procedure joint_loads
     real(wp) :: f_low(3, 3), f_fld(3), sm, len, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
     real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3), rp(3, 3)
     integer :: k, i0
@@ -104,6 +64,6 @@ contains
     fm = leg_first_moment(sk, q)
     m_leg = gear%leg_mass
     f_interface = f_body + m_leg*f_field - cross3(alpha, fm - m_leg*gear%geom%a)
-  end subroutine joint_loads
+  end procedure joint_loads
 
-end module landyn_gear_joint_loads
+end submodule landyn_gear_joint_loads
