@@ -244,6 +244,7 @@ contains
 
   contains
 
+    !> Where parameter k comes from, for messages: its &parameter line, or its column of the case list.
     function where_par(k) result(s)
       integer, intent(in) :: k            !! parameter index [-]
       character(len=:), allocatable :: s  !! message prefix [-]
@@ -256,6 +257,7 @@ contains
 
   end subroutine finish_campaign
 
+  !> Whether two sets of element indices share an element (two parameters setting one element).
   pure function overlap(a, b) result(yes)
     integer, intent(in) :: a(:), b(:)  !! element index sets [-]
     logical :: yes                     !! they share an element [-]

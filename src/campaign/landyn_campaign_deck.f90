@@ -45,20 +45,26 @@ module landyn_campaign_deck
   public :: run_variable_table, default_deck_variables
 
   ! Campaign-deck variables: group, name, what it takes (for messages).
+  !> Variables of the &campaign group [-]
   character(len=*), parameter :: campaign_vars(*) = [character(len=20) :: 'title', 'base_deck', 'mode', &
     'n_samples', 'seed', 'summary_file', 'history_prefix', 'save_histories', 'list_file', 'checkpoint_interval']
+  !> What each of campaign_vars takes, for messages [-]
   character(len=*), parameter :: campaign_takes(*) = [character(len=56) :: 'a quoted character string', &
     'a quoted file name', "'grid', 'monte_carlo' or 'list'", 'an integer', 'an integer', 'a quoted file name', &
     'a quoted file-name prefix', 'up to 1000 case ids', 'a quoted file name', 'a real number [s]']
+  !> Variables of the &parameter group [-]
   character(len=*), parameter :: parameter_vars(*) = [character(len=20) :: 'name', 'label', 'values', 'start', &
     'stop', 'count', 'distribution', 'lo', 'hi', 'mean', 'sd', 'weights']
+  !> What each of parameter_vars takes, for messages [-]
   character(len=*), parameter :: parameter_takes(*) = [character(len=56) :: &
     "a quoted input name, e.g. 'initial_state%velocity(1)'", 'a quoted column name', &
     'up to 1000 real numbers [deck unit]', 'a real number [deck unit]', 'a real number [deck unit]', &
     'an integer', "'uniform', 'normal' or 'discrete'", 'a real number [deck unit]', 'a real number [deck unit]', &
     'a real number [deck unit]', 'a real number [deck unit]', 'up to 1000 real numbers >= 0']
+  !> Variables of the &criteria group [-]
   character(len=*), parameter :: criteria_vars(*) = [character(len=20) :: 'min_stroke_margin', 'max_overload', &
     'min_body_clearance', 'body_point', 'require_at_rest', 'failed_runs']
+  !> What each of criteria_vars takes, for messages [-]
   character(len=*), parameter :: criteria_takes(*) = [character(len=56) :: 'a real number [m]', &
     'a real number [g]', 'a real number [m]', 'a 3 x 8 real array [m]; body_point(:, i) = x, y, z', &
     'a logical', "'count_as_failure' or 'exclude'"]
@@ -136,6 +142,7 @@ contains
     stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   end subroutine build_campaign
 
+  !> The file name without a trailing '.h5' (any case), e.g. the stem of the history-file prefix.
   pure function strip_h5(path) result(s)
     character(len=*), intent(in) :: path  !! file name [-]
     character(len=:), allocatable :: s    !! without a trailing '.h5' [-]
@@ -380,6 +387,7 @@ contains
     end if
   end function check_item
 
+  !> Append the message for an item whose value cannot be read: where, the item, what it takes, the iomsg.
   subroutine read_error(deck_name, it, group, takes, msg, errors)
     character(len=*), intent(in) :: deck_name      !! deck path [-]
     type(nml_item_t), intent(in) :: it             !! the item [-]

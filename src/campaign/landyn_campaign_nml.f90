@@ -266,6 +266,7 @@ contains
     end if
   end function hint_and_list
 
+  !> 'a, b, c' from names (trailing blanks dropped).
   pure function name_list(vars) result(s)
     character(len=*), intent(in) :: vars(:)  !! names [-]
     character(len=:), allocatable :: s       !! 'a, b, c' [-]

@@ -67,7 +67,7 @@ module landyn_campaign_parallel
     character(len=:), allocatable :: command_line  !! the command line, recorded in the files [-]
   end type batch_options_t
 
-  integer, parameter :: tag_work = 11, tag_row = 12
+  integer, parameter :: tag_work = 11, tag_row = 12  !! message tags: case ids to workers, rows to rank 0 [-]
   integer, parameter :: master_works_max_ranks = 16  !! rank 0 runs cases too up to this many ranks [-]
   integer, parameter :: depth_master_works = 4       !! ids a worker holds when rank 0 runs cases too [-]
   integer, parameter :: depth_dedicated = 2          !! ids a worker holds with a dedicated rank 0 [-]

@@ -176,12 +176,14 @@ contains
 
   contains
 
+    !> Report a variable given in the group that this kind of parameter does not use.
     subroutine not_given(given, var)
       logical, intent(in) :: given          !! the variable was given [-]
       character(len=*), intent(in) :: var  !! its name [-]
       if (given) call errors%add(pre//': '//var//' is not used by '//describe_kind()//'; remove it')
     end subroutine not_given
 
+    !> The parameter's kind for messages: 'a grid parameter' or "distribution '<name>'".
     function describe_kind() result(s)
       character(len=:), allocatable :: s  !! e.g. "a grid", "distribution 'uniform'" [-]
       if (mode == 'grid') then
@@ -191,6 +193,7 @@ contains
       end if
     end function describe_kind
 
+    !> For an integer input, report the first value that is not a whole number (or exceeds 1e9).
     subroutine check_integral(v)
       real(wp), intent(in) :: v(:)  !! values [-]
       integer :: j
@@ -233,6 +236,7 @@ contains
     if (any(is_set(x(n + 1:)))) msg = 'have gaps (an element not given between given ones); give them in order from 1'
   end subroutine count_set
 
+  !> Whether a label can be a summary-file column name (at most label_len characters).
   pure function valid_label(label) result(ok)
     character(len=*), intent(in) :: label  !! column name [-]
     logical :: ok                          !! letters, digits, _ . - ; not starting with '.' [-]

@@ -88,42 +88,42 @@ module landyn_campaign_types
 
   !> Raw &campaign values as read.
   type :: raw_campaign_t
-    character(len=256) :: title = ''
-    character(len=path_len) :: base_deck = ''
-    character(len=32) :: mode = ''
-    integer :: n_samples = -1
-    integer(int64) :: seed = 1_int64
-    character(len=path_len) :: summary_file = ''
-    character(len=path_len) :: history_prefix = ''
-    integer :: save_histories(max_saved) = 0
-    character(len=path_len) :: list_file = ''
-    real(wp) :: checkpoint_interval = 60.0_wp
+    character(len=256) :: title = ''                 !! campaign title (summary file attribute) [-]
+    character(len=path_len) :: base_deck = ''        !! base run deck, relative to the campaign deck's directory; '' not given [-]
+    character(len=32) :: mode = ''                   !! 'grid', 'monte_carlo' or 'list' as written (case not yet folded) [-]
+    integer :: n_samples = -1                        !! number of Monte Carlo cases; -1 not given [-]
+    integer(int64) :: seed = 1_int64                 !! 64-bit seed of the Monte Carlo random numbers [-]
+    character(len=path_len) :: summary_file = ''     !! summary file, relative to the working directory; '' deck base name + .h5 [-]
+    character(len=path_len) :: history_prefix = ''   !! prefix of the time-history files; '' derived from the summary [-]
+    integer :: save_histories(max_saved) = 0         !! case ids whose time histories are written; 0 unused entry [-]
+    character(len=path_len) :: list_file = ''        !! CSV case list (list mode), relative to the deck's directory [-]
+    real(wp) :: checkpoint_interval = 60.0_wp        !! time between rewrites of the summary file; 0 after every case [s]
   end type raw_campaign_t
 
   !> Raw &parameter values as read.
   type :: raw_parameter_t
-    character(len=name_len) :: name = ''
-    character(len=label_len) :: label = ''
-    real(wp) :: values(max_values) = unset_real
-    real(wp) :: start = unset_real
-    real(wp) :: stop = unset_real
-    integer :: count = -1
-    character(len=32) :: distribution = ''
-    real(wp) :: lo = unset_real
-    real(wp) :: hi = unset_real
-    real(wp) :: mean = unset_real
-    real(wp) :: sd = unset_real
-    real(wp) :: weights(max_values) = unset_real
+    character(len=name_len) :: name = ''             !! the input, 'group%variable(subscript)' as written [-]
+    character(len=label_len) :: label = ''           !! summary-file column name; '' derived from the name [-]
+    real(wp) :: values(max_values) = unset_real      !! grid or discrete values; unset_real past the last one given [deck unit]
+    real(wp) :: start = unset_real                   !! first of count equally spaced grid values [deck unit]
+    real(wp) :: stop = unset_real                    !! last of count equally spaced grid values [deck unit]
+    integer :: count = -1                            !! number of grid values from start to stop; -1 not given [-]
+    character(len=32) :: distribution = ''           !! 'uniform', 'normal' or 'discrete' as written (Monte Carlo) [-]
+    real(wp) :: lo = unset_real                      !! uniform lower bound / normal lower truncation [deck unit]
+    real(wp) :: hi = unset_real                      !! uniform upper bound / normal upper truncation [deck unit]
+    real(wp) :: mean = unset_real                    !! normal mean [deck unit]
+    real(wp) :: sd = unset_real                      !! normal standard deviation [deck unit]
+    real(wp) :: weights(max_values) = unset_real     !! discrete weights, one per value (none: equal) [-]
   end type raw_parameter_t
 
   !> Raw &criteria values as read.
   type :: raw_criteria_t
-    real(wp) :: min_stroke_margin = 0.0_wp
-    real(wp) :: max_overload = unset_real
-    real(wp) :: min_body_clearance = unset_real
-    real(wp) :: body_point(3, max_body_points) = unset_real
-    logical :: require_at_rest = .false.
-    character(len=32) :: failed_runs = 'count_as_failure'
+    real(wp) :: min_stroke_margin = 0.0_wp           !! every stroke margin must be >= this [m]
+    real(wp) :: max_overload = unset_real            !! peak overload must be <= this; unset_real not applied [g]
+    real(wp) :: min_body_clearance = unset_real      !! body clearance must stay >= this; unset_real not applied [m]
+    real(wp) :: body_point(3, max_body_points) = unset_real  !! lander-frame points (x, y, z) of the clearance [m]
+    logical :: require_at_rest = .false.             !! the lander must have come to rest [-]
+    character(len=32) :: failed_runs = 'count_as_failure'  !! 'count_as_failure' or 'exclude' as written [-]
   end type raw_criteria_t
 
 end module landyn_campaign_types

@@ -35,9 +35,10 @@ module landyn_files
   integer, parameter :: kind_other = 3      !! device, fifo, socket
   integer, parameter :: max_name_component = 255   !! longest file-name component (Linux NAME_MAX) [-]
   integer, parameter :: max_text_bytes = 64*1024*1024   !! largest text file read [bytes]
-  character(len=*), parameter :: partial_suffix = '.partial'
+  character(len=*), parameter :: partial_suffix = '.partial'  !! added to an output file's name until it is complete [-]
 
   interface
+    !> stat(2) of a file (landyn_fileinfo.c): its kind, its identity (device, inode) and its write permission.
     subroutine c_file_info(path, kind, dev, ino, writable) bind(C, name='landyn_file_info')
       import :: c_char, c_int, c_long_long
       character(kind=c_char), dimension(*), intent(in) :: path   !! NUL-terminated file name [-]
@@ -120,6 +121,7 @@ contains
     close (u)
     text = normalize_line_ends(buf)
   contains
+    !> Record a failure: stat = 1 and msg = why, after closing `unit` when given.
     subroutine fail(why, unit)
       character(len=*), intent(in) :: why        !! reason [-]
       integer, intent(in), optional :: unit      !! open unit to close [-]
@@ -211,6 +213,7 @@ contains
     if (len(b) == 0 .and. present(fallback)) b = fallback
   end function base_name
 
+  !> Directory of a file name: '.' when it has none, '/' for a name directly under the root.
   pure function directory_of(path) result(d)
     character(len=*), intent(in) :: path   !! file name [-]
     character(len=:), allocatable :: d     !! its directory [-]
@@ -301,6 +304,7 @@ contains
     end if
   end function output_file_problem
 
+  !> c_file_info for a Fortran file name, with default integers.
   subroutine info(path, kind, dev, ino, writable)
     character(len=*), intent(in) :: path          !! file name [-]
     integer, intent(out) :: kind                  !! kind_* [-]
@@ -312,6 +316,7 @@ contains
     writable = int(w)
   end subroutine info
 
+  !> Integer as decimal text.
   pure function itoa(i) result(s)
     integer, intent(in) :: i              !! integer [-]
     character(len=:), allocatable :: s    !! its decimal text [-]

@@ -11,9 +11,10 @@ module landyn_process
   public :: terminate
 
   interface
+    !> C's exit(3): ends the process with an exit status, without a Fortran stop message.
     subroutine c_exit(status) bind(C, name='exit')
       import :: c_int
-      integer(c_int), value :: status
+      integer(c_int), value :: status  !! exit status [-]
     end subroutine c_exit
   end interface
 

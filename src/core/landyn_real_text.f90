@@ -50,6 +50,7 @@ contains
     end do
     s = pretty(es_text(x, hi))
   contains
+    !> Whether x written with dd significant digits reads back as exactly x.
     pure logical function real_ok(dd)
       integer, intent(in) :: dd   !! significant digits [-]
       real(wp) :: y
@@ -211,6 +212,7 @@ contains
     s = join_runs(items)
   end function fmt_list
 
+  !> Values joined by ', ', a run of 4 or more equal values written with a repeat count ('4*0.0').
   pure function join_runs(items) result(s)
     character(len=*), intent(in) :: items(:)  !! formatted values [-]
     character(len=:), allocatable :: s        !! joined text [-]

@@ -24,24 +24,28 @@ contains
     end do
   end function lower_case
 
+  !> Whether c is white space: blank, tab, line feed, carriage return or form feed.
   elemental function is_blank_char(c) result(yes)
     character(len=1), intent(in) :: c  !! character [-]
     logical :: yes                     !! space, tab, line end, carriage return or form feed [-]
     yes = c == ' ' .or. c == achar(9) .or. c == achar(10) .or. c == achar(13) .or. c == achar(12)
   end function is_blank_char
 
+  !> Whether c is an ASCII letter.
   elemental function is_letter(c) result(yes)
     character(len=1), intent(in) :: c  !! character [-]
     logical :: yes                     !! an ASCII letter [-]
     yes = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
   end function is_letter
 
+  !> Whether c is a decimal digit.
   elemental function is_digit(c) result(yes)
     character(len=1), intent(in) :: c  !! character [-]
     logical :: yes                     !! 0..9 [-]
     yes = c >= '0' .and. c <= '9'
   end function is_digit
 
+  !> Whether c can be part of a name in a deck: a letter, a digit, '_' or '%'.
   elemental function is_ident_char(c) result(yes)
     character(len=1), intent(in) :: c  !! character [-]
     logical :: yes                     !! may appear in a Fortran name (or a % component reference) [-]
