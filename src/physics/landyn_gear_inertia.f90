@@ -99,6 +99,7 @@ contains
     call momenta(gear, sk, gear%st%qd, p_rel, h_rel, t_rel)
   end procedure gear_relative_momenta
 
+  !> The legs' relative linear and angular momentum and kinetic energy at rates qd.
   pure subroutine momenta(gear, sk, qd, p_rel, h_rel, t_rel)
     type(gear_t), intent(in) :: gear       !! gear (configuration gear%st%q)
     type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q

@@ -58,7 +58,7 @@ module landyn_gear_model
 
   !> Holder for a polymorphic buffer law (one per strut).
   type :: buffer_slot_t
-    class(buffer_law_t), allocatable :: law
+    class(buffer_law_t), allocatable :: law   !! the strut's buffer law (landyn_buffer)
   end type buffer_slot_t
 
   !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
@@ -505,6 +505,8 @@ module landyn_gear_model
       real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
     end subroutine gear_relative_inertia
 
+    !> The legs' relative momentum and angular-momentum rates for given strut kinematics and
+    !! accelerations, in total and per strut (gear_relative_inertia, the joint loads).
     module pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel, f_strut, h_strut)
       type(gear_t), intent(in) :: gear       !! gear (q, qd)
       type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q

@@ -48,16 +48,16 @@ module landyn_strut
     real(wp) :: j_0 = 0.0_wp                   !! m_o l_o^2 + I_o + I_i [kg m^2]
     real(wp) :: s_0 = 0.0_wp                   !! m_o l_o [kg m]
   contains
-    procedure :: properties => strut_properties
-    procedure :: at => strut_at
-    procedure :: sliding_mass => strut_sliding_mass
-    procedure :: total_mass => strut_total_mass
-    procedure :: end_mass => strut_end_mass
-    procedure :: first_moment => strut_first_moment
-    procedure :: upper_first_moment => strut_upper_first_moment
-    procedure :: sliding_first_moment => strut_sliding_first_moment
-    procedure :: inertia => strut_inertia
-    procedure :: inertia_rate => strut_inertia_rate
+    procedure :: properties => strut_properties              !! the mass properties the strut was made from
+    procedure :: at => strut_at                              !! all mass functions at one length
+    procedure :: sliding_mass => strut_sliding_mass          !! mass sliding with the length, m_i + m_end [kg]
+    procedure :: total_mass => strut_total_mass              !! strut mass [kg]
+    procedure :: end_mass => strut_end_mass                  !! mass lumped at the lower end (footpad) [kg]
+    procedure :: first_moment => strut_first_moment          !! first moment of mass about the upper joint at a length [kg m]
+    procedure :: upper_first_moment => strut_upper_first_moment !! first moment of the upper (pivoting) part [kg m]
+    procedure :: sliding_first_moment => strut_sliding_first_moment !! first moment of the sliding part at a length [kg m]
+    procedure :: inertia => strut_inertia                    !! transverse inertia about the upper joint at a length [kg m^2]
+    procedure :: inertia_rate => strut_inertia_rate          !! dJ/dL, the rate of the inertia with the length [kg m]
   end type strut_t
 
 contains

@@ -140,7 +140,8 @@ def check_file(path, rel):
                 need("interface", name)
                 stack.append("iface-proc")
             else:
-                need("procedure", name)
+                if m:   # a `module procedure` body is documented at its interface in the parent module
+                    need("procedure", name)
                 stack.append("proc")
             args = []
             if m:
