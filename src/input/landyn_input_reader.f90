@@ -267,23 +267,19 @@ contains
     rest = item(nbase + 1:)//' /'
     call access_var(inp, iv, v, .false.)
     e = input_vars(iv)
+    scratch = 'lv_'//scratch_class(e)
+    buffer = '&nl_'//scratch_class(e)//' '//scratch//rest
     select case (e%kind)
     case (k_int)
-      scratch = 'lv_int'
       lv_int = v%i
-      buffer = '&nl_int lv_int'//rest
       read (buffer, nml=nl_int, iostat=ios, iomsg=msg)
       v%i = lv_int
     case (k_logical)
-      scratch = 'lv_logical'
       lv_logical = v%l
-      buffer = '&nl_logical lv_logical'//rest
       read (buffer, nml=nl_logical, iostat=ios, iomsg=msg)
       v%l = lv_logical
     case (k_string)
-      scratch = 'lv_string'
       lv_string = v%s
-      buffer = '&nl_string lv_string'//rest
       read (buffer, nml=nl_string, iostat=ios, iomsg=msg)
       v%s = lv_string
     case default
@@ -301,21 +297,15 @@ contains
       allocate (x, source=v%r)
       if (e%angle) x = unset_real
       if (e%n2 > 0) then
-        scratch = 'lv_matrix'
         lv_matrix = reshape(x, [e%n1, e%n2])
-        buffer = '&nl_matrix lv_matrix'//rest
         read (buffer, nml=nl_matrix, iostat=ios, iomsg=msg)
         x = reshape(lv_matrix, [size(x)])
       else if (e%n1 > 0) then
-        scratch = 'lv_reals'
         lv_reals = x
-        buffer = '&nl_reals lv_reals'//rest
         read (buffer, nml=nl_reals, iostat=ios, iomsg=msg)
         x = lv_reals
       else
-        scratch = 'lv_real'
         lv_real = x(1)
-        buffer = '&nl_real lv_real'//rest
         read (buffer, nml=nl_real, iostat=ios, iomsg=msg)
         x = [lv_real]
       end if
@@ -331,6 +321,25 @@ contains
       end if
     end subroutine read_reals
   end subroutine read_item
+
+  !> The scratch variable of entry e, without its 'lv_' prefix: its namelist group is 'nl_' and the
+  !! same word (one group per class and shape, so an item can name no other scratch variable).
+  pure function scratch_class(e) result(s)
+    type(input_var_t), intent(in) :: e   !! registry entry [-]
+    character(len=:), allocatable :: s   !! 'int', 'logical', 'string', 'matrix', 'reals' or 'real' [-]
+    select case (e%kind)
+    case (k_int)
+      s = 'int'
+    case (k_logical)
+      s = 'logical'
+    case (k_string)
+      s = 'string'
+    case default
+      s = 'real'
+      if (e%n1 > 0) s = 'reals'
+      if (e%n2 > 0) s = 'matrix'
+    end select
+  end function scratch_class
 
   !> msg with every occurrence of the scratch name replaced by the variable name.
   pure function renamed(msg, scratch, name) result(s)
