@@ -27,11 +27,11 @@ module landyn_config
 
   !> Gear 1 hard points of the demonstration lander (Table 1 with the docs/model_conventions.md readings of e1, f1) [m].
   real(wp), parameter, public :: paper_a1(3) = [3.89_wp, 0.0_wp, -2.18_wp]
-  real(wp), parameter, public :: paper_b1(3) = [3.37_wp, 1.23_wp, -1.01_wp]
-  real(wp), parameter, public :: paper_c1(3) = [3.37_wp, -1.23_wp, -1.01_wp]
-  real(wp), parameter, public :: paper_d1(3) = [5.48_wp, 0.0_wp, 0.94_wp]
-  real(wp), parameter, public :: paper_e1(3) = [4.65_wp, 0.109_wp, -0.505_wp]
-  real(wp), parameter, public :: paper_f1(3) = [4.65_wp, -0.109_wp, -0.505_wp]
+  real(wp), parameter, public :: paper_b1(3) = [3.37_wp, 1.23_wp, -1.01_wp]  !! secondary-strut upper joint b (left) [m]
+  real(wp), parameter, public :: paper_c1(3) = [3.37_wp, -1.23_wp, -1.01_wp]  !! secondary-strut upper joint c (right) [m]
+  real(wp), parameter, public :: paper_d1(3) = [5.48_wp, 0.0_wp, 0.94_wp]  !! footpad joint d [m]
+  real(wp), parameter, public :: paper_e1(3) = [4.65_wp, 0.109_wp, -0.505_wp]  !! lug e on the outer tube (left secondary) [m]
+  real(wp), parameter, public :: paper_f1(3) = [4.65_wp, -0.109_wp, -0.505_wp]  !! lug f on the outer tube (right secondary) [m]
 
 contains
 

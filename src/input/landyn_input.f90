@@ -216,6 +216,7 @@ contains
     if (.not. all(is_set(g%point_e(:, i)))) call append(list, 'point_e')
     if (.not. all(is_set(g%point_f(:, i)))) call append(list, 'point_f')
   contains
+    !> Appends a point name of gear i to the list of missing points.
     subroutine append(l, name)
       character(len=:), allocatable, intent(inout) :: l  !! list [-]
       character(len=*), intent(in) :: name               !! point name [-]

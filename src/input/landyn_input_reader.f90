@@ -396,6 +396,7 @@ contains
     if (len(s) > snippet_len) s = s(1:snippet_len - 3)//'...'
   end function snippet
 
+  !> The text of a deck fragment on one line: blanks collapsed, trailing commas dropped.
   pure function snippet_raw(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=:), allocatable :: s  !! text with blanks collapsed and trailing commas dropped [-]

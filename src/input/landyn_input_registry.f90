@@ -78,6 +78,7 @@ module landyn_input_registry
     character(len=48) :: doc_default = '' !! default as docs/input writes it, when derived at resolve time [-]
   end type input_var_t
 
+  !> The registry entries of &simulation.
   type(input_var_t), parameter :: vars_simulation(*) = [ &
     input_var_t(g_simulation, 'title', k_string, default="'LANDYN demonstration lander, load case LC-1'", &
       length='256', takes='a quoted character string', meaning='run title', &
@@ -135,6 +136,7 @@ module landyn_input_registry
     input_var_t(g_simulation, 'max_constraint_drift', k_real, default="1.0e-6_wp", unit='m', takes='a real number', &
       meaning='violation above this means dt is too large', lo_op='>', lo='0', &
       doc='a constraint violation above this before correction means `dt` is too large')]
+  !> The registry entries of &lander.
   type(input_var_t), parameter :: vars_lander(*) = [ &
     input_var_t(g_lander, 'mass', k_real, default="1.6e4_wp", unit='kg', takes='a real number', &
       meaning='total lander mass, legs included', lo_op='>=', lo='1.0', doc='total lander mass, legs included', &
@@ -160,6 +162,7 @@ module landyn_input_registry
     input_var_t(g_lander, 'mass_centre', k_real, default="[0.0_wp, 0.0_wp, -3.818_wp]", &
       n1=3, unit='m', takes='3 real numbers x, y, z', &
       meaning='mass centre in the lander frame', doc='mass centre in the lander frame (z down: −3.818 is above O_L)')]
+  !> The registry entries of &engine.
   type(input_var_t), parameter :: vars_engine(*) = [ &
     input_var_t(g_engine, 'thrust', k_real, default="0.0_wp", unit='N', takes='a real number', meaning='thrust magnitude', &
       lo_op='>=', lo='0', doc='thrust magnitude'), &
@@ -174,6 +177,7 @@ module landyn_input_registry
     input_var_t(g_engine, 'cutoff_time', k_real, default="0.0_wp", unit='s', takes='a real number', &
       meaning='thrust acts for 0 <= t < cutoff_time', lo_op='>=', lo='0', &
       doc='the thrust acts for `0 <= t < cutoff_time`')]
+  !> The registry entries of &gears.
   type(input_var_t), parameter :: vars_gears(*) = [ &
     input_var_t(g_gears, 'n_gears', k_int, default="4", &
       takes='an integer', meaning='number of landing gears', lo_op='>=', lo='3', &
@@ -209,6 +213,7 @@ module landyn_input_registry
       takes='a 3 x 8 real array; point_f(:, i) = x, y, z', meaning='right secondary lower ball joint', partial=.true., &
       doc='right secondary lower ball joint, on the primary outer tube', doc_valid='distinct points', &
       doc_default='gear 1: `4.65, -0.109, -0.505`')]
+  !> The registry entries of &primary_strut.
   type(input_var_t), parameter :: vars_primary(*) = [ &
     input_var_t(g_primary, 'n_stages', k_int, default="2", takes='an integer', meaning='number of honeycomb stages', &
       lo_op='>=', lo='1', hi_op='<=', hi='5', doc='number of honeycomb stages'), &
@@ -264,6 +269,7 @@ module landyn_input_registry
       meaning='L_O1: lever arm of the lateral load (exposed inner tube)', lo_op='>=', lo='0', &
       doc='L_O1: lever arm of the lateral load about the nearest tube bearing (the inner tube''s length below the '// &
       'outer tube)')]
+  !> The registry entries of &secondary_strut.
   type(input_var_t), parameter :: vars_secondary(*) = [ &
     input_var_t(g_secondary, 'force_lengthening', k_real, default="43000.0_wp", unit='N', takes='a real number', &
       meaning='crush force resisting lengthening (F_com)', lo_op='>', lo='0', &
@@ -295,6 +301,7 @@ module landyn_input_registry
     input_var_t(g_secondary, 'inner_inertia', k_real, default="0.27_wp", unit='kg m^2', takes='a real number', &
       meaning='lower part transverse inertia about its mass centre', lo_op='>=', lo='0', &
       doc='transverse inertia of the lower part about its mass centre')]
+  !> The registry entries of &contact.
   type(input_var_t), parameter :: vars_contact(*) = [ &
     input_var_t(g_contact, 'law', k_string, default="'base'", &
       length='name_len', takes='a quoted character string', meaning='normal contact law', &
@@ -341,6 +348,7 @@ module landyn_input_registry
     input_var_t(g_contact, 'soil_unload_stiffness', k_real, default="1.0e8_wp", unit='N/m', takes='a real number', &
       meaning='regolith unloading/reloading stiffness', lo_op='>', lo='0', &
       doc='k_u, regolith unloading/reloading stiffness')]
+  !> The registry entries of &friction.
   type(input_var_t), parameter :: vars_friction(*) = [ &
     input_var_t(g_friction, 'law', k_string, default="'coulomb_step'", &
       length='name_len', takes='a quoted character string', meaning='friction law', &
@@ -375,6 +383,7 @@ module landyn_input_registry
     input_var_t(g_friction, 'stick_damping', k_real, default="1.0e5_wp", unit='N s/m', takes='a real number', &
       meaning='tangential damping of the stick state', lo_op='>=', lo='0', &
       doc='c of the stick state (ty1, ty2, ty4, ty5)')]
+  !> The registry entries of &terrain.
   type(input_var_t), parameter :: vars_terrain(*) = [ &
     input_var_t(g_terrain, 'height', k_real, default="0.0_wp", &
       n1=max_gears, unit='m', takes='up to 8 real numbers, one per footpad', &
@@ -386,6 +395,7 @@ module landyn_input_registry
     input_var_t(g_terrain, 'slope_direction', k_real, default="0.0_wp", n1=max_gears, unit='deg', &
       takes='up to 8 real numbers, one per footpad', meaning='azimuth of uphill, from +x toward +y', angle=.true., &
       doc='azimuth of the uphill direction, from global +x toward +y')]
+  !> The registry entries of &initial_state.
   type(input_var_t), parameter :: vars_initial(*) = [ &
     input_var_t(g_initial, 'position', k_real, default="unset_real", n1=3, unit='m', takes='3 real numbers x, y, z', &
       meaning='lander-frame origin in the global frame', partial=.true., &
@@ -403,6 +413,7 @@ module landyn_input_registry
       doc_valid='pitch: `-90 < attitude(2) < 90`'), &
     input_var_t(g_initial, 'angular_rate', k_real, default="0.0_wp", n1=3, unit='deg/s', takes='3 real numbers p, q, r', &
       meaning='body angular rate in lander axes', angle=.true., doc='body angular rate p, q, r in lander axes')]
+  !> The registry entries of &output.
   type(input_var_t), parameter :: vars_output(*) = [ &
     input_var_t(g_output, 'file', k_string, default="''", &
       length='path_len', takes='a quoted character string', meaning='result file (HDF5)', &

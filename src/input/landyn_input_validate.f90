@@ -152,6 +152,7 @@ contains
     end select
   end function choice_list
 
+  !> Cross-variable checks of &simulation (and its relation to &output).
   subroutine validate_simulation(s, o, pre, errors)
     type(simulation_cfg_t), intent(in) :: s        !! &simulation
     type(output_cfg_t), intent(in) :: o            !! &output
@@ -195,6 +196,7 @@ contains
     call require(errors, len_trim(o%file) > 0, pre, 'output', 'file', "''", 'a non-empty file name')
   end subroutine validate_simulation
 
+  !> Checks of &lander: a physical inertia tensor (positive definite, triangle inequalities).
   subroutine validate_lander(l, pre, errors)
     type(lander_cfg_t), intent(in) :: l            !! &lander
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -219,6 +221,7 @@ contains
     call triangle(l%iyy, l%izz, l%ixx, 'iyy + izz', 'ixx')
     call triangle(l%izz, l%ixx, l%iyy, 'izz + ixx', 'iyy')
   contains
+    !> Reports a + b < c, a violated triangle inequality of principal moments.
     subroutine triangle(a, b, c, sum_name, c_name)
       real(wp), intent(in) :: a, b, c                   !! moments of inertia [kg m^2]
       character(len=*), intent(in) :: sum_name, c_name  !! names for the message [-]
@@ -228,6 +231,7 @@ contains
     end subroutine triangle
   end subroutine validate_lander
 
+  !> Checks of the resolved &gears: rotation(1) = 0, hard points in range and distinct.
   subroutine validate_gears(g, pre, errors)
     type(gears_cfg_t), intent(in) :: g             !! &gears (resolved)
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -262,6 +266,7 @@ contains
     end do
   end subroutine validate_gears
 
+  !> Checks of &primary_strut: the honeycomb stages and the tube geometry.
   subroutine validate_primary(p, pre, errors)
     type(primary_cfg_t), intent(in) :: p           !! &primary_strut
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -277,6 +282,7 @@ contains
                    'tube_leg_length', fmt_real(p%tube_leg_length)//' m', 'tube_leg_length < tube_outer_length + '// &
                    'tube_inner_length = '//fmt_real(p%tube_outer_length + p%tube_inner_length)//' m (the tubes overlap)')
   contains
+    !> Stage forces positive and non-decreasing, stage ends positive and increasing.
     subroutine check_stages()
       integer :: i
       character(len=:), allocatable :: si
@@ -299,6 +305,7 @@ contains
     end subroutine check_stages
   end subroutine validate_primary
 
+  !> Checks of &secondary_strut that involve more than one variable.
   subroutine validate_secondary(s, pre, errors)
     type(secondary_cfg_t), intent(in) :: s         !! &secondary_strut
     character(len=*), intent(in) :: pre            !! message prefix [-]
@@ -309,6 +316,7 @@ contains
                    'inner_mass > 0 kg (the sliding lower part of a secondary strut needs mass)')
   end subroutine validate_secondary
 
+  !> Checks of &terrain and &initial_state against the number of gears.
   subroutine validate_terrain_initial(t, s, n_gears, pre, errors)
     type(terrain_cfg_t), intent(in) :: t           !! &terrain
     type(initial_cfg_t), intent(in) :: s           !! &initial_state

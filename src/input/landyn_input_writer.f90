@@ -211,6 +211,7 @@ contains
       if (is_set(x(j))) call put_var(text, ig, name//'('//fmt_int(j)//c//')', vals(x(j:j)))
     end do
   contains
+    !> Deck text of values, in degrees when the variable is an angle.
     pure function vals(y) result(s)
       real(wp), intent(in) :: y(:)           !! values [m or rad]
       character(len=:), allocatable :: s     !! deck text [-]

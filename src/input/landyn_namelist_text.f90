@@ -250,6 +250,7 @@ contains
     end do
   end function line_of
 
+  !> Position of the first non-blank character at or after p.
   pure function first_nonblank(work, p) result(q)
     character(len=*), intent(in) :: work  !! text [-]
     integer, intent(in) :: p              !! start position [-]
@@ -272,6 +273,7 @@ contains
     end do
   end function one_line_text
 
+  !> The text on one line with commas and blank characters made spaces.
   pure function separators_to_blanks(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=len(t)) :: s          !! t with commas and blank characters made spaces [-]
@@ -282,6 +284,7 @@ contains
     end do
   end function separators_to_blanks
 
+  !> The text without its blank characters.
   pure function remove_blanks(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=:), allocatable :: s  !! t without blank characters [-]
@@ -366,6 +369,7 @@ contains
       p = b + 1
     end do
   contains
+    !> True for a token that is a namelist value word (logical, NaN, infinity), not a name.
     pure logical function value_word(t)
       character(len=*), intent(in) :: t   !! token in lower case [-]
       select case (t)
@@ -503,6 +507,7 @@ contains
       last = last + 1
     end do
   contains
+    !> True when ch belongs to (or, with starts, may begin) the word being scanned.
     pure logical function in_word(ch, starts)
       character(len=1), intent(in) :: ch   !! character [-]
       logical, intent(in) :: starts        !! ch would start the word [-]
