@@ -1,9 +1,7 @@
 !> Hertz contact + hysteresis damping (Hunt-Crossley, Table 4): K delta^n (1 + lambda delta_dot).
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_hunt_crossley
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t
   use landyn_law_checks, only: positive, nonnegative
   implicit none
   private
@@ -24,12 +22,9 @@ module landyn_contact_hunt_crossley
 contains
 
   !> The hunt_crossley law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
+    if (.not. b%hertz_wanted(depth_needed=.false., damped=.false.)) return
     call b%require(b%cfg%restitution >= 0.0_wp .and. b%cfg%restitution <= 1.0_wp, 'restitution', &
                    b%cfg%restitution, '', '0 <= restitution <= 1')
     call b%require(nonnegative(b%cfg%hc_alpha), 'hc_alpha', b%cfg%hc_alpha, 's/m', 'hc_alpha >= 0 s/m')

@@ -1,17 +1,14 @@
 !> Hertz contact + step damping (Kelvin-Voigt 1, Table 4): damping D only for delta <= d.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt_step
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_damper_t
   implicit none
   private
 
   public :: kelvin_voigt_step_t, build
 
-  !> Hertz contact + step damping (Kelvin-Voigt 1): damping D only for delta <= d.
-  type, extends(hertz_spring_t) :: kelvin_voigt_step_t
-    real(wp) :: damping = 1.0e4_wp                 !! D [N s/m]
+  !> Hertz contact + step damping (Kelvin-Voigt 1): damping D only for delta <= d (D = damping).
+  type, extends(hertz_damper_t) :: kelvin_voigt_step_t
     real(wp) :: step_depth = 1.0e-4_wp             !! d: penetration beyond which the damping is off [m]
   contains
     procedure :: normal_force => kelvin_voigt_step_normal_force
@@ -20,15 +17,11 @@ module landyn_contact_kelvin_voigt_step
 contains
 
   !> The kelvin_voigt_step law from the &contact input (d = damping_depth > 0).
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.true.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    call check_damping(b)
-    allocate (b%law, source=kelvin_voigt_step_t(name='kelvin_voigt_step', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
-                                                damping=b%cfg%damping, step_depth=b%cfg%damping_depth))
+    if (b%hertz_wanted(depth_needed=.true., damped=.true.)) &
+      allocate (b%law, source=kelvin_voigt_step_t(name='kelvin_voigt_step', stiffness=b%cfg%stiffness, &
+                                                  exponent=b%cfg%exponent, damping=b%cfg%damping, step_depth=b%cfg%damping_depth))
   end subroutine build
 
   pure function kelvin_voigt_step_normal_force(self, delta, delta_dot, state) result(f)

@@ -1,8 +1,7 @@
 !> Granular soil (regolith, eq. 1): Bekker-type sinkage with drag, stiff elastic unloading below the crater.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_regolith
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, check_damping, check_damping_depth
+  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t
   use landyn_law_checks, only: positive, nonnegative
   implicit none
   private
@@ -31,11 +30,9 @@ module landyn_contact_regolith
 contains
 
   !> The regolith law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
+    if (.not. b%wanted(depth_needed=.false.)) return
     call b%require(positive(b%cfg%soil_stiffness), 'soil_stiffness', b%cfg%soil_stiffness, '', &
                    'soil_stiffness > 0')
     call b%require(positive(b%cfg%soil_exponent), 'soil_exponent', b%cfg%soil_exponent, '', &
@@ -44,7 +41,7 @@ contains
                    'soil_drag >= 0 kg/m')
     call b%require(positive(b%cfg%soil_unload_stiffness), 'soil_unload_stiffness', &
                    b%cfg%soil_unload_stiffness, 'N/m', 'soil_unload_stiffness > 0 N/m')
-    call check_damping(b)
+    call b%check_damping()
     allocate (b%law, source=regolith(b%cfg%soil_stiffness, b%cfg%soil_exponent, b%cfg%soil_drag, b%cfg%soil_unload_stiffness, &
                                      b%cfg%damping))
   end subroutine build
@@ -84,16 +81,13 @@ contains
     type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! normal force, >= 0 [N]
     real(wp) :: zm
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
+    f = 0.0_wp
+    if (delta <= 0.0_wp) return
     zm = regolith_zmax(delta, state)
     if (delta >= zm) then
       f = self%soil_stiffness*delta**self%soil_exponent + self%drag*max(delta_dot, 0.0_wp)**2
     else
-      f = max(0.0_wp, self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta) &
-                      + self%damping*delta_dot)
+      f = max(0.0_wp, unloading_line(self, delta, zm) + self%damping*delta_dot)
     end if
   end function regolith_normal_force
 
@@ -103,14 +97,18 @@ contains
     real(wp), intent(in) :: delta          !! penetration [m]
     type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! elastic force [N]
-    real(wp) :: zm
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
-    zm = regolith_zmax(delta, state)
-    f = max(0.0_wp, self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta))
+    f = 0.0_wp
+    if (delta > 0.0_wp) f = max(0.0_wp, unloading_line(self, delta, regolith_zmax(delta, state)))
   end function regolith_spring_force
+
+  !> The stiff elastic line below the deepest sinkage: K_b z_max^n_b - k_u (z_max - z).
+  pure function unloading_line(self, delta, zm) result(f)
+    class(regolith_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta          !! penetration, > 0 [m]
+    real(wp), intent(in) :: zm             !! deepest sinkage, >= delta [m]
+    real(wp) :: f                          !! elastic force on the line, may be < 0 [N]
+    f = self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta)
+  end function unloading_line
 
   !> Energy the unloading line would give back: f_el^2 / (2 k_u).
   pure function regolith_elastic_energy(self, delta, state) result(e)
