@@ -31,11 +31,7 @@ contains
     real(wp), intent(in) :: damping        !! C_g [N s/m]
     real(wp), intent(in) :: damping_depth  !! D1 [m]
     type(base_contact_t) :: law            !! the law
-    law%name = 'base'
-    law%stiffness = stiffness
-    law%exponent = exponent
-    law%damping = damping
-    law%damping_depth = damping_depth
+    law = base_contact_t(name='base', stiffness=stiffness, exponent=exponent, damping=damping, damping_depth=damping_depth)
   end function base_contact
 
   !> kappa C, kappa = min(delta/D1, 1) (D1 = 0: no ramp).

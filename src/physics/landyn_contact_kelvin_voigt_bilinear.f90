@@ -2,7 +2,6 @@
 module landyn_contact_kelvin_voigt_bilinear
   use landyn_kinds, only: wp
   use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_damper_t
-  use landyn_law_checks, only: nonnegative
   implicit none
   private
 
@@ -22,8 +21,7 @@ contains
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
     if (.not. b%hertz_wanted(depth_needed=.false., damped=.true.)) return
-    call b%require(nonnegative(b%cfg%damping2), 'damping2', b%cfg%damping2, 'N s^2/m^2', &
-                   'damping2 >= 0 N s^2/m^2')
+    call b%require_nonnegative('damping2', b%cfg%damping2, 'N s^2/m^2')
     allocate (b%law, source=kelvin_voigt_bilinear_t(name='kelvin_voigt_bilinear', stiffness=b%cfg%stiffness, &
                                                     exponent=b%cfg%exponent, damping=b%cfg%damping, damping2=b%cfg%damping2))
   end subroutine build

@@ -35,7 +35,7 @@
 module landyn_contact_law
   use landyn_kinds, only: wp
   use landyn_config, only: contact_cfg_t, name_len
-  use landyn_law_checks, only: law_build_t, positive, nonnegative
+  use landyn_law_checks, only: law_build_t, positive
   implicit none
   private
 
@@ -98,7 +98,6 @@ module landyn_contact_law
   contains
     procedure :: wanted => contact_wanted               !! the damping_depth rule; build the law?
     procedure :: hertz_wanted => contact_hertz_wanted   !! the same, then the spring and damper checks
-    procedure :: check_damping                          !! range check of the damping coefficient
   end type contact_build_t
 
   !> Laws whose spring part is K delta^n (all but regolith).
@@ -230,11 +229,9 @@ contains
     logical, intent(in) :: depth_needed         !! the law needs damping_depth > 0 [-]
     logical :: go                               !! build the law [-]
     if (depth_needed) then
-      call b%require(positive(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, 'm', &
-                     'damping_depth > 0 m')
+      call b%require_positive('damping_depth', b%cfg%damping_depth, 'm')
     else
-      call b%require(nonnegative(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, &
-                     'm', 'damping_depth >= 0 m')
+      call b%require_nonnegative('damping_depth', b%cfg%damping_depth, 'm')
     end if
     go = .not. b%check_only
   end function contact_wanted
@@ -250,15 +247,8 @@ contains
     if (.not. go) return
     call b%require(positive(b%cfg%stiffness), 'stiffness', b%cfg%stiffness, 'N/m^n', &
                    'stiffness > 0')
-    call b%require(positive(b%cfg%exponent), 'exponent', b%cfg%exponent, '', 'exponent > 0')
-    if (damped) call b%check_damping()
+    call b%require_positive('exponent', b%cfg%exponent, '')
+    if (damped) call b%require_nonnegative('damping', b%cfg%damping, 'N s/m')
   end function contact_hertz_wanted
-
-  !> Range check of the (linear) damping coefficient.
-  subroutine check_damping(b)
-    class(contact_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(nonnegative(b%cfg%damping), 'damping', b%cfg%damping, 'N s/m', &
-                   'damping >= 0 N s/m')
-  end subroutine check_damping
 
 end module landyn_contact_law

@@ -2,7 +2,6 @@
 module landyn_contact_regolith
   use landyn_kinds, only: wp
   use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t
-  use landyn_law_checks, only: positive, nonnegative
   implicit none
   private
 
@@ -33,15 +32,11 @@ contains
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
     if (.not. b%wanted(depth_needed=.false.)) return
-    call b%require(positive(b%cfg%soil_stiffness), 'soil_stiffness', b%cfg%soil_stiffness, '', &
-                   'soil_stiffness > 0')
-    call b%require(positive(b%cfg%soil_exponent), 'soil_exponent', b%cfg%soil_exponent, '', &
-                   'soil_exponent > 0')
-    call b%require(nonnegative(b%cfg%soil_drag), 'soil_drag', b%cfg%soil_drag, 'kg/m', &
-                   'soil_drag >= 0 kg/m')
-    call b%require(positive(b%cfg%soil_unload_stiffness), 'soil_unload_stiffness', &
-                   b%cfg%soil_unload_stiffness, 'N/m', 'soil_unload_stiffness > 0 N/m')
-    call b%check_damping()
+    call b%require_positive('soil_stiffness', b%cfg%soil_stiffness, '')
+    call b%require_positive('soil_exponent', b%cfg%soil_exponent, '')
+    call b%require_nonnegative('soil_drag', b%cfg%soil_drag, 'kg/m')
+    call b%require_positive('soil_unload_stiffness', b%cfg%soil_unload_stiffness, 'N/m')
+    call b%require_nonnegative('damping', b%cfg%damping, 'N s/m')
     allocate (b%law, source=regolith(b%cfg%soil_stiffness, b%cfg%soil_exponent, b%cfg%soil_drag, b%cfg%soil_unload_stiffness, &
                                      b%cfg%damping))
   end subroutine build
@@ -54,13 +49,8 @@ contains
     real(wp), intent(in) :: unload_stiffness  !! k_u, > 0 [N/m]
     real(wp), intent(in) :: damping           !! C [N s/m]
     type(regolith_t) :: law                   !! the law
-    law%name = 'regolith'
-    law%has_history = .true.
-    law%soil_stiffness = soil_stiffness
-    law%soil_exponent = soil_exponent
-    law%drag = drag
-    law%unload_stiffness = unload_stiffness
-    law%damping = damping
+    law = regolith_t(name='regolith', has_history=.true., soil_stiffness=soil_stiffness, soil_exponent=soil_exponent, &
+                     drag=drag, unload_stiffness=unload_stiffness, damping=damping)
   end function regolith
 
   ! ---------------------------------------------------------------- regolith

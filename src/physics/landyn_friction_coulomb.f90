@@ -54,13 +54,8 @@ contains
     real(wp), intent(in) :: stick_stiffness  !! k, > 0 [N/m]
     real(wp), intent(in) :: stick_damping    !! c [N s/m]
     type(coulomb_t) :: law                   !! the law
-    law%name = 'ty1'
-    law%has_stiction = .true.
-    law%mu_stick = mu_stick
-    law%mu_slide = mu_slide
-    law%viscous = viscous
-    law%stick_stiffness = stick_stiffness
-    law%stick_damping = stick_damping
+    law = coulomb_t(name='ty1', has_stiction=.true., mu_stick=mu_stick, mu_slide=mu_slide, viscous=viscous, &
+                    stick_stiffness=stick_stiffness, stick_damping=stick_damping)
   end function coulomb
 
   ! ---------------------------------------------------------------- ty1, ty2, ty4

@@ -38,11 +38,8 @@ contains
     real(wp), intent(in) :: v_static    !! v_s [m/s]
     real(wp), intent(in) :: v_dynamic   !! v_d [m/s]
     type(coulomb_step_t) :: law         !! the law
-    law%name = 'coulomb_step'
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v_static = v_static
-    law%v_dynamic = v_dynamic
+    law = coulomb_step_t(name='coulomb_step', mu_static=mu_static, mu_dynamic=mu_dynamic, v_static=v_static, &
+                         v_dynamic=v_dynamic)
   end function coulomb_step
 
   ! ---------------------------------------------------------------- coulomb_step

@@ -50,7 +50,7 @@ module landyn_friction_law
   use landyn_config, only: friction_cfg_t, name_len
   use landyn_strings, only: quote_text
   use landyn_real_text, only: fmt_real
-  use landyn_law_checks, only: law_build_t, positive, nonnegative
+  use landyn_law_checks, only: law_build_t
   use landyn_config, only: is_set
   implicit none
   private
@@ -284,34 +284,26 @@ contains
   !> Range checks every law makes (mu_static, mu_dynamic, v_static).
   subroutine check_common(b)
     class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(nonnegative(b%cfg%mu_static), 'mu_static', b%cfg%mu_static, '', &
-                   'mu_static >= 0')
-    call b%require(nonnegative(b%cfg%mu_dynamic), 'mu_dynamic', b%cfg%mu_dynamic, '', &
-                   'mu_dynamic >= 0')
-    call b%require(positive(b%cfg%v_static), 'v_static', b%cfg%v_static, 'm/s', &
-                   'v_static > 0 m/s')
+    call b%require_nonnegative('mu_static', b%cfg%mu_static, '')
+    call b%require_nonnegative('mu_dynamic', b%cfg%mu_dynamic, '')
+    call b%require_positive('v_static', b%cfg%v_static, 'm/s')
   end subroutine check_common
 
   !> Range checks of the stick spring-damper and the viscous term (laws with stiction).
   subroutine check_stick(b)
     class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(positive(b%cfg%stick_stiffness), 'stick_stiffness', b%cfg%stick_stiffness, &
-                   'N/m', 'stick_stiffness > 0 N/m')
-    call b%require(nonnegative(b%cfg%stick_damping), 'stick_damping', b%cfg%stick_damping, &
-                   'N s/m', 'stick_damping >= 0 N s/m')
-    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
-                   'viscous >= 0 N s/m')
+    call b%require_positive('stick_stiffness', b%cfg%stick_stiffness, 'N/m')
+    call b%require_nonnegative('stick_damping', b%cfg%stick_damping, 'N s/m')
+    call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
   end subroutine check_stick
 
   !> Range checks of the Stribeck parameters (ty5, ty6; v_s: the resolved Stribeck speed).
   subroutine check_stribeck(b, v_s)
     class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
     real(wp), intent(in) :: v_s                    !! Stribeck speed, stribeck_speed or the law's default [m/s]
-    call b%require(positive(v_s), 'stribeck_speed', v_s, 'm/s', 'stribeck_speed > 0 m/s')
-    call b%require(positive(b%cfg%stribeck_exponent), 'stribeck_exponent', &
-                   b%cfg%stribeck_exponent, '', 'stribeck_exponent > 0')
-    call b%require(nonnegative(b%cfg%stribeck_decay), 'stribeck_decay', b%cfg%stribeck_decay, '', &
-                   'stribeck_decay >= 0')
+    call b%require_positive('stribeck_speed', v_s, 'm/s')
+    call b%require_positive('stribeck_exponent', b%cfg%stribeck_exponent, '')
+    call b%require_nonnegative('stribeck_decay', b%cfg%stribeck_decay, '')
   end subroutine check_stribeck
 
   !> The stiction rule of ty4, ty5, ty6: mu_dynamic <= mu_static.

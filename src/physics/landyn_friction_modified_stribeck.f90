@@ -2,7 +2,6 @@
 module landyn_friction_modified_stribeck
   use landyn_kinds, only: wp
   use landyn_friction_law, only: two_coefficient_t, friction_build_t
-  use landyn_law_checks, only: nonnegative
   implicit none
   private
 
@@ -28,8 +27,7 @@ contains
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
     if (.not. b%wanted(stiction_order=.true., v_s=v_s)) return
-    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
-                   'viscous >= 0 N s/m')
+    call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
     allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
                                               b%cfg%stribeck_exponent, b%cfg%viscous))
   end subroutine build
@@ -44,14 +42,8 @@ contains
     real(wp), intent(in) :: delta        !! exponent [-]
     real(wp), intent(in) :: viscous      !! C_v [N s/m]
     type(modified_stribeck_t) :: law     !! the law
-    law%name = 'ty6'
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v0 = v0
-    law%v_stribeck = v_stribeck
-    law%eps = eps
-    law%delta = delta
-    law%viscous = viscous
+    law = modified_stribeck_t(name='ty6', mu_static=mu_static, mu_dynamic=mu_dynamic, v0=v0, v_stribeck=v_stribeck, eps=eps, &
+                              delta=delta, viscous=viscous)
   end function modified_stribeck
 
   ! ---------------------------------------------------------------- ty6

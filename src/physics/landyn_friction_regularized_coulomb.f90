@@ -30,9 +30,7 @@ contains
     real(wp), intent(in) :: mu_static    !! mu_s [-]
     real(wp), intent(in) :: v0           !! regularisation speed, > 0 [m/s]
     type(regularized_coulomb_t) :: law   !! the law
-    law%name = 'ty3'
-    law%mu_static = mu_static
-    law%v0 = v0
+    law = regularized_coulomb_t(name='ty3', mu_static=mu_static, v0=v0)
   end function regularized_coulomb
 
   ! ---------------------------------------------------------------- ty3

@@ -37,16 +37,9 @@ contains
     real(wp), intent(in) :: stick_stiffness  !! k, > 0 [N/m]
     real(wp), intent(in) :: stick_damping    !! c [N s/m]
     type(stribeck_t) :: law                  !! the law
-    law%name = 'ty5'
-    law%has_stiction = .true.
-    law%mu_stick = mu_static
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v_stribeck = v_stribeck
-    law%delta = delta
-    law%viscous = viscous
-    law%stick_stiffness = stick_stiffness
-    law%stick_damping = stick_damping
+    law = stribeck_t(name='ty5', has_stiction=.true., mu_stick=mu_static, mu_static=mu_static, mu_dynamic=mu_dynamic, &
+                     v_stribeck=v_stribeck, delta=delta, viscous=viscous, stick_stiffness=stick_stiffness, &
+                     stick_damping=stick_damping)
   end function stribeck
 
   ! ---------------------------------------------------------------- ty5
