@@ -55,7 +55,7 @@ module landyn_friction_law
   implicit none
   private
 
-  public :: friction_law_t, friction_state_t, friction_build_t, two_coefficient_t
+  public :: friction_law_t, friction_state_t, friction_build_t, two_coefficient_t, stribeck_curve_t
   public :: adams_step, opposing_force, default_stribeck_speed
 
   !> Stick state of one footpad (laws with has_stiction only).
@@ -113,6 +113,12 @@ module landyn_friction_law
   contains
     procedure :: max_coefficient => two_coefficient_max
   end type two_coefficient_t
+
+  !> A two-coefficient law with a Stribeck curve exp(-(|v|/v_S)^delta) (ty5, ty6).
+  type, abstract, extends(two_coefficient_t) :: stribeck_curve_t
+    real(wp) :: v_stribeck = 1.0_wp  !! Stribeck speed v_S [m/s]
+    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
+  end type stribeck_curve_t
 
 contains
 
@@ -254,64 +260,47 @@ contains
 
   ! ---------------------------------------------------------------- checks of the &friction input
 
-  !> The checks of a law, in this order: the stiction rule mu_dynamic <= mu_static (the law
-  !! depends on it: stiction_order); then, when the law is to be built (not b%check_only; the
-  !! result), the range checks every law makes, the Stribeck parameters (when v_s is present: it
-  !! returns the resolved Stribeck speed, stribeck_speed or the law's default) and the stick
-  !! spring-damper and viscous term (stick). The builder may add its own checks, then allocates b%law.
-  function friction_wanted(b, stiction_order, stick, v_s) result(go)
-    class(friction_build_t), intent(inout) :: b   !! the build (input and messages)
+  !> The checks of a law, in this order: the stiction rule mu_dynamic <= mu_static (stiction_order:
+  !! the law depends on it); then, when the law is to be built (not b%check_only; the result), the
+  !! range checks every law makes (mu_static, mu_dynamic, v_static), the Stribeck parameters (when
+  !! v_s is present: it returns the resolved Stribeck speed, stribeck_speed or the law's default),
+  !! the stick spring-damper (stick) and the viscous term (stick or viscous). The builder may add
+  !! its own checks, then allocates b%law.
+  function friction_wanted(b, stiction_order, stick, viscous, v_s) result(go)
+    class(friction_build_t), intent(inout) :: b      !! the build (input and messages)
     logical, intent(in), optional :: stiction_order  !! the law needs mu_dynamic <= mu_static [-]
-    logical, intent(in), optional :: stick        !! the law sticks (checks k, c and C_v) [-]
-    real(wp), intent(out), optional :: v_s        !! the law's Stribeck speed [m/s]
-    logical :: go                                 !! build the law [-]
-    if (present(stiction_order)) then
-      if (stiction_order) call check_stiction_order(b)
-    end if
+    logical, intent(in), optional :: stick           !! the law sticks (checks k, c and C_v) [-]
+    logical, intent(in), optional :: viscous         !! the law reads C_v [-]
+    real(wp), intent(out), optional :: v_s           !! the law's Stribeck speed [m/s]
+    logical :: go                                    !! build the law [-]
+    if (flag(stiction_order)) &
+      call b%require(b%cfg%mu_dynamic <= b%cfg%mu_static, 'mu_dynamic', b%cfg%mu_dynamic, '', &
+                     'mu_dynamic <= mu_static = '//fmt_real(b%cfg%mu_static)//' for law '//quote_text(trim(b%cfg%law))// &
+                        ' (stiction)')
     go = .not. b%check_only
     if (.not. go) return
-    call check_common(b)
-    if (present(v_s)) then
-      v_s = b%cfg%stribeck_speed
-      if (.not. is_set(v_s)) v_s = default_stribeck_speed(b%key)
-      call check_stribeck(b, v_s)
-    end if
-    if (present(stick)) then
-      if (stick) call check_stick(b)
-    end if
-  end function friction_wanted
-
-  !> Range checks every law makes (mu_static, mu_dynamic, v_static).
-  subroutine check_common(b)
-    class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
     call b%require_nonnegative('mu_static', b%cfg%mu_static, '')
     call b%require_nonnegative('mu_dynamic', b%cfg%mu_dynamic, '')
     call b%require_positive('v_static', b%cfg%v_static, 'm/s')
-  end subroutine check_common
+    if (present(v_s)) then
+      v_s = b%cfg%stribeck_speed
+      if (.not. is_set(v_s)) v_s = default_stribeck_speed(b%key)
+      call b%require_positive('stribeck_speed', v_s, 'm/s')
+      call b%require_positive('stribeck_exponent', b%cfg%stribeck_exponent, '')
+      call b%require_nonnegative('stribeck_decay', b%cfg%stribeck_decay, '')
+    end if
+    if (flag(stick)) then
+      call b%require_positive('stick_stiffness', b%cfg%stick_stiffness, 'N/m')
+      call b%require_nonnegative('stick_damping', b%cfg%stick_damping, 'N s/m')
+    end if
+    if (flag(stick) .or. flag(viscous)) call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
+  end function friction_wanted
 
-  !> Range checks of the stick spring-damper and the viscous term (laws with stiction).
-  subroutine check_stick(b)
-    class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require_positive('stick_stiffness', b%cfg%stick_stiffness, 'N/m')
-    call b%require_nonnegative('stick_damping', b%cfg%stick_damping, 'N s/m')
-    call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
-  end subroutine check_stick
-
-  !> Range checks of the Stribeck parameters (ty5, ty6; v_s: the resolved Stribeck speed).
-  subroutine check_stribeck(b, v_s)
-    class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    real(wp), intent(in) :: v_s                    !! Stribeck speed, stribeck_speed or the law's default [m/s]
-    call b%require_positive('stribeck_speed', v_s, 'm/s')
-    call b%require_positive('stribeck_exponent', b%cfg%stribeck_exponent, '')
-    call b%require_nonnegative('stribeck_decay', b%cfg%stribeck_decay, '')
-  end subroutine check_stribeck
-
-  !> The stiction rule of ty4, ty5, ty6: mu_dynamic <= mu_static.
-  subroutine check_stiction_order(b)
-    class(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(b%cfg%mu_dynamic <= b%cfg%mu_static, 'mu_dynamic', b%cfg%mu_dynamic, '', &
-                   'mu_dynamic <= mu_static = '//fmt_real(b%cfg%mu_static)//' for law '//quote_text(trim(b%cfg%law))// &
-                      ' (stiction)')
-  end subroutine check_stiction_order
+  !> An optional flag's value, .false. when absent.
+  pure logical function flag(x)
+    logical, intent(in), optional :: x  !! the flag [-]
+    flag = .false.
+    if (present(x)) flag = x
+  end function flag
 
 end module landyn_friction_law

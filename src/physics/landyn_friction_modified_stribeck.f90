@@ -1,7 +1,7 @@
 !> Stiction + modified Stribeck + Coulomb + viscous friction (ty6), regularised at zero slip.
 module landyn_friction_modified_stribeck
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: two_coefficient_t, friction_build_t
+  use landyn_friction_law, only: stribeck_curve_t, friction_build_t
   implicit none
   private
 
@@ -11,11 +11,9 @@ module landyn_friction_modified_stribeck
   !!   |v| < v0:  mu = mu_s (1 - (|v| - v0)^2 / v0^2)
   !!   |v| >= v0: mu = mu_d + (mu_s - mu_d) exp(-eps (|v|/v_S)^delta)
   !! plus C_v |v|.
-  type, extends(two_coefficient_t) :: modified_stribeck_t
+  type, extends(stribeck_curve_t) :: modified_stribeck_t
     real(wp) :: v0 = 0.1_wp          !! stiction velocity v0 [m/s]
-    real(wp) :: v_stribeck = 0.1_wp  !! v_S [m/s]
     real(wp) :: eps = 0.85_wp        !! epsilon [-]
-    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
   contains
     procedure :: coefficient => modified_stribeck_coefficient
   end type modified_stribeck_t
@@ -26,10 +24,9 @@ contains
   subroutine build(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
-    if (.not. b%wanted(stiction_order=.true., v_s=v_s)) return
-    call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
-    allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
-                                              b%cfg%stribeck_exponent, b%cfg%viscous))
+    if (b%wanted(stiction_order=.true., viscous=.true., v_s=v_s)) &
+      allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
+                                                b%cfg%stribeck_exponent, b%cfg%viscous))
   end subroutine build
 
   !> ty6 law with the given parameters.

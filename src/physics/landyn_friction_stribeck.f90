@@ -1,7 +1,7 @@
 !> Stiction + Stribeck + Coulomb + viscous friction (ty5).
 module landyn_friction_stribeck
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: two_coefficient_t, friction_build_t
+  use landyn_friction_law, only: stribeck_curve_t, friction_build_t
   implicit none
   private
 
@@ -9,9 +9,7 @@ module landyn_friction_stribeck
 
   !> Stiction + Stribeck + Coulomb + viscous (ty5): mu = mu_d + (mu_s - mu_d) exp(-(|v|/v_S)^delta),
   !! plus C_v |v|; sticks up to mu_s N.
-  type, extends(two_coefficient_t) :: stribeck_t
-    real(wp) :: v_stribeck = 1.0_wp  !! v_S [m/s]
-    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
+  type, extends(stribeck_curve_t) :: stribeck_t
   contains
     procedure :: coefficient => stribeck_coefficient
   end type stribeck_t
