@@ -104,6 +104,7 @@ contains
     real(wp), intent(out) :: f_neg     !! bound against extension [N]
     integer :: k
     real(wp) :: cap
+    f_pos = 0.0_wp
     if (s >= s_hismax - history_tol) then
       cap = self%stage_end(self%n_stages)
       if (s <= cap) then
@@ -115,17 +116,24 @@ contains
           end if
         end do
       else
-        f_pos = self%stage_force(self%n_stages) + self%k_stop*(s - cap) + self%c_stop*max(s_dot, 0.0_wp)
+        f_pos = with_stop(self%stage_force(self%n_stages), self%k_stop, self%c_stop, s - cap, s_dot)
       end if
-    else
-      f_pos = 0.0_wp
     end if
-    if (s <= max(0.0_wp, s_hismin) + history_tol) then
-      f_neg = rigid_force
-    else
-      f_neg = 0.0_wp
-    end if
+    f_neg = 0.0_wp
+    if (s <= max(0.0_wp, s_hismin) + history_tol) f_neg = rigid_force
   end subroutine primary_resistance
+
+  !> The bound on an end-of-stroke stop: the last crush force plus the stop's spring and damper,
+  !! f_last + k_stop over + c_stop max(rate, 0) (in this order of the sums).
+  pure function with_stop(f_last, k_stop, c_stop, over, rate) result(f)
+    real(wp), intent(in) :: f_last   !! crush force at the end of the stroke [N]
+    real(wp), intent(in) :: k_stop   !! stop stiffness [N/m]
+    real(wp), intent(in) :: c_stop   !! stop damping [N s/m]
+    real(wp), intent(in) :: over     !! stroke beyond the capacity, > 0 [m]
+    real(wp), intent(in) :: rate     !! stroke rate toward the stop [m/s]
+    real(wp) :: f                    !! bound [N]
+    f = f_last + k_stop*over + c_stop*max(rate, 0.0_wp)
+  end function with_stop
 
   pure subroutine primary_capacity(self, cap_pos, cap_neg)
     class(primary_honeycomb_t), intent(in) :: self!! the buffer law
@@ -157,19 +165,15 @@ contains
     real(wp), intent(in) :: s_hismax   !! most positive stroke reached so far [m]
     real(wp), intent(out) :: f_pos     !! bound against lengthening [N]
     real(wp), intent(out) :: f_neg     !! bound against shortening [N]
+    f_pos = 0.0_wp
     if (s >= s_hismax - history_tol) then
       f_pos = self%f_lengthening
-      if (s > self%stroke_lengthening) f_pos = f_pos + self%k_stop*(s - self%stroke_lengthening) &
-                                                + self%c_stop*max(s_dot, 0.0_wp)
-    else
-      f_pos = 0.0_wp
+      if (s > self%stroke_lengthening) f_pos = with_stop(f_pos, self%k_stop, self%c_stop, s - self%stroke_lengthening, s_dot)
     end if
+    f_neg = 0.0_wp
     if (s <= s_hismin + history_tol) then
       f_neg = self%f_shortening
-      if (-s > self%stroke_shortening) f_neg = f_neg + self%k_stop*(-s - self%stroke_shortening) &
-                                                + self%c_stop*max(-s_dot, 0.0_wp)
-    else
-      f_neg = 0.0_wp
+      if (-s > self%stroke_shortening) f_neg = with_stop(f_neg, self%k_stop, self%c_stop, -s - self%stroke_shortening, -s_dot)
     end if
   end subroutine secondary_resistance
 
