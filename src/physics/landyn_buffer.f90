@@ -64,14 +64,18 @@ module landyn_buffer
     end function segment_iface
   end interface
 
+  !> A buffer law with a stiff end-of-stroke stop (spring and damper beyond the stroke capacity).
+  type, abstract, extends(buffer_law_t) :: stop_buffer_t
+    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
+    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
+  end type stop_buffer_t
+
   !> Primary strut: multi-stage honeycomb crushed in shortening (eq. 21); rigid stop against
   !! extension beyond the original length.
-  type, extends(buffer_law_t) :: primary_honeycomb_t
+  type, extends(stop_buffer_t) :: primary_honeycomb_t
     integer :: n_stages = 2                  !! number of stages [-]
     real(wp) :: stage_force(5) = 0.0_wp      !! crush force of each stage [N]
     real(wp) :: stage_end(5) = 0.0_wp        !! stroke at which each stage ends [m]
-    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
-    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
   contains
     procedure :: resistance => primary_resistance
     procedure :: capacity => primary_capacity
@@ -79,13 +83,11 @@ module landyn_buffer
   end type primary_honeycomb_t
 
   !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
-  type, extends(buffer_law_t) :: secondary_honeycomb_t
+  type, extends(stop_buffer_t) :: secondary_honeycomb_t
     real(wp) :: f_lengthening = 43000.0_wp   !! crush force resisting lengthening (+s) [N]
     real(wp) :: f_shortening = 30000.0_wp    !! crush force resisting shortening (-s) [N]
     real(wp) :: stroke_lengthening = 0.27_wp !! stroke available toward +s [m]
     real(wp) :: stroke_shortening = 0.27_wp  !! stroke available toward -s [m]
-    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
-    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
   contains
     procedure :: resistance => secondary_resistance
     procedure :: capacity => secondary_capacity
