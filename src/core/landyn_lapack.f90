@@ -97,7 +97,7 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky('dpotf2', n, a, lda, stat, errmsg, what, constraint_hint)
+    call cholesky(.true., n, a, lda, stat, errmsg, what, constraint_hint)
     if (stat /= 0) return
     call dtrsv('U', 'T', 'N', n, a, lda, b, 1)
     call dtrsv('U', 'N', 'N', n, a, lda, b, 1)
@@ -112,7 +112,7 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky('dpotrf', n, a, lda, stat, errmsg, what, constraint_hint)
+    call cholesky(.false., n, a, lda, stat, errmsg, what, constraint_hint)
   end subroutine factor_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
@@ -124,13 +124,13 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky('dpotf2', n, a, lda, stat, errmsg, what, '')
+    call cholesky(.true., n, a, lda, stat, errmsg, what, '')
   end subroutine factor_spd_unblocked
 
-  !> Upper Cholesky factor of A with LAPACK `routine` (dpotrf blocked, dpotf2 unblocked); stat =
+  !> Upper Cholesky factor of A with LAPACK's dpotf2 (unblocked) or dpotrf (blocked); stat =
   !! INFO and its message (spd_info, `hint` after the minor's number).
-  subroutine cholesky(routine, n, a, lda, stat, errmsg, what, hint)
-    character(len=*), intent(in) :: routine        !! 'dpotrf' or 'dpotf2' [-]
+  subroutine cholesky(unblocked, n, a, lda, stat, errmsg, what, hint)
+    logical, intent(in) :: unblocked               !! dpotf2 rather than dpotrf [-]
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, R out (upper triangle) [any]
@@ -138,12 +138,13 @@ contains
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number in the message [-]
-    if (routine == 'dpotrf') then
-      call dpotrf('U', n, a, lda, stat)
-    else
+    if (unblocked) then
       call dpotf2('U', n, a, lda, stat)
+      if (stat /= 0) call spd_info(stat, 'dpotf2', what, hint, errmsg)
+    else
+      call dpotrf('U', n, a, lda, stat)
+      if (stat /= 0) call spd_info(stat, 'dpotrf', what, hint, errmsg)
     end if
-    call spd_info(stat, routine, what, hint, errmsg)
   end subroutine cholesky
 
   !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
