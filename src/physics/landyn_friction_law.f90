@@ -40,11 +40,11 @@
 !!
 !! Building from the input. Every law module has a builder `build(b)` (ty1, ty2, ty4 share one
 !! module: build_ty1, ...), b a friction_build_t holding the &friction input, the message prefix
-!! and the messages so far. It appends the law-dependent checks (v_dynamic > v_static, the
-!! stiction order mu_dynamic <= mu_static) and, unless b%check_only, the range checks of the
-!! parameters it uses, and allocates b%law (the registry discards it when a check failed). With
-!! b%check_only that is the input validation (check_friction_law_input), so deck validation and
-!! factory share one rule.
+!! and the messages so far. It appends the law-dependent checks (v_dynamic > v_static; the
+!! stiction order mu_dynamic <= mu_static through b%wanted) and, unless b%check_only (b%wanted is
+!! then .false.), the range checks of the parameters it uses (b%wanted), and allocates b%law (the
+!! registry discards it when a check failed). With b%check_only that is the input validation
+!! (check_friction_law_input), so deck validation and factory share one rule.
 module landyn_friction_law
   use landyn_kinds, only: wp
   use landyn_config, only: friction_cfg_t, name_len
