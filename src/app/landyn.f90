@@ -18,7 +18,7 @@ program landyn
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
-  use landyn_cli, only: get_arg, command_line, positional_arg_problem, write_input_errors
+  use landyn_cli, only: command_line, write_input_errors
   use landyn_app_support, only: app_t
   implicit none
 
@@ -47,35 +47,22 @@ program landyn
   type(sim_result_t) :: res
   type(health_t) :: health
   character(len=:), allocatable :: deck, out_file, arg, cmd, problem
-  logical :: check_only, quiet
-  integer :: i, n, stat, progress
+  logical :: check_only
+  integer :: stat, progress
   character(len=msg_len) :: msg
 
-  app%name = 'landyn'
-  app%usage_line = trim(help_text(1))
-  app%help = help_text
+  call app%start('landyn', trim(help_text(1)), help_text)
   deck = ''
-  problem = ''
   out_file = ''
   check_only = .false.
-  quiet = .false.
-  n = command_argument_count()
-  i = 0
-  do while (i < n)
-    i = i + 1
-    arg = get_arg(i)
-    call app%info_option(arg)
+  do while (app%next_arg(arg))
     select case (arg)
     case ('--check')
       check_only = .true.
-    case ('-q', '--quiet')
-      quiet = .true.
     case ('-o', '--output')
-      out_file = app%option_value(i, n, arg)
+      out_file = app%option_value(arg)
     case default
-      problem = positional_arg_problem(arg, deck, 'deck')
-      if (len(problem) > 0) call app%die_usage(problem)
-      deck = arg
+      call app%positional(arg, deck, 'deck')
     end select
   end do
 
@@ -101,7 +88,7 @@ program landyn
   ! ---- the result file may be written (docs/files.md): checked before the run
   problem = output_file_problem(out_file, 'result file', [character(len=len(deck)) :: deck], .true.)
   if (len(problem) > 0) call app%die_files(problem)
-  if (file_kind(out_file) == kind_regular .and. .not. quiet) &
+  if (file_kind(out_file) == kind_regular .and. .not. app%quiet) &
     write (error_unit, '(a)') 'landyn: '//out_file//' exists and will be replaced'
 
   ! ---- input health (docs/health.md): a meaningless configuration is not run
@@ -115,8 +102,8 @@ program landyn
 
   ! ---- run
   progress = error_unit
-  if (quiet) progress = -1
-  if (.not. quiet) then
+  if (app%quiet) progress = -1
+  if (.not. app%quiet) then
     if (len(deck) > 0) then
       write (error_unit, '(a)') 'landyn: running '//deck//' -> '//out_file
     else

@@ -12,7 +12,7 @@
 !! file; docs/files.md); 5 stopped early (--stop-after) or merged summary incomplete.
 program landyn_batch
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-  use landyn_cli, only: get_arg, command_line, positional_arg_problem
+  use landyn_cli, only: get_arg, command_line
   use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_app_support, only: app_t
   use landyn_campaign_tasks, only: check_campaign, list_cases, run_case_range, merge_summaries
@@ -58,33 +58,24 @@ program landyn_batch
 
   type(app_t) :: app
   type(batch_options_t) :: opts
-  character(len=:), allocatable :: deck, arg, out_file, task, range_text, problem
+  character(len=:), allocatable :: deck, arg, out_file, task, range_text
   character(len=1024), allocatable :: inputs(:)
-  integer :: i, n, code, k1, k2, ios, p
+  integer :: code, k1, k2, ios, p
 
-  app%name = 'landyn_batch'
-  app%usage_line = 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... (landyn_batch --help)'
-  app%help = help_text
+  call app%start('landyn_batch', 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... '// &
+                 '(landyn_batch --help)', help_text)
   deck = ''
-  problem = ''
   out_file = ''
   task = 'campaign'
   range_text = ''
   opts%summary_file = ''
   opts%command_line = command_line()
-  n = command_argument_count()
-  i = 0
-  do while (i < n)
-    i = i + 1
-    arg = get_arg(i)
-    call app%info_option(arg)
+  do while (app%next_arg(arg))
     select case (arg)
     case ('--resume')
       opts%resume = .true.
     case ('--force')
       opts%force = .true.
-    case ('-q', '--quiet')
-      opts%quiet = .true.
     case ('--dedicated-master')
       opts%dedicated_master = .true.
     case ('--check')
@@ -92,35 +83,30 @@ program landyn_batch
     case ('--list-cases')
       call set_task('list')
     case ('--stop-after')
-      if (i == n) call app%die_usage('option --stop-after needs a number of cases')
-      i = i + 1
-      arg = get_arg(i)
+      arg = app%option_value(arg, missing='option --stop-after needs a number of cases')
       read (arg, *, iostat=ios) opts%stop_after
       if (ios /= 0 .or. opts%stop_after < 1) call app%die_usage('--stop-after needs a positive number, got '//arg)
     case ('-o', '--output')
-      out_file = app%option_value(i, n, arg)
+      out_file = app%option_value(arg)
     case ('--case')
-      if (i == n) call app%die_usage('option --case needs a case id K or a range K:L')
+      range_text = app%option_value(arg, missing='option --case needs a case id K or a range K:L')
       call set_task('case')
-      i = i + 1
-      range_text = get_arg(i)
     case ('--merge')
       call set_task('merge')
-      if (n - i < 2) call app%die_usage('--merge needs an output file and at least one input file')
-      out_file = get_arg(i + 1)
+      if (app%n - app%i < 2) call app%die_usage('--merge needs an output file and at least one input file')
+      out_file = get_arg(app%i + 1)
       if (len(out_file) == 0) call app%die_usage('--merge needs a non-empty output file name')
-      allocate (inputs(n - i - 1))
+      allocate (inputs(app%n - app%i - 1))
       do p = 1, size(inputs)
-        inputs(p) = get_arg(i + 1 + p)
-        if (len(get_arg(i + 1 + p)) > len(inputs(p))) call app%die_usage('file name too long: '//get_arg(i + 1 + p))
+        inputs(p) = get_arg(app%i + 1 + p)
+        if (len(get_arg(app%i + 1 + p)) > len(inputs(p))) call app%die_usage('file name too long: '//get_arg(app%i + 1 + p))
       end do
-      i = n
+      app%i = app%n
     case default
-      problem = positional_arg_problem(arg, deck, 'deck')
-      if (len(problem) > 0) call app%die_usage(problem)
-      deck = arg
+      call app%positional(arg, deck, 'deck')
     end select
   end do
+  opts%quiet = app%quiet
 
   code = EXIT_OK
   call check_output_file()

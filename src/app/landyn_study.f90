@@ -16,7 +16,7 @@ program landyn_study_main
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
-  use landyn_cli, only: get_arg, command_line, positional_arg_problem, write_input_errors
+  use landyn_cli, only: command_line, write_input_errors
   use landyn_app_support, only: app_t
   implicit none
 
@@ -45,39 +45,27 @@ program landyn_study_main
   type(study_t) :: study
   type(input_errors_t) :: errors
   character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd, problem
-  logical :: check_only, quiet
-  integer :: i, n, stat, run_stat, c, v, progress
+  logical :: check_only
+  integer :: i, stat, run_stat, c, v, progress
   character(len=msg_len) :: msg
   character(len=4096), allocatable :: inputs(:)
 
-  app%name = 'landyn_study'
-  app%usage_line = 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]'
-  app%help = help_text
+  call app%start('landyn_study', 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]', &
+                 help_text)
   deck = ''
-  problem = ''
   h5_file = ''
   csv_file = ''
   check_only = .false.
-  quiet = .false.
-  n = command_argument_count()
-  i = 0
-  do while (i < n)
-    i = i + 1
-    arg = get_arg(i)
-    call app%info_option(arg)
+  do while (app%next_arg(arg))
     select case (arg)
+    case ('-o', '--output')
+      h5_file = app%option_value(arg)
+    case ('--csv')
+      csv_file = app%option_value(arg)
     case ('--check')
       check_only = .true.
-    case ('-q', '--quiet')
-      quiet = .true.
-    case ('-o', '--output')
-      h5_file = app%option_value(i, n, arg)
-    case ('--csv')
-      csv_file = app%option_value(i, n, arg)
     case default
-      problem = positional_arg_problem(arg, deck, 'study deck')
-      if (len(problem) > 0) call app%die_usage(problem)
-      deck = arg
+      call app%positional(arg, deck, 'study deck')
     end select
   end do
   if (len(deck) == 0) call app%die_usage('no study deck given')
@@ -129,14 +117,14 @@ program landyn_study_main
       end do
     end do
   end if
-  if (.not. quiet) then
+  if (.not. app%quiet) then
     if (file_kind(h5_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//h5_file//' will be replaced'
     if (file_kind(csv_file) == kind_regular) write (error_unit, '(a)') 'landyn_study: '//csv_file//' will be replaced'
   end if
 
   ! ---- run
   progress = error_unit
-  if (quiet) progress = -1
+  if (app%quiet) progress = -1
   cmd = command_line()
   msg = ''
   call run_study(study, progress, cmd, run_stat, msg)

@@ -97,11 +97,8 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    integer :: info
-    call dpotf2('U', n, a, lda, info)
-    stat = info
-    call spd_info(info, 'dpotf2', what, constraint_hint, errmsg)
-    if (info /= 0) return
+    call cholesky(.true., n, a, lda, stat, errmsg, what, constraint_hint)
+    if (stat /= 0) return
     call dtrsv('U', 'T', 'N', n, a, lda, b, 1)
     call dtrsv('U', 'N', 'N', n, a, lda, b, 1)
   end subroutine solve_spd_unblocked
@@ -115,10 +112,7 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    integer :: info
-    call dpotrf('U', n, a, lda, info)
-    stat = info
-    call spd_info(info, 'dpotrf', what, constraint_hint, errmsg)
+    call cholesky(.false., n, a, lda, stat, errmsg, what, constraint_hint)
   end subroutine factor_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
@@ -130,11 +124,28 @@ contains
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    integer :: info
-    call dpotf2('U', n, a, lda, info)
-    stat = info
-    call spd_info(info, 'dpotf2', what, '', errmsg)
+    call cholesky(.true., n, a, lda, stat, errmsg, what, '')
   end subroutine factor_spd_unblocked
+
+  !> Upper Cholesky factor of A with LAPACK's dpotf2 (unblocked) or dpotrf (blocked); stat =
+  !! INFO and its message (spd_info, `hint` after the minor's number).
+  subroutine cholesky(unblocked, n, a, lda, stat, errmsg, what, hint)
+    logical, intent(in) :: unblocked               !! dpotf2 rather than dpotrf [-]
+    integer, intent(in) :: n                       !! order of the system [-]
+    integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
+    real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, R out (upper triangle) [any]
+    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
+    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    character(len=*), intent(in) :: what           !! name of the system [-]
+    character(len=*), intent(in) :: hint           !! text after the minor's number in the message [-]
+    if (unblocked) then
+      call dpotf2('U', n, a, lda, stat)
+      if (stat /= 0) call spd_info(stat, 'dpotf2', what, hint, errmsg)
+    else
+      call dpotrf('U', n, a, lda, stat)
+      if (stat /= 0) call spd_info(stat, 'dpotrf', what, hint, errmsg)
+    end if
+  end subroutine cholesky
 
   !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
   subroutine spd_info(info, routine, what, hint, errmsg)

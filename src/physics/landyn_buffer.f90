@@ -64,14 +64,18 @@ module landyn_buffer
     end function segment_iface
   end interface
 
+  !> A buffer law with a stiff end-of-stroke stop (spring and damper beyond the stroke capacity).
+  type, abstract, extends(buffer_law_t) :: stop_buffer_t
+    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
+    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
+  end type stop_buffer_t
+
   !> Primary strut: multi-stage honeycomb crushed in shortening (eq. 21); rigid stop against
   !! extension beyond the original length.
-  type, extends(buffer_law_t) :: primary_honeycomb_t
+  type, extends(stop_buffer_t) :: primary_honeycomb_t
     integer :: n_stages = 2                  !! number of stages [-]
     real(wp) :: stage_force(5) = 0.0_wp      !! crush force of each stage [N]
     real(wp) :: stage_end(5) = 0.0_wp        !! stroke at which each stage ends [m]
-    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
-    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
   contains
     procedure :: resistance => primary_resistance
     procedure :: capacity => primary_capacity
@@ -79,13 +83,11 @@ module landyn_buffer
   end type primary_honeycomb_t
 
   !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
-  type, extends(buffer_law_t) :: secondary_honeycomb_t
+  type, extends(stop_buffer_t) :: secondary_honeycomb_t
     real(wp) :: f_lengthening = 43000.0_wp   !! crush force resisting lengthening (+s) [N]
     real(wp) :: f_shortening = 30000.0_wp    !! crush force resisting shortening (-s) [N]
     real(wp) :: stroke_lengthening = 0.27_wp !! stroke available toward +s [m]
     real(wp) :: stroke_shortening = 0.27_wp  !! stroke available toward -s [m]
-    real(wp) :: k_stop = 1.0e9_wp            !! end-of-stroke stop stiffness [N/m]
-    real(wp) :: c_stop = 1.0e5_wp            !! end-of-stroke stop damping [N s/m]
   contains
     procedure :: resistance => secondary_resistance
     procedure :: capacity => secondary_capacity
@@ -104,6 +106,7 @@ contains
     real(wp), intent(out) :: f_neg     !! bound against extension [N]
     integer :: k
     real(wp) :: cap
+    f_pos = 0.0_wp
     if (s >= s_hismax - history_tol) then
       cap = self%stage_end(self%n_stages)
       if (s <= cap) then
@@ -115,17 +118,24 @@ contains
           end if
         end do
       else
-        f_pos = self%stage_force(self%n_stages) + self%k_stop*(s - cap) + self%c_stop*max(s_dot, 0.0_wp)
+        f_pos = with_stop(self%stage_force(self%n_stages), self%k_stop, self%c_stop, s - cap, s_dot)
       end if
-    else
-      f_pos = 0.0_wp
     end if
-    if (s <= max(0.0_wp, s_hismin) + history_tol) then
-      f_neg = rigid_force
-    else
-      f_neg = 0.0_wp
-    end if
+    f_neg = 0.0_wp
+    if (s <= max(0.0_wp, s_hismin) + history_tol) f_neg = rigid_force
   end subroutine primary_resistance
+
+  !> The bound on an end-of-stroke stop: the last crush force plus the stop's spring and damper,
+  !! f_last + k_stop over + c_stop max(rate, 0) (in this order of the sums).
+  pure function with_stop(f_last, k_stop, c_stop, over, rate) result(f)
+    real(wp), intent(in) :: f_last   !! crush force at the end of the stroke [N]
+    real(wp), intent(in) :: k_stop   !! stop stiffness [N/m]
+    real(wp), intent(in) :: c_stop   !! stop damping [N s/m]
+    real(wp), intent(in) :: over     !! stroke beyond the capacity, > 0 [m]
+    real(wp), intent(in) :: rate     !! stroke rate toward the stop [m/s]
+    real(wp) :: f                    !! bound [N]
+    f = f_last + k_stop*over + c_stop*max(rate, 0.0_wp)
+  end function with_stop
 
   pure subroutine primary_capacity(self, cap_pos, cap_neg)
     class(primary_honeycomb_t), intent(in) :: self!! the buffer law
@@ -157,19 +167,15 @@ contains
     real(wp), intent(in) :: s_hismax   !! most positive stroke reached so far [m]
     real(wp), intent(out) :: f_pos     !! bound against lengthening [N]
     real(wp), intent(out) :: f_neg     !! bound against shortening [N]
+    f_pos = 0.0_wp
     if (s >= s_hismax - history_tol) then
       f_pos = self%f_lengthening
-      if (s > self%stroke_lengthening) f_pos = f_pos + self%k_stop*(s - self%stroke_lengthening) &
-                                                + self%c_stop*max(s_dot, 0.0_wp)
-    else
-      f_pos = 0.0_wp
+      if (s > self%stroke_lengthening) f_pos = with_stop(f_pos, self%k_stop, self%c_stop, s - self%stroke_lengthening, s_dot)
     end if
+    f_neg = 0.0_wp
     if (s <= s_hismin + history_tol) then
       f_neg = self%f_shortening
-      if (-s > self%stroke_shortening) f_neg = f_neg + self%k_stop*(-s - self%stroke_shortening) &
-                                                + self%c_stop*max(-s_dot, 0.0_wp)
-    else
-      f_neg = 0.0_wp
+      if (-s > self%stroke_shortening) f_neg = with_stop(f_neg, self%k_stop, self%c_stop, -s - self%stroke_shortening, -s_dot)
     end if
   end subroutine secondary_resistance
 

@@ -1,18 +1,16 @@
 !> MSC Adams IMPACT contact: K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_adams_impact
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t
   use landyn_friction_law, only: adams_step
   implicit none
   private
 
   public :: adams_impact_t, build
 
-  !> MSC Adams IMPACT: F = K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot (cubic damping ramp).
+  !> MSC Adams IMPACT: F = K delta^n + STEP(delta, 0, 0, d_max, C) delta_dot (cubic damping ramp;
+  !! C = damping, full damping).
   type, extends(damped_hertz_t) :: adams_impact_t
-    real(wp) :: damping = 1.0e4_wp                 !! C, full damping [N s/m]
     real(wp) :: penetration = 1.0e-4_wp            !! d_max: penetration of full damping [m]
   contains
     procedure :: damping_coefficient => adams_impact_damping
@@ -21,15 +19,11 @@ module landyn_contact_adams_impact
 contains
 
   !> The adams_impact law from the &contact input (d_max = damping_depth > 0).
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.true.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    call check_damping(b)
-    allocate (b%law, source=adams_impact_t(name='adams_impact', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
-                                           damping=b%cfg%damping, penetration=b%cfg%damping_depth))
+    if (b%hertz_wanted(depth_needed=.true., damped=.true.)) &
+      allocate (b%law, source=adams_impact_t(name='adams_impact', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
+                                             damping=b%cfg%damping, penetration=b%cfg%damping_depth))
   end subroutine build
 
   !> STEP(delta, 0, 0, d_max, C): the cubic ramp to the full damping at d_max.

@@ -1,18 +1,15 @@
 !> Base contact law of the paper (eq. 18): K delta^n + kappa C delta_dot, kappa = min(delta/D1, 1).
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_base
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t
   implicit none
   private
 
   public :: base_contact_t, base_contact, build
 
   !> Base law of the paper (eq. 18): F_Z = K delta^n + kappa C delta_dot, kappa = min(delta/D1, 1),
-  !! F_Z = 0 for delta <= 0, clamped at 0 (never pulls).
+  !! F_Z = 0 for delta <= 0, clamped at 0 (never pulls). C = damping (C_g).
   type, extends(damped_hertz_t) :: base_contact_t
-    real(wp) :: damping = 1.0e4_wp                 !! C_g [N s/m]
     real(wp) :: damping_depth = 1.0e-4_wp          !! D1: penetration at which full damping applies [m]; 0: no ramp
   contains
     procedure :: damping_coefficient => base_damping
@@ -21,14 +18,10 @@ module landyn_contact_base
 contains
 
   !> The base law from the &contact input (damping_depth = D1; 0: no ramp, full damping at once).
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    call check_damping(b)
-    allocate (b%law, source=base_contact(b%cfg%stiffness, b%cfg%exponent, b%cfg%damping, b%cfg%damping_depth))
+    if (b%hertz_wanted(depth_needed=.false., damped=.true.)) &
+      allocate (b%law, source=base_contact(b%cfg%stiffness, b%cfg%exponent, b%cfg%damping, b%cfg%damping_depth))
   end subroutine build
 
   !> Base law with the given parameters.
@@ -38,11 +31,7 @@ contains
     real(wp), intent(in) :: damping        !! C_g [N s/m]
     real(wp), intent(in) :: damping_depth  !! D1 [m]
     type(base_contact_t) :: law            !! the law
-    law%name = 'base'
-    law%stiffness = stiffness
-    law%exponent = exponent
-    law%damping = damping
-    law%damping_depth = damping_depth
+    law = base_contact_t(name='base', stiffness=stiffness, exponent=exponent, damping=damping, damping_depth=damping_depth)
   end function base_contact
 
   !> kappa C, kappa = min(delta/D1, 1) (D1 = 0: no ramp).

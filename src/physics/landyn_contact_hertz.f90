@@ -1,9 +1,7 @@
 !> Hertz contact (Table 4): K delta^n.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_hertz
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t
   implicit none
   private
 
@@ -18,13 +16,10 @@ module landyn_contact_hertz
 contains
 
   !> The hertz law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    allocate (b%law, source=hertz_contact_t(name='hertz', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent))
+    if (b%hertz_wanted(depth_needed=.false., damped=.false.)) &
+      allocate (b%law, source=hertz_contact_t(name='hertz', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent))
   end subroutine build
 
   pure function hertz_normal_force(self, delta, delta_dot, state) result(f)

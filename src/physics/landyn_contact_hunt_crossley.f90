@@ -1,10 +1,7 @@
 !> Hertz contact + hysteresis damping (Hunt-Crossley, Table 4): K delta^n (1 + lambda delta_dot).
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_hunt_crossley
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, &
-                                check_damping_depth
-  use landyn_law_checks, only: positive, nonnegative
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t
   implicit none
   private
 
@@ -24,17 +21,13 @@ module landyn_contact_hunt_crossley
 contains
 
   !> The hunt_crossley law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
+    if (.not. b%hertz_wanted(depth_needed=.false., damped=.false.)) return
     call b%require(b%cfg%restitution >= 0.0_wp .and. b%cfg%restitution <= 1.0_wp, 'restitution', &
                    b%cfg%restitution, '', '0 <= restitution <= 1')
-    call b%require(nonnegative(b%cfg%hc_alpha), 'hc_alpha', b%cfg%hc_alpha, 's/m', 'hc_alpha >= 0 s/m')
-    call b%require(positive(b%cfg%min_impact_speed), 'min_impact_speed', b%cfg%min_impact_speed, &
-                   'm/s', 'min_impact_speed > 0 m/s')
+    call b%require_nonnegative('hc_alpha', b%cfg%hc_alpha, 's/m')
+    call b%require_positive('min_impact_speed', b%cfg%min_impact_speed, 'm/s')
     allocate (b%law, source=hunt_crossley(b%cfg%stiffness, b%cfg%exponent, b%cfg%restitution, b%cfg%hc_alpha, &
                                           b%cfg%min_impact_speed))
   end subroutine build
@@ -47,13 +40,8 @@ contains
     real(wp), intent(in) :: alpha             !! alpha of c_r = 1 - alpha v_impact, 0: constant e [s/m]
     real(wp), intent(in) :: min_impact_speed  !! floor of the impact speed, > 0 [m/s]
     type(hunt_crossley_t) :: law              !! the law
-    law%name = 'hunt_crossley'
-    law%has_history = .true.
-    law%stiffness = stiffness
-    law%exponent = exponent
-    law%restitution = restitution
-    law%alpha = alpha
-    law%min_impact_speed = min_impact_speed
+    law = hunt_crossley_t(name='hunt_crossley', has_history=.true., stiffness=stiffness, exponent=exponent, &
+                          restitution=restitution, alpha=alpha, min_impact_speed=min_impact_speed)
   end function hunt_crossley
 
   pure function hunt_crossley_normal_force(self, delta, delta_dot, state) result(f)

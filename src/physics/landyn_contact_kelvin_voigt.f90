@@ -1,17 +1,14 @@
 !> Hertz contact + linear damping (Kelvin-Voigt, Table 4): K delta^n + D delta_dot.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, damped_hertz_t, check_hertz_spring, check_damping, &
-                                check_damping_depth
+  use landyn_contact_law, only: contact_build_t, damped_hertz_t
   implicit none
   private
 
   public :: kelvin_voigt_t, build
 
-  !> Hertz contact + linear damping (Kelvin-Voigt): F = K delta^n + D delta_dot.
+  !> Hertz contact + linear damping (Kelvin-Voigt): F = K delta^n + D delta_dot (D = damping).
   type, extends(damped_hertz_t) :: kelvin_voigt_t
-    real(wp) :: damping = 1.0e4_wp                 !! D [N s/m]
   contains
     procedure :: damping_coefficient => kelvin_voigt_damping
   end type kelvin_voigt_t
@@ -19,15 +16,11 @@ module landyn_contact_kelvin_voigt
 contains
 
   !> The kelvin_voigt law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    call check_damping(b)
-    allocate (b%law, source=kelvin_voigt_t(name='kelvin_voigt', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
-                                           damping=b%cfg%damping))
+    if (b%hertz_wanted(depth_needed=.false., damped=.true.)) &
+      allocate (b%law, source=kelvin_voigt_t(name='kelvin_voigt', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent, &
+                                             damping=b%cfg%damping))
   end subroutine build
 
   !> The constant D.

@@ -1,18 +1,15 @@
 !> Hertz contact + bilinear damping (Kelvin-Voigt 2, Table 4): K delta^n + D1 delta_dot + D2 delta_dot |delta_dot|.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_kelvin_voigt_bilinear
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_spring_t, check_hertz_spring, check_damping, &
-                                check_damping_depth
-  use landyn_law_checks, only: nonnegative
+  use landyn_contact_law, only: contact_build_t, contact_state_t, hertz_damper_t
   implicit none
   private
 
   public :: kelvin_voigt_bilinear_t, build
 
-  !> Hertz contact + bilinear damping (Kelvin-Voigt 2): F = K delta^n + D1 delta_dot + D2 delta_dot |delta_dot|.
-  type, extends(hertz_spring_t) :: kelvin_voigt_bilinear_t
-    real(wp) :: damping = 1.0e4_wp                 !! D1 [N s/m]
+  !> Hertz contact + bilinear damping (Kelvin-Voigt 2): F = K delta^n + D1 delta_dot + D2 delta_dot |delta_dot|
+  !! (D1 = damping).
+  type, extends(hertz_damper_t) :: kelvin_voigt_bilinear_t
     real(wp) :: damping2 = 1.0e4_wp                !! D2 [N s^2/m^2]
   contains
     procedure :: normal_force => kelvin_voigt_bilinear_normal_force
@@ -21,15 +18,10 @@ module landyn_contact_kelvin_voigt_bilinear
 contains
 
   !> The kelvin_voigt_bilinear law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call check_hertz_spring(b)
-    call check_damping(b)
-    call b%require(nonnegative(b%cfg%damping2), 'damping2', b%cfg%damping2, 'N s^2/m^2', &
-                   'damping2 >= 0 N s^2/m^2')
+    if (.not. b%hertz_wanted(depth_needed=.false., damped=.true.)) return
+    call b%require_nonnegative('damping2', b%cfg%damping2, 'N s^2/m^2')
     allocate (b%law, source=kelvin_voigt_bilinear_t(name='kelvin_voigt_bilinear', stiffness=b%cfg%stiffness, &
                                                     exponent=b%cfg%exponent, damping=b%cfg%damping, damping2=b%cfg%damping2))
   end subroutine build

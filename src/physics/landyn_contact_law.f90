@@ -26,20 +26,21 @@
 !! history laws evaluate as on a fresh contact (no recorded impact, no deeper crater).
 !!
 !! Building from the input. Every law module has a builder `build(b)`, b a contact_build_t
-!! holding the &contact input, the message prefix and the messages so far. It appends the
-!! law-dependent checks (e.g. its damping_depth rule) and, unless b%check_only, the range checks
-!! of the parameters it uses, and allocates b%law (the registry discards it when a check failed).
-!! With b%check_only that is the input validation (check_contact_law_input), so deck validation
-!! and factory share one rule.
+!! holding the &contact input, the message prefix and the messages so far. It starts with
+!! `b%wanted(depth_needed)` (or `b%hertz_wanted(depth_needed, damped)` for a K delta^n spring),
+!! which appends the law-dependent check (the damping_depth rule) and is .false. with
+!! b%check_only; otherwise the builder appends the range checks of its parameters and allocates
+!! b%law (the registry discards it when a check failed). With b%check_only that is the input
+!! validation (check_contact_law_input), so deck validation and factory share one rule.
 module landyn_contact_law
   use landyn_kinds, only: wp
   use landyn_config, only: contact_cfg_t, name_len
-  use landyn_law_checks, only: law_build_t, positive, nonnegative
+  use landyn_law_checks, only: law_build_t, positive
   implicit none
   private
 
-  public :: contact_law_t, contact_state_t, contact_build_t, hertz_spring_t, damped_hertz_t, advance_contact_state
-  public :: check_hertz_spring, check_damping, check_damping_depth
+  public :: contact_law_t, contact_state_t, contact_build_t, hertz_spring_t, hertz_damper_t, damped_hertz_t
+  public :: advance_contact_state
 
   !> Contact history of one footpad (used by laws with has_history only).
   type :: contact_state_t
@@ -94,6 +95,9 @@ module landyn_contact_law
   type, extends(law_build_t) :: contact_build_t
     type(contact_cfg_t) :: cfg                    !! resolved &contact input
     class(contact_law_t), allocatable :: law      !! the law built (also when a check failed)
+  contains
+    procedure :: wanted => contact_wanted               !! the damping_depth rule; build the law?
+    procedure :: hertz_wanted => contact_hertz_wanted   !! the same, then the spring and damper checks
   end type contact_build_t
 
   !> Laws whose spring part is K delta^n (all but regolith).
@@ -106,10 +110,15 @@ module landyn_contact_law
     procedure :: damped_force
   end type hertz_spring_t
 
+  !> Hertz spring and a linear damping coefficient (the laws with a `damping` input).
+  type, abstract, extends(hertz_spring_t) :: hertz_damper_t
+    real(wp) :: damping = 1.0e4_wp                 !! linear damping coefficient (C, D, D1) [N s/m]
+  end type hertz_damper_t
+
   !> Hertz spring and a linear damper whose coefficient may depend on the penetration:
   !! F_Z = max(0, K delta^n + c(delta) delta_dot) inside the ground (delta > 0), 0 outside.
   !! A law of this kind only implements damping_coefficient.
-  type, abstract, extends(hertz_spring_t) :: damped_hertz_t
+  type, abstract, extends(hertz_damper_t) :: damped_hertz_t
   contains
     procedure(damping_coefficient_i), deferred :: damping_coefficient
     procedure :: normal_force => damped_hertz_normal_force
@@ -211,33 +220,35 @@ contains
 
   ! ---------------------------------------------------------------- checks of the &contact input
 
-  !> Range checks of the spring part K delta^n (stiffness, exponent).
-  subroutine check_hertz_spring(b)
-    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
+  !> The start of every builder: the law's damping_depth rule (> 0 where the law needs a ramp or
+  !! band, depth_needed; otherwise >= 0: base reads 0 as no ramp, the other laws ignore it).
+  !! .true. when the law is to be built (not b%check_only): the builder then adds the range checks
+  !! of its parameters and allocates b%law.
+  function contact_wanted(b, depth_needed) result(go)
+    class(contact_build_t), intent(inout) :: b  !! the build (input and messages)
+    logical, intent(in) :: depth_needed         !! the law needs damping_depth > 0 [-]
+    logical :: go                               !! build the law [-]
+    if (depth_needed) then
+      call b%require_positive('damping_depth', b%cfg%damping_depth, 'm')
+    else
+      call b%require_nonnegative('damping_depth', b%cfg%damping_depth, 'm')
+    end if
+    go = .not. b%check_only
+  end function contact_wanted
+
+  !> b%wanted(depth_needed) for a law with a K delta^n spring; when it is to be built, also the
+  !! range checks of the spring (stiffness, exponent) and, if damped, of the damping coefficient.
+  function contact_hertz_wanted(b, depth_needed, damped) result(go)
+    class(contact_build_t), intent(inout) :: b  !! the build (input and messages)
+    logical, intent(in) :: depth_needed         !! the law needs damping_depth > 0 [-]
+    logical, intent(in) :: damped               !! the law reads the damping coefficient [-]
+    logical :: go                               !! build the law [-]
+    go = b%wanted(depth_needed)
+    if (.not. go) return
     call b%require(positive(b%cfg%stiffness), 'stiffness', b%cfg%stiffness, 'N/m^n', &
                    'stiffness > 0')
-    call b%require(positive(b%cfg%exponent), 'exponent', b%cfg%exponent, '', 'exponent > 0')
-  end subroutine check_hertz_spring
-
-  !> Range check of the (linear) damping coefficient.
-  subroutine check_damping(b)
-    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(nonnegative(b%cfg%damping), 'damping', b%cfg%damping, 'N s/m', &
-                   'damping >= 0 N s/m')
-  end subroutine check_damping
-
-  !> The damping_depth rule of a law: > 0 where the law needs a ramp or band (needed = .true.),
-  !! otherwise >= 0 (base: 0 means no ramp; laws that do not use it ignore the value).
-  subroutine check_damping_depth(b, needed)
-    type(contact_build_t), intent(inout) :: b  !! the build (input and messages)
-    logical, intent(in) :: needed                  !! the law needs damping_depth > 0 [-]
-    if (needed) then
-      call b%require(positive(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, 'm', &
-                     'damping_depth > 0 m')
-    else
-      call b%require(nonnegative(b%cfg%damping_depth), 'damping_depth', b%cfg%damping_depth, &
-                     'm', 'damping_depth >= 0 m')
-    end if
-  end subroutine check_damping_depth
+    call b%require_positive('exponent', b%cfg%exponent, '')
+    if (damped) call b%require_nonnegative('damping', b%cfg%damping, 'N s/m')
+  end function contact_hertz_wanted
 
 end module landyn_contact_law

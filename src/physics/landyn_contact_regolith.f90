@@ -1,9 +1,7 @@
 !> Granular soil (regolith, eq. 1): Bekker-type sinkage with drag, stiff elastic unloading below the crater.
-!! Registered in landyn_contact; the interface and conventions are in landyn_contact_law.
 module landyn_contact_regolith
   use landyn_kinds, only: wp
-  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, check_damping, check_damping_depth
-  use landyn_law_checks, only: positive, nonnegative
+  use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t
   implicit none
   private
 
@@ -31,20 +29,14 @@ module landyn_contact_regolith
 contains
 
   !> The regolith law from the &contact input.
-  !! With b%check_only: only the law-dependent checks (see landyn_contact_law).
   subroutine build(b)
     type(contact_build_t), intent(inout) :: b  !! the &contact input, the messages and the law built
-    call check_damping_depth(b, needed=.false.)
-    if (b%check_only) return
-    call b%require(positive(b%cfg%soil_stiffness), 'soil_stiffness', b%cfg%soil_stiffness, '', &
-                   'soil_stiffness > 0')
-    call b%require(positive(b%cfg%soil_exponent), 'soil_exponent', b%cfg%soil_exponent, '', &
-                   'soil_exponent > 0')
-    call b%require(nonnegative(b%cfg%soil_drag), 'soil_drag', b%cfg%soil_drag, 'kg/m', &
-                   'soil_drag >= 0 kg/m')
-    call b%require(positive(b%cfg%soil_unload_stiffness), 'soil_unload_stiffness', &
-                   b%cfg%soil_unload_stiffness, 'N/m', 'soil_unload_stiffness > 0 N/m')
-    call check_damping(b)
+    if (.not. b%wanted(depth_needed=.false.)) return
+    call b%require_positive('soil_stiffness', b%cfg%soil_stiffness, '')
+    call b%require_positive('soil_exponent', b%cfg%soil_exponent, '')
+    call b%require_nonnegative('soil_drag', b%cfg%soil_drag, 'kg/m')
+    call b%require_positive('soil_unload_stiffness', b%cfg%soil_unload_stiffness, 'N/m')
+    call b%require_nonnegative('damping', b%cfg%damping, 'N s/m')
     allocate (b%law, source=regolith(b%cfg%soil_stiffness, b%cfg%soil_exponent, b%cfg%soil_drag, b%cfg%soil_unload_stiffness, &
                                      b%cfg%damping))
   end subroutine build
@@ -57,13 +49,8 @@ contains
     real(wp), intent(in) :: unload_stiffness  !! k_u, > 0 [N/m]
     real(wp), intent(in) :: damping           !! C [N s/m]
     type(regolith_t) :: law                   !! the law
-    law%name = 'regolith'
-    law%has_history = .true.
-    law%soil_stiffness = soil_stiffness
-    law%soil_exponent = soil_exponent
-    law%drag = drag
-    law%unload_stiffness = unload_stiffness
-    law%damping = damping
+    law = regolith_t(name='regolith', has_history=.true., soil_stiffness=soil_stiffness, soil_exponent=soil_exponent, &
+                     drag=drag, unload_stiffness=unload_stiffness, damping=damping)
   end function regolith
 
   ! ---------------------------------------------------------------- regolith
@@ -84,16 +71,13 @@ contains
     type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! normal force, >= 0 [N]
     real(wp) :: zm
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
+    f = 0.0_wp
+    if (delta <= 0.0_wp) return
     zm = regolith_zmax(delta, state)
     if (delta >= zm) then
       f = self%soil_stiffness*delta**self%soil_exponent + self%drag*max(delta_dot, 0.0_wp)**2
     else
-      f = max(0.0_wp, self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta) &
-                      + self%damping*delta_dot)
+      f = max(0.0_wp, unloading_line(self, delta, zm) + self%damping*delta_dot)
     end if
   end function regolith_normal_force
 
@@ -103,14 +87,18 @@ contains
     real(wp), intent(in) :: delta          !! penetration [m]
     type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
     real(wp) :: f                          !! elastic force [N]
-    real(wp) :: zm
-    if (delta <= 0.0_wp) then
-      f = 0.0_wp
-      return
-    end if
-    zm = regolith_zmax(delta, state)
-    f = max(0.0_wp, self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta))
+    f = 0.0_wp
+    if (delta > 0.0_wp) f = max(0.0_wp, unloading_line(self, delta, regolith_zmax(delta, state)))
   end function regolith_spring_force
+
+  !> The stiff elastic line below the deepest sinkage: K_b z_max^n_b - k_u (z_max - z).
+  pure function unloading_line(self, delta, zm) result(f)
+    class(regolith_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta          !! penetration, > 0 [m]
+    real(wp), intent(in) :: zm             !! deepest sinkage, >= delta [m]
+    real(wp) :: f                          !! elastic force on the line, may be < 0 [N]
+    f = self%soil_stiffness*zm**self%soil_exponent - self%unload_stiffness*(zm - delta)
+  end function unloading_line
 
   !> Energy the unloading line would give back: f_el^2 / (2 k_u).
   pure function regolith_elastic_energy(self, delta, state) result(e)

@@ -1,9 +1,7 @@
 !> Coulomb friction with stiction (ty1 static Coulomb, ty2 + viscous, ty4 stiction + dynamic Coulomb).
-!! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_coulomb
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: friction_law_t, friction_build_t, check_common, check_stick, &
-                                 check_stiction_order
+  use landyn_friction_law, only: friction_law_t, friction_build_t
   implicit none
   private
 
@@ -21,35 +19,32 @@ module landyn_friction_coulomb
 contains
 
   !> The ty1 law (static Coulomb: mu_s N, sticks up to mu_s N) from the &friction input.
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build_ty1(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
-    if (b%check_only) return
-    call check_common(b)
-    call check_stick(b)
-    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_static, 0.0_wp, b%cfg%stick_stiffness, b%cfg%stick_damping))
+    call build_coulomb(b, b%cfg%mu_static, 0.0_wp, stiction_order=.false.)
   end subroutine build_ty1
 
   !> The ty2 law (Coulomb + viscous: mu_s N + C_v |v|, sticks up to mu_s N) from the &friction input.
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build_ty2(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
-    if (b%check_only) return
-    call check_common(b)
-    call check_stick(b)
-    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_static, b%cfg%viscous, b%cfg%stick_stiffness, b%cfg%stick_damping))
+    call build_coulomb(b, b%cfg%mu_static, b%cfg%viscous, stiction_order=.false.)
   end subroutine build_ty2
 
   !> The ty4 law (slides with mu_d N, sticks up to mu_s N; mu_dynamic <= mu_static) from the &friction input.
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build_ty4(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
-    call check_stiction_order(b)
-    if (b%check_only) return
-    call check_common(b)
-    call check_stick(b)
-    allocate (b%law, source=coulomb(b%cfg%mu_static, b%cfg%mu_dynamic, 0.0_wp, b%cfg%stick_stiffness, b%cfg%stick_damping))
+    call build_coulomb(b, b%cfg%mu_dynamic, 0.0_wp, stiction_order=.true.)
   end subroutine build_ty4
+
+  !> A Coulomb law with stiction (sticks up to mu_s N) sliding with mu_slide N + C_v |v|.
+  subroutine build_coulomb(b, mu_slide, viscous, stiction_order)
+    type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
+    real(wp), intent(in) :: mu_slide            !! sliding coefficient [-]
+    real(wp), intent(in) :: viscous             !! C_v [N s/m]
+    logical, intent(in) :: stiction_order       !! the law needs mu_dynamic <= mu_static [-]
+    if (b%wanted(stiction_order=stiction_order, stick=.true.)) &
+      allocate (b%law, source=coulomb(b%cfg%mu_static, mu_slide, viscous, b%cfg%stick_stiffness, b%cfg%stick_damping))
+  end subroutine build_coulomb
 
   !> Coulomb law with stiction (name 'ty1'; the factory renames it ty2/ty4).
   pure function coulomb(mu_stick, mu_slide, viscous, stick_stiffness, stick_damping) result(law)
@@ -59,13 +54,8 @@ contains
     real(wp), intent(in) :: stick_stiffness  !! k, > 0 [N/m]
     real(wp), intent(in) :: stick_damping    !! c [N s/m]
     type(coulomb_t) :: law                   !! the law
-    law%name = 'ty1'
-    law%has_stiction = .true.
-    law%mu_stick = mu_stick
-    law%mu_slide = mu_slide
-    law%viscous = viscous
-    law%stick_stiffness = stick_stiffness
-    law%stick_damping = stick_damping
+    law = coulomb_t(name='ty1', has_stiction=.true., mu_stick=mu_stick, mu_slide=mu_slide, viscous=viscous, &
+                    stick_stiffness=stick_stiffness, stick_damping=stick_damping)
   end function coulomb
 
   ! ---------------------------------------------------------------- ty1, ty2, ty4

@@ -1,8 +1,7 @@
 !> Regularised Coulomb friction as in MSC Adams contacts (coulomb_step, alias adams_step): the base law.
-!! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_coulomb_step
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: friction_law_t, friction_build_t, adams_step, opposing_force, check_common
+  use landyn_friction_law, only: two_coefficient_t, friction_build_t, adams_step, opposing_force
   use landyn_real_text, only: fmt_real
   implicit none
   private
@@ -14,28 +13,22 @@ module landyn_friction_coulomb_step
   !!   v_s <= v < v_d:  mu = STEP(v, v_s, mu_s, v_d, mu_d)
   !!   v < v_s:         mu = STEP(v, 0, 0, v_s, mu_s)
   !! with v = |v_slip| and f_t = -mu(v) N v_slip/|v_slip|.
-  type, extends(friction_law_t) :: coulomb_step_t
-    real(wp) :: mu_static = 0.4_wp   !! static coefficient mu_s [-]
-    real(wp) :: mu_dynamic = 0.4_wp  !! dynamic coefficient mu_d [-]
+  type, extends(two_coefficient_t) :: coulomb_step_t
     real(wp) :: v_static = 0.1_wp    !! stiction transition slip speed v_s [m/s]
     real(wp) :: v_dynamic = 1.0_wp   !! friction transition slip speed v_d [m/s]
   contains
     procedure :: friction_force => coulomb_step_force
     procedure :: coefficient => coulomb_step_coefficient
-    procedure :: max_coefficient => coulomb_step_max_coefficient
   end type coulomb_step_t
 
 contains
 
   !> The coulomb_step law from the &friction input (v_dynamic > v_static).
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     call b%require(b%cfg%v_dynamic > b%cfg%v_static .and. b%cfg%v_dynamic <= huge(1.0_wp), &
                    'v_dynamic', b%cfg%v_dynamic, 'm/s', 'v_dynamic > v_static = '//fmt_real(b%cfg%v_static)//' m/s')
-    if (b%check_only) return
-    call check_common(b)
-    allocate (b%law, source=coulomb_step(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, b%cfg%v_dynamic))
+    if (b%wanted()) allocate (b%law, source=coulomb_step(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, b%cfg%v_dynamic))
   end subroutine build
 
   !> coulomb_step law with the given parameters (0 < v_static <= v_dynamic expected).
@@ -45,11 +38,8 @@ contains
     real(wp), intent(in) :: v_static    !! v_s [m/s]
     real(wp), intent(in) :: v_dynamic   !! v_d [m/s]
     type(coulomb_step_t) :: law         !! the law
-    law%name = 'coulomb_step'
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v_static = v_static
-    law%v_dynamic = v_dynamic
+    law = coulomb_step_t(name='coulomb_step', mu_static=mu_static, mu_dynamic=mu_dynamic, v_static=v_static, &
+                         v_dynamic=v_dynamic)
   end function coulomb_step
 
   ! ---------------------------------------------------------------- coulomb_step
@@ -69,12 +59,6 @@ contains
       mu = adams_step(v, 0.0_wp, 0.0_wp, self%v_static, self%mu_static)
     end if
   end function coulomb_step_coefficient
-
-  pure function coulomb_step_max_coefficient(self) result(mu)
-    class(coulomb_step_t), intent(in) :: self  !! the law
-    real(wp) :: mu                             !! max(mu_s, mu_d) [-]
-    mu = max(self%mu_static, self%mu_dynamic)
-  end function coulomb_step_max_coefficient
 
   pure function coulomb_step_force(self, v_slip, f_normal) result(f_t)
     class(coulomb_step_t), intent(in) :: self  !! the law

@@ -40,23 +40,23 @@
 !!
 !! Building from the input. Every law module has a builder `build(b)` (ty1, ty2, ty4 share one
 !! module: build_ty1, ...), b a friction_build_t holding the &friction input, the message prefix
-!! and the messages so far. It appends the law-dependent checks (v_dynamic > v_static, the
-!! stiction order mu_dynamic <= mu_static) and, unless b%check_only, the range checks of the
-!! parameters it uses, and allocates b%law (the registry discards it when a check failed). With
-!! b%check_only that is the input validation (check_friction_law_input), so deck validation and
-!! factory share one rule.
+!! and the messages so far. It appends the law-dependent checks (v_dynamic > v_static; the
+!! stiction order mu_dynamic <= mu_static through b%wanted) and, unless b%check_only (b%wanted is
+!! then .false.), the range checks of the parameters it uses (b%wanted), and allocates b%law (the
+!! registry discards it when a check failed). With b%check_only that is the input validation
+!! (check_friction_law_input), so deck validation and factory share one rule.
 module landyn_friction_law
   use landyn_kinds, only: wp
   use landyn_config, only: friction_cfg_t, name_len
   use landyn_strings, only: quote_text
   use landyn_real_text, only: fmt_real
-  use landyn_law_checks, only: law_build_t, positive, nonnegative
+  use landyn_law_checks, only: law_build_t
+  use landyn_config, only: is_set
   implicit none
   private
 
-  public :: friction_law_t, friction_state_t, friction_build_t
+  public :: friction_law_t, friction_state_t, friction_build_t, two_coefficient_t, stribeck_curve_t
   public :: adams_step, opposing_force, default_stribeck_speed
-  public :: check_common, check_stick, check_stribeck, check_stiction_order
 
   !> Stick state of one footpad (laws with has_stiction only).
   type :: friction_state_t
@@ -102,7 +102,23 @@ module landyn_friction_law
   type, extends(law_build_t) :: friction_build_t
     type(friction_cfg_t) :: cfg                    !! resolved &friction input
     class(friction_law_t), allocatable :: law      !! the law built (also when a check failed)
+  contains
+    procedure :: wanted => friction_wanted         !! the checks of a law in order; build the law?
   end type friction_build_t
+
+  !> A law with a static and a dynamic coefficient (coulomb_step, ty5, ty6), bounded by the larger.
+  type, abstract, extends(friction_law_t) :: two_coefficient_t
+    real(wp) :: mu_static = 0.4_wp   !! static coefficient mu_s = F_S / N [-]
+    real(wp) :: mu_dynamic = 0.4_wp  !! dynamic (Coulomb) coefficient mu_d = F_D / N [-]
+  contains
+    procedure :: max_coefficient => two_coefficient_max
+  end type two_coefficient_t
+
+  !> A two-coefficient law with a Stribeck curve exp(-(|v|/v_S)^delta) (ty5, ty6).
+  type, abstract, extends(two_coefficient_t) :: stribeck_curve_t
+    real(wp) :: v_stribeck = 1.0_wp  !! Stribeck speed v_S [m/s]
+    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
+  end type stribeck_curve_t
 
 contains
 
@@ -116,6 +132,13 @@ contains
       v = 1.0_wp
     end if
   end function default_stribeck_speed
+
+  !> max(mu_s, mu_d).
+  pure function two_coefficient_max(self) result(mu)
+    class(two_coefficient_t), intent(in) :: self  !! the law
+    real(wp) :: mu                                !! max(mu_s, mu_d) [-]
+    mu = max(self%mu_static, self%mu_dynamic)
+  end function two_coefficient_max
 
   ! ---------------------------------------------------------------- stick-slip (laws with stiction)
 
@@ -237,45 +260,47 @@ contains
 
   ! ---------------------------------------------------------------- checks of the &friction input
 
-  !> Range checks every law makes (mu_static, mu_dynamic, v_static).
-  subroutine check_common(b)
-    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(nonnegative(b%cfg%mu_static), 'mu_static', b%cfg%mu_static, '', &
-                   'mu_static >= 0')
-    call b%require(nonnegative(b%cfg%mu_dynamic), 'mu_dynamic', b%cfg%mu_dynamic, '', &
-                   'mu_dynamic >= 0')
-    call b%require(positive(b%cfg%v_static), 'v_static', b%cfg%v_static, 'm/s', &
-                   'v_static > 0 m/s')
-  end subroutine check_common
+  !> The checks of a law, in this order: the stiction rule mu_dynamic <= mu_static (stiction_order:
+  !! the law depends on it); then, when the law is to be built (not b%check_only; the result), the
+  !! range checks every law makes (mu_static, mu_dynamic, v_static), the Stribeck parameters (when
+  !! v_s is present: it returns the resolved Stribeck speed, stribeck_speed or the law's default),
+  !! the stick spring-damper (stick) and the viscous term (stick or viscous). The builder may add
+  !! its own checks, then allocates b%law.
+  function friction_wanted(b, stiction_order, stick, viscous, v_s) result(go)
+    class(friction_build_t), intent(inout) :: b      !! the build (input and messages)
+    logical, intent(in), optional :: stiction_order  !! the law needs mu_dynamic <= mu_static [-]
+    logical, intent(in), optional :: stick           !! the law sticks (checks k, c and C_v) [-]
+    logical, intent(in), optional :: viscous         !! the law reads C_v [-]
+    real(wp), intent(out), optional :: v_s           !! the law's Stribeck speed [m/s]
+    logical :: go                                    !! build the law [-]
+    if (flag(stiction_order)) &
+      call b%require(b%cfg%mu_dynamic <= b%cfg%mu_static, 'mu_dynamic', b%cfg%mu_dynamic, '', &
+                     'mu_dynamic <= mu_static = '//fmt_real(b%cfg%mu_static)//' for law '//quote_text(trim(b%cfg%law))// &
+                        ' (stiction)')
+    go = .not. b%check_only
+    if (.not. go) return
+    call b%require_nonnegative('mu_static', b%cfg%mu_static, '')
+    call b%require_nonnegative('mu_dynamic', b%cfg%mu_dynamic, '')
+    call b%require_positive('v_static', b%cfg%v_static, 'm/s')
+    if (present(v_s)) then
+      v_s = b%cfg%stribeck_speed
+      if (.not. is_set(v_s)) v_s = default_stribeck_speed(b%key)
+      call b%require_positive('stribeck_speed', v_s, 'm/s')
+      call b%require_positive('stribeck_exponent', b%cfg%stribeck_exponent, '')
+      call b%require_nonnegative('stribeck_decay', b%cfg%stribeck_decay, '')
+    end if
+    if (flag(stick)) then
+      call b%require_positive('stick_stiffness', b%cfg%stick_stiffness, 'N/m')
+      call b%require_nonnegative('stick_damping', b%cfg%stick_damping, 'N s/m')
+    end if
+    if (flag(stick) .or. flag(viscous)) call b%require_nonnegative('viscous', b%cfg%viscous, 'N s/m')
+  end function friction_wanted
 
-  !> Range checks of the stick spring-damper and the viscous term (laws with stiction).
-  subroutine check_stick(b)
-    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(positive(b%cfg%stick_stiffness), 'stick_stiffness', b%cfg%stick_stiffness, &
-                   'N/m', 'stick_stiffness > 0 N/m')
-    call b%require(nonnegative(b%cfg%stick_damping), 'stick_damping', b%cfg%stick_damping, &
-                   'N s/m', 'stick_damping >= 0 N s/m')
-    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
-                   'viscous >= 0 N s/m')
-  end subroutine check_stick
-
-  !> Range checks of the Stribeck parameters (ty5, ty6; v_s: the resolved Stribeck speed).
-  subroutine check_stribeck(b, v_s)
-    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    real(wp), intent(in) :: v_s                    !! Stribeck speed, stribeck_speed or the law's default [m/s]
-    call b%require(positive(v_s), 'stribeck_speed', v_s, 'm/s', 'stribeck_speed > 0 m/s')
-    call b%require(positive(b%cfg%stribeck_exponent), 'stribeck_exponent', &
-                   b%cfg%stribeck_exponent, '', 'stribeck_exponent > 0')
-    call b%require(nonnegative(b%cfg%stribeck_decay), 'stribeck_decay', b%cfg%stribeck_decay, '', &
-                   'stribeck_decay >= 0')
-  end subroutine check_stribeck
-
-  !> The stiction rule of ty4, ty5, ty6: mu_dynamic <= mu_static.
-  subroutine check_stiction_order(b)
-    type(friction_build_t), intent(inout) :: b  !! the build (input and messages)
-    call b%require(b%cfg%mu_dynamic <= b%cfg%mu_static, 'mu_dynamic', b%cfg%mu_dynamic, '', &
-                   'mu_dynamic <= mu_static = '//fmt_real(b%cfg%mu_static)//' for law '//quote_text(trim(b%cfg%law))// &
-                      ' (stiction)')
-  end subroutine check_stiction_order
+  !> An optional flag's value, .false. when absent.
+  pure logical function flag(x)
+    logical, intent(in), optional :: x  !! the flag [-]
+    flag = .false.
+    if (present(x)) flag = x
+  end function flag
 
 end module landyn_friction_law

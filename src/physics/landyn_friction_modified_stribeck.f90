@@ -1,11 +1,7 @@
 !> Stiction + modified Stribeck + Coulomb + viscous friction (ty6), regularised at zero slip.
-!! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_modified_stribeck
   use landyn_kinds, only: wp
-  use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, friction_build_t, default_stribeck_speed, &
-                                 check_common, check_stribeck, check_stiction_order
-  use landyn_law_checks, only: nonnegative
+  use landyn_friction_law, only: stribeck_curve_t, friction_build_t
   implicit none
   private
 
@@ -15,35 +11,22 @@ module landyn_friction_modified_stribeck
   !!   |v| < v0:  mu = mu_s (1 - (|v| - v0)^2 / v0^2)
   !!   |v| >= v0: mu = mu_d + (mu_s - mu_d) exp(-eps (|v|/v_S)^delta)
   !! plus C_v |v|.
-  type, extends(friction_law_t) :: modified_stribeck_t
-    real(wp) :: mu_static = 0.4_wp   !! F_S / N [-]
-    real(wp) :: mu_dynamic = 0.4_wp  !! F_C / N [-]
+  type, extends(stribeck_curve_t) :: modified_stribeck_t
     real(wp) :: v0 = 0.1_wp          !! stiction velocity v0 [m/s]
-    real(wp) :: v_stribeck = 0.1_wp  !! v_S [m/s]
     real(wp) :: eps = 0.85_wp        !! epsilon [-]
-    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
   contains
     procedure :: coefficient => modified_stribeck_coefficient
-    procedure :: max_coefficient => modified_stribeck_max_coefficient
   end type modified_stribeck_t
 
 contains
 
   !> The ty6 law from the &friction input (mu_dynamic <= mu_static).
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
-    call check_stiction_order(b)
-    if (b%check_only) return
-    v_s = b%cfg%stribeck_speed
-    if (.not. is_set(v_s)) v_s = default_stribeck_speed('ty6')
-    call check_common(b)
-    call check_stribeck(b, v_s)
-    call b%require(nonnegative(b%cfg%viscous), 'viscous', b%cfg%viscous, 'N s/m', &
-                   'viscous >= 0 N s/m')
-    allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
-                                              b%cfg%stribeck_exponent, b%cfg%viscous))
+    if (b%wanted(stiction_order=.true., viscous=.true., v_s=v_s)) &
+      allocate (b%law, source=modified_stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, b%cfg%v_static, v_s, b%cfg%stribeck_decay, &
+                                                b%cfg%stribeck_exponent, b%cfg%viscous))
   end subroutine build
 
   !> ty6 law with the given parameters.
@@ -56,14 +39,8 @@ contains
     real(wp), intent(in) :: delta        !! exponent [-]
     real(wp), intent(in) :: viscous      !! C_v [N s/m]
     type(modified_stribeck_t) :: law     !! the law
-    law%name = 'ty6'
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v0 = v0
-    law%v_stribeck = v_stribeck
-    law%eps = eps
-    law%delta = delta
-    law%viscous = viscous
+    law = modified_stribeck_t(name='ty6', mu_static=mu_static, mu_dynamic=mu_dynamic, v0=v0, v_stribeck=v_stribeck, eps=eps, &
+                              delta=delta, viscous=viscous)
   end function modified_stribeck
 
   ! ---------------------------------------------------------------- ty6
@@ -80,11 +57,5 @@ contains
       mu = self%mu_dynamic + (self%mu_static - self%mu_dynamic)*exp(-self%eps*(v/self%v_stribeck)**self%delta)
     end if
   end function modified_stribeck_coefficient
-
-  pure function modified_stribeck_max_coefficient(self) result(mu)
-    class(modified_stribeck_t), intent(in) :: self  !! the law
-    real(wp) :: mu                                  !! max(mu_s, mu_d) [-]
-    mu = max(self%mu_static, self%mu_dynamic)
-  end function modified_stribeck_max_coefficient
 
 end module landyn_friction_modified_stribeck

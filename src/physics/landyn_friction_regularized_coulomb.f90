@@ -1,8 +1,7 @@
 !> Regularised Coulomb friction (ty3): mu_s (1 - exp(-3|v|/v0))/(1 - exp(-3)) below v0 = v_static.
-!! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_regularized_coulomb
   use landyn_kinds, only: wp
-  use landyn_friction_law, only: friction_law_t, friction_build_t, opposing_force, check_common
+  use landyn_friction_law, only: friction_law_t, friction_build_t, opposing_force
   implicit none
   private
 
@@ -21,12 +20,9 @@ module landyn_friction_regularized_coulomb
 contains
 
   !> The ty3 law from the &friction input.
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
-    if (b%check_only) return
-    call check_common(b)
-    allocate (b%law, source=regularized_coulomb(b%cfg%mu_static, b%cfg%v_static))
+    if (b%wanted()) allocate (b%law, source=regularized_coulomb(b%cfg%mu_static, b%cfg%v_static))
   end subroutine build
 
   !> ty3 law with the given parameters.
@@ -34,9 +30,7 @@ contains
     real(wp), intent(in) :: mu_static    !! mu_s [-]
     real(wp), intent(in) :: v0           !! regularisation speed, > 0 [m/s]
     type(regularized_coulomb_t) :: law   !! the law
-    law%name = 'ty3'
-    law%mu_static = mu_static
-    law%v0 = v0
+    law = regularized_coulomb_t(name='ty3', mu_static=mu_static, v0=v0)
   end function regularized_coulomb
 
   ! ---------------------------------------------------------------- ty3

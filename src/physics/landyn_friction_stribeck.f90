@@ -1,10 +1,7 @@
 !> Stiction + Stribeck + Coulomb + viscous friction (ty5).
-!! Registered in landyn_friction; the interface and conventions are in landyn_friction_law.
 module landyn_friction_stribeck
   use landyn_kinds, only: wp
-  use landyn_config, only: is_set
-  use landyn_friction_law, only: friction_law_t, friction_build_t, default_stribeck_speed, &
-                                 check_common, check_stick, check_stribeck, check_stiction_order
+  use landyn_friction_law, only: stribeck_curve_t, friction_build_t
   implicit none
   private
 
@@ -12,32 +9,20 @@ module landyn_friction_stribeck
 
   !> Stiction + Stribeck + Coulomb + viscous (ty5): mu = mu_d + (mu_s - mu_d) exp(-(|v|/v_S)^delta),
   !! plus C_v |v|; sticks up to mu_s N.
-  type, extends(friction_law_t) :: stribeck_t
-    real(wp) :: mu_static = 0.4_wp   !! F_S / N [-]
-    real(wp) :: mu_dynamic = 0.4_wp  !! F_D / N (Coulomb level) [-]
-    real(wp) :: v_stribeck = 1.0_wp  !! v_S [m/s]
-    real(wp) :: delta = 0.85_wp      !! Stribeck exponent [-]
+  type, extends(stribeck_curve_t) :: stribeck_t
   contains
     procedure :: coefficient => stribeck_coefficient
-    procedure :: max_coefficient => stribeck_max_coefficient
   end type stribeck_t
 
 contains
 
   !> The ty5 law from the &friction input (mu_dynamic <= mu_static).
-  !! With b%check_only: only the law-dependent checks (see landyn_friction_law).
   subroutine build(b)
     type(friction_build_t), intent(inout) :: b  !! the &friction input, the messages and the law built
     real(wp) :: v_s
-    call check_stiction_order(b)
-    if (b%check_only) return
-    v_s = b%cfg%stribeck_speed
-    if (.not. is_set(v_s)) v_s = default_stribeck_speed('ty5')
-    call check_common(b)
-    call check_stribeck(b, v_s)
-    call check_stick(b)
-    allocate (b%law, source=stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, v_s, b%cfg%stribeck_exponent, b%cfg%viscous, &
-                                     b%cfg%stick_stiffness, b%cfg%stick_damping))
+    if (b%wanted(stiction_order=.true., stick=.true., v_s=v_s)) &
+      allocate (b%law, source=stribeck(b%cfg%mu_static, b%cfg%mu_dynamic, v_s, b%cfg%stribeck_exponent, b%cfg%viscous, &
+                                       b%cfg%stick_stiffness, b%cfg%stick_damping))
   end subroutine build
 
   !> ty5 law with the given parameters.
@@ -50,16 +35,9 @@ contains
     real(wp), intent(in) :: stick_stiffness  !! k, > 0 [N/m]
     real(wp), intent(in) :: stick_damping    !! c [N s/m]
     type(stribeck_t) :: law                  !! the law
-    law%name = 'ty5'
-    law%has_stiction = .true.
-    law%mu_stick = mu_static
-    law%mu_static = mu_static
-    law%mu_dynamic = mu_dynamic
-    law%v_stribeck = v_stribeck
-    law%delta = delta
-    law%viscous = viscous
-    law%stick_stiffness = stick_stiffness
-    law%stick_damping = stick_damping
+    law = stribeck_t(name='ty5', has_stiction=.true., mu_stick=mu_static, mu_static=mu_static, mu_dynamic=mu_dynamic, &
+                     v_stribeck=v_stribeck, delta=delta, viscous=viscous, stick_stiffness=stick_stiffness, &
+                     stick_damping=stick_damping)
   end function stribeck
 
   ! ---------------------------------------------------------------- ty5
@@ -70,11 +48,5 @@ contains
     real(wp) :: mu                         !! Coulomb + Stribeck coefficient [-]
     mu = self%mu_dynamic + (self%mu_static - self%mu_dynamic)*exp(-(abs(speed)/self%v_stribeck)**self%delta)
   end function stribeck_coefficient
-
-  pure function stribeck_max_coefficient(self) result(mu)
-    class(stribeck_t), intent(in) :: self  !! the law
-    real(wp) :: mu                         !! max(mu_s, mu_d) [-]
-    mu = max(self%mu_static, self%mu_dynamic)
-  end function stribeck_max_coefficient
 
 end module landyn_friction_stribeck

@@ -29,6 +29,8 @@ module landyn_law_checks
     procedure :: start => build_start               !! set up a build, a check or a listing
     procedure :: offered => build_offered           !! a registry line: is this law the one asked for?
     procedure :: require => build_require           !! append a message unless a requirement holds
+    procedure :: require_positive => build_require_positive        !! "var > 0 unit" unless it holds
+    procedure :: require_nonnegative => build_require_nonnegative  !! "var >= 0 unit" unless it holds
     procedure :: outcome => build_outcome           !! the factory's stat and errmsg
     procedure :: pass_on => build_pass_on           !! append the messages to another collector
   end type law_build_t
@@ -47,8 +49,7 @@ contains
     character(len=*), intent(in) :: valid          !! the requirement, e.g. 'damping >= 0 N s/m' [-]
     character(len=:), allocatable :: value
     if (ok) return
-    value = fmt_real(x)
-    if (len(unit) > 0) value = value//' '//unit
+    value = fmt_real(x)//unit_suffix(unit)
     call errors%add(pre//'&'//group//': '//var//' = '//value//' is invalid; valid: '//valid)
   end subroutine require_real
 
@@ -62,6 +63,32 @@ contains
     character(len=*), intent(in) :: valid          !! the requirement [-]
     call require_real(self%errors, ok, self%pre, trim(self%group), var, x, unit, valid)
   end subroutine build_require
+
+  !> Append "&group: var = x unit is invalid; valid: var > 0 unit" unless x is a finite number > 0.
+  subroutine build_require_positive(self, var, x, unit)
+    class(law_build_t), intent(inout) :: self      !! the build
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    call self%require(positive(x), var, x, unit, var//' > 0'//unit_suffix(unit))
+  end subroutine build_require_positive
+
+  !> Append "&group: var = x unit is invalid; valid: var >= 0 unit" unless x is a finite number >= 0.
+  subroutine build_require_nonnegative(self, var, x, unit)
+    class(law_build_t), intent(inout) :: self      !! the build
+    character(len=*), intent(in) :: var            !! variable name [-]
+    real(wp), intent(in) :: x                      !! its value [unit]
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    call self%require(nonnegative(x), var, x, unit, var//' >= 0'//unit_suffix(unit))
+  end subroutine build_require_nonnegative
+
+  !> ' '//unit, or '' without a unit.
+  pure function unit_suffix(unit) result(s)
+    character(len=*), intent(in) :: unit           !! unit text, '' for none [-]
+    character(len=:), allocatable :: s             !! the suffix [-]
+    s = ''
+    if (len(unit) > 0) s = ' '//unit
+  end function unit_suffix
 
   !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown law name
   !! first adds "&group law = 'name' is not known; known laws: names").
