@@ -128,11 +128,13 @@ module landyn_gear_base
     end subroutine footpad_iface
 
     !> Crush logic and accelerations of the committed state for a footpad force and the uniform
-    !! field, into an evaluation record; the gear is not changed (commit makes it its state).
+    !! field, into an evaluation record (every component set anew); the gear is not changed
+    !! (commit makes it its state).
     subroutine evaluate_iface(self, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
       import :: gear_base_t, gear_eval_t, wp
       class(gear_base_t), intent(in) :: self      !! gear (unchanged)
-      type(gear_eval_t), intent(out) :: ge        !! the evaluation
+      ! inout, not out: the gear type resets the record itself (once, not once per layer)
+      type(gear_eval_t), intent(inout) :: ge      !! the evaluation (previous contents replaced)
       real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
       real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame, gear frame [m/s^2]
       integer, intent(out) :: stat                !! STAT_OK on success
@@ -261,8 +263,9 @@ module landyn_gear_base
       class(gear_base_t), intent(in) :: self      !! gear
     end function rigid_iface
 
-    !> Velocity constraint rows at the current configuration (A qd = 0); the gear may keep what it
-    !! computed for its next evaluation at the same configuration.
+    !> Velocity constraint rows at the current configuration (A qd = 0; the columns beyond the
+    !! coordinate count zero); the gear may keep what it computed for its next evaluation at the
+    !! same configuration.
     pure subroutine rows_iface(self, a, nrow)
       import :: gear_base_t, wp, max_gear_rows, max_gear_q
       class(gear_base_t), intent(inout) :: self   !! gear

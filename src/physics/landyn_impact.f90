@@ -57,7 +57,7 @@ contains
     integer :: j
     call gear%momentum_maps(pm, hm)
     rot = gear%rotation()
-    c = 0.0_wp
+    if (nq < max_gear_q) c = 0.0_wp      ! the columns beyond the gear's coordinates
     do j = 1, nq
       pl = mv3(rot, pm(:, j))
       hl = mv3(rot, hm(:, j))
@@ -100,12 +100,12 @@ contains
       ! (the gear may keep the rows, e.g. Phi_q at this configuration, for its next evaluation)
       call gear(i)%g%velocity_rows(a(:, :, n_act), nrow(n_act))
       off(n_act) = nr
-      associate (n => nq(n_act))
-        call gear(i)%g%rates(qd(1:n))
-        do k = 1, nrow(n_act)
-          g(nr + k) = dot_product(a(k, 1:n, n_act), qd(1:n))
-        end do
-      end associate
+      ! (a gear with fewer coordinates than max_gear_q has zero columns and rates beyond them)
+      if (nq(n_act) < max_gear_q) qd = 0.0_wp
+      call gear(i)%g%rates(qd(1:nq(n_act)))
+      do k = 1, nrow(n_act)
+        g(nr + k) = dot_product(a(k, :, n_act), qd)
+      end do
       resid = max(resid, maxval(abs(g(nr + 1:nr + nrow(n_act)))))
       nr = nr + nrow(n_act)
     end do
@@ -124,25 +124,25 @@ contains
     rr = 0.0_wp
     do j = 1, n_act
       i = act(j)
-      associate (m => nq(j))
-        call gear(i)%g%mass_diagonal(dq(1:m))
-        minv(1:m, j) = 1.0_wp/dq(1:m)
-        c(:, :, j) = coupling_matrix(body, gear(i)%g, m)
-        do jj = 1, 6
-          do ii = 1, jj
-            s(ii, jj) = s(ii, jj) - sum(c(ii, 1:m, j)*minv(1:m, j)*c(jj, 1:m, j))
-          end do
+      ! zero inverse masses beyond the gear's coordinates: those columns take no part
+      if (nq(j) < max_gear_q) minv(:, j) = 0.0_wp
+      call gear(i)%g%mass_diagonal(dq(1:nq(j)))
+      minv(1:nq(j), j) = 1.0_wp/dq(1:nq(j))
+      c(:, :, j) = coupling_matrix(body, gear(i)%g, nq(j))
+      do jj = 1, 6
+        do ii = 1, jj
+          s(ii, jj) = s(ii, jj) - sum(c(ii, :, j)*minv(:, j)*c(jj, :, j))
         end do
-      end associate
-      associate (n => nrow(j), o => off(j), m => nq(j))
+      end do
+      associate (n => nrow(j), o => off(j))
         do k = 1, n
           do ii = 1, 6
-            u(o + k, ii) = sum(a(k, 1:m, j)*minv(1:m, j)*c(ii, 1:m, j))
+            u(o + k, ii) = sum(a(k, :, j)*minv(:, j)*c(ii, :, j))
           end do
         end do
         do jj = 1, n
           do ii = 1, jj
-            d(ii, jj, j) = sum(a(ii, 1:m, j)*minv(1:m, j)*a(jj, 1:m, j))
+            d(ii, jj, j) = sum(a(ii, :, j)*minv(:, j)*a(jj, :, j))
           end do
         end do
         call factor_spd_unblocked(n, d(:, :, j), max_gear_rows, stat, m2, 'system velocity projection (A M^-1 A^T)')
@@ -185,13 +185,13 @@ contains
     db = 0.0_wp
     do j = 1, n_act
       i = act(j)
+      dq = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), :, j)) + matmul(y, c(:, :, j))
+      dq = -minv(:, j)*dq
       associate (m => nq(j))
-        dq(1:m) = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), 1:m, j)) + matmul(y, c(:, 1:m, j))
-        dq(1:m) = -minv(1:m, j)*dq(1:m)
         call gear(i)%g%rates(qd(1:m))
         call gear(i)%g%set_rates(qd(1:m) + dq(1:m))
-        db = db + matmul(c(:, 1:m, j), dq(1:m))
       end associate
+      db = db + matmul(c(:, :, j), dq)
     end do
     body%v = body%v - db(1:3)/body%mass
     body%omega = body%omega - mv3(body%inv_inertia, db(4:6))

@@ -131,7 +131,7 @@ contains
   !> gear_evaluate.
   subroutine tripod_evaluate(self, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
     class(tripod_gear_t), intent(in) :: self        !! gear (unchanged)
-    type(gear_eval_t), intent(out) :: ge            !! the evaluation
+    type(gear_eval_t), intent(inout) :: ge          !! the evaluation (reset by gear_evaluate)
     real(wp), intent(in) :: f_foot(3)               !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)              !! uniform field, gear frame [m/s^2]
     integer, intent(out) :: stat                    !! STAT_OK on success
