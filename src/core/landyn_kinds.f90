@@ -14,4 +14,9 @@ module landyn_kinds
 
   integer, parameter, public :: msg_len = 512           !! length of error/status messages
   integer, parameter, public :: max_gears = 8           !! largest number of landing gears
+  ! Capacities of a gear type (landyn_gear_base): the per-gear records of the simulation are sized
+  ! by them; each gear reports its own counts (strut_count, coordinate_count).
+  integer, parameter, public :: max_struts = 3          !! largest number of struts per gear
+  integer, parameter, public :: max_gear_q = 9          !! largest number of generalized coordinates per gear
+  integer, parameter, public :: max_gear_rows = 9       !! largest number of velocity constraint rows per gear
 end module landyn_kinds

@@ -6,7 +6,7 @@
 !! * Local error: the step is the leapfrog, whose velocity update (the kick) is the midpoint rule
 !!   with local error h^3/24 |a''|. a'' is estimated from the second divided difference of the
 !!   accelerations at t - h_last, t and t + h: of the body (angular ones times the lander's size)
-!!   and of every gear coordinate (angles times their strut's length). That estimate is held below
+!!   and of every gear coordinate (times the gear's weight: angles times their strut's length). That estimate is held below
 !!   `tolerance` [m/s] per step. Right after an event (where a'' is undefined) and at the first
 !!   step the first-order estimate h/2 |a(t+h) - a(t)| is used instead. The accelerations at t + h
 !!   are those the next step needs anyway: one force evaluation per accepted step.
@@ -26,7 +26,6 @@ module landyn_integrator_adaptive
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len
   use landyn_config, only: landyn_input_t
-  use landyn_gear, only: n_q, idx_len
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
                              sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
   use landyn_integrator, only: integrator_t
@@ -280,7 +279,7 @@ contains
     real(wp), intent(in) :: tol             !! velocity tolerance [m/s]
     integer, intent(in) :: ng               !! number of gears [-]
     real(wp) :: err                         !! error / tolerance [-]
-    err = 0.5_wp*h*weighted_max(e1%acc - e0%acc, e1%alpha - e0%alpha, e1%qdd - e0%qdd, e0%strut_len, l_char, ng)/tol
+    err = 0.5_wp*h*weighted_max(e1%acc - e0%acc, e1%alpha - e0%alpha, e1%qdd - e0%qdd, e0%q_weight, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm
 
@@ -299,27 +298,28 @@ contains
     real(wp) :: err                         !! error / tolerance [-]
     err = h**3/24.0_wp*2.0_wp/(h + h_prev)*weighted_max((e1%acc - e0%acc)/h - (e0%acc - ep%acc)/h_prev, &
       (e1%alpha - e0%alpha)/h - (e0%alpha - ep%alpha)/h_prev, (e1%qdd - e0%qdd)/h - (e0%qdd - ep%qdd)/h_prev, &
-      e0%strut_len, l_char, ng)/tol
+      e0%q_weight, l_char, ng)/tol
     if (.not. ieee_is_finite(err)) err = huge(1.0_wp)
   end function error_norm2
 
   !> Largest weighted component of a set of body and gear accelerations (or their differences): the
-  !! body's linear ones as they are, its angular ones times l_char, each gear's strut lengths as they
-  !! are and its leg angles times their strut's length (all then in velocity units at the footpad
-  !! scale once multiplied by a time).
-  pure function weighted_max(d_acc, d_alpha, d_qdd, strut_len, l_char, ng) result(w)
+  !! body's linear ones as they are, its angular ones times l_char, each gear coordinate's times its
+  !! weight from the gear (a strut length's 1, a leg angle's its strut's length; all then in
+  !! velocity units at the footpad scale once multiplied by a time). Coordinates beyond a gear's
+  !! count have weight 0.
+  pure function weighted_max(d_acc, d_alpha, d_qdd, q_weight, l_char, ng) result(w)
     real(wp), intent(in) :: d_acc(3)           !! body linear [m/s^2]
     real(wp), intent(in) :: d_alpha(3)         !! body angular [rad/s^2]
-    real(wp), intent(in) :: d_qdd(:, :)        !! (n_q, >= ng) gear coordinates [m/s^2, rad/s^2]
-    real(wp), intent(in) :: strut_len(:, :)    !! (3, >= ng) strut lengths [m]
+    real(wp), intent(in) :: d_qdd(:, :)        !! (max_gear_q, >= ng) gear coordinates [m/s^2, rad/s^2]
+    real(wp), intent(in) :: q_weight(:, :)     !! (max_gear_q, >= ng) their weights [-, m]
     real(wp), intent(in) :: l_char             !! lever of the angular ones [m]
     integer, intent(in) :: ng                  !! number of gears [-]
     real(wp) :: w                              !! [m/s^2]
-    integer :: i, k
+    integer :: i, j
     w = max(maxval(abs(d_acc)), l_char*maxval(abs(d_alpha)))
     do i = 1, ng
-      do k = 1, 3
-        w = max(w, abs(d_qdd(idx_len(k), i)), strut_len(k, i)*maxval(abs(d_qdd(idx_len(k) + 1:idx_len(k) + 2, i))))
+      do j = 1, size(d_qdd, 1)
+        if (q_weight(j, i) > 0.0_wp) w = max(w, q_weight(j, i)*abs(d_qdd(j, i)))
       end do
     end do
   end function weighted_max

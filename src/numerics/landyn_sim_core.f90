@@ -12,15 +12,13 @@
 !!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
 !!   4. gear step with the direct constraint-violation correction.
 module landyn_sim_core
-  use landyn_kinds, only: wp, msg_len, max_gears, g_earth, rad2deg
+  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, g_earth, rad2deg
   use landyn_config, only: landyn_input_t
   use landyn_kinematics, only: cross3, mv3, mtv3
   use landyn_body, only: body_t, body_accelerations, body_step, body_point_position, body_point_velocity, &
                          body_point_acceleration, body_kinetic_energy
-  use landyn_gear, only: gear_evaluate, gear_commit, gear_prepare, gear_integrate, gear_footpad, gear_settle, &
-                         gear_law_segments, gear_rotation, gear_led_rates, gear_locks, gear_strut_lengths, &
-                         gear_strut_modes, strut_modes, n_q, n_struts
   use landyn_impact, only: system_velocity_projection
+  use landyn_gear_base, only: gear_slot_t
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
   use landyn_contact, only: advance_contact_state
@@ -42,27 +40,25 @@ module landyn_sim_core
 
 contains
 
-  !> Builds the model, allocates the result and sets the integrator's state at t = 0.
-  subroutine sim_init(inp, sim, res, stat, errmsg)
+  !> Builds the model, allocates the result and sets the integrator's state at t = 0. The gears are
+  !! the input's tripods unless `gears` gives others (setup_model).
+  subroutine sim_init(inp, sim, res, stat, errmsg, gears)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_t), intent(out) :: sim             !! simulation at t = 0
     type(sim_result_t), intent(out) :: res      !! result, allocated
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! message on failure
+    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i
     integer :: i, ng, n_cap
     stat = STAT_OK
     ng = inp%gears%n_gears
-    res%n_gears = ng
-    call setup_model(inp, sim%model, stat, errmsg)
+    call setup_model(inp, sim%model, stat, errmsg, gears)
     if (stat /= 0) return
     res%initial_position = sim%model%body%x - matmul(sim%model%body%r, sim%model%body%mc)
     sim%dt = inp%simulation%dt
     sim%nstep = nint(inp%simulation%t_end/sim%dt)
     n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
-    call allocate_result(res, ng, n_cap)
-    do i = 1, ng
-      res%gear_rot(:, :, i) = gear_rotation(sim%model%gear(i))
-    end do
+    call allocate_result(res, sim%model, n_cap)
     sim%l_char = 0.0_wp
     do i = 1, ng
       sim%l_char = max(sim%l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
@@ -140,10 +136,10 @@ contains
                                                       !! taken with the stored velocities advanced by v_lead
                                                       !! times the committed accelerations (the leapfrog's
                                                       !! velocities lag the positions by half a step); default 0 [s]
-    integer :: ng, i
+    integer :: ng, i, ns, nq
     type(body_t) :: body
-    logical :: thrusting
-    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), qd_l(n_q)
+    logical :: thrusting, locked(max_struts)
+    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
 
@@ -162,12 +158,7 @@ contains
       ! ---- Step 2: footpads and ground forces
       do i = 1, ng
         rg = model%rot(:, :, i)
-        if (present(v_lead)) then
-          qd_l = gear_led_rates(model%gear(i), v_lead)
-          call gear_footpad(model%gear(i), pos_g, vel_g, qd_l)
-        else
-          call gear_footpad(model%gear(i), pos_g, vel_g)
-        end if
+        call model%gear(i)%g%footpad(pos_g, vel_g, v_lead)
         d_l = mv3(rg, pos_g)
         ev%xd(:, i) = body_point_position(body, d_l)
         ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(rg, vel_g))
@@ -211,21 +202,23 @@ contains
         rg = model%rot(:, :, i)
         field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
-        call gear_evaluate(model%gear(i), ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
-                           sim%loads)
+        call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), sim%loads)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
           return
         end if
-        associate (ge => ev%gear(i))
-          if (any(gear_locks(model%gear(i)) .neqv. ge%locked)) ev%locks_changed = .true.
+        ns = model%n_struts(i)
+        nq = model%n_q(i)
+        associate (ge => ev%gear(i), g => model%gear(i)%g)
+          call g%locks(locked(1:ns))
+          if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
           gf(:, i) = mv3(rg, ge%f_body)
           gm(:, i) = mv3(rg, ge%m_body)
-          ev%qdd(:, i) = ge%qdd
-          ev%mode(:, i) = strut_modes(ge%locked, ge%axial, ge%dir)
+          ev%qdd(1:nq, i) = ge%qdd(1:nq)
+          call g%strut_modes(ev%mode(1:ns, i), ge)
+          call g%coordinate_weights(ev%q_weight(1:nq, i))
+          call g%law_segments(ev%segment(1:ns, i))
         end associate
-        ev%strut_len(:, i) = gear_strut_lengths(model%gear(i))
-        ev%segment(:, i) = gear_law_segments(model%gear(i))
         ev%contact(i) = ev%delta(i) > 0.0_wp
         ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
       end do
@@ -258,7 +251,7 @@ contains
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the current state
     real(wp), intent(in) :: h_sync              !! the stored velocities lag the positions by h_sync/2 [s]
     real(wp), intent(in) :: slack               !! a sample is due this close before its time [s]
-    integer :: ng, i
+    integer :: ng, i, ns
     real(wp) :: fnm, xt(3)
 
     ng = sim%model%n_gears
@@ -294,9 +287,10 @@ contains
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
       if (sim%loads) call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
       do i = 1, ng
+        ns = model%n_struts(i)
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
-        res%acc_strut_force(:, i) = max(res%acc_strut_force(:, i), abs(ev%gear(i)%axial))
-        res%peak_strut_force(:, i) = max(res%peak_strut_force(:, i), abs(ev%gear(i)%axial))
+        res%acc_strut_force(1:ns, i) = max(res%acc_strut_force(1:ns, i), abs(ev%gear(i)%axial(1:ns)))
+        res%peak_strut_force(1:ns, i) = max(res%peak_strut_force(1:ns, i), abs(ev%gear(i)%axial(1:ns)))
       end do
 
       ! ---- output sample (state at t with the forces at t)
@@ -356,12 +350,12 @@ contains
       model%body%acc = ev%acc
       model%body%alpha = ev%alpha
       do i = 1, ng
-        call gear_commit(model%gear(i), ev%gear(i))
+        call model%gear(i)%g%commit(ev%gear(i))
       end do
       call body_step(model%body, dt, kick)
       do i = 1, ng
-        call gear_integrate(model%gear(i), dt, inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
-                            inp%simulation%max_constraint_drift, stat, m2, kick=kick)
+        call model%gear(i)%g%integrate(dt, inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
+                                       inp%simulation%max_constraint_drift, stat, m2, kick=kick)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', ev%t + dt, ' s: ', trim(m2)
           return
@@ -376,8 +370,8 @@ contains
       ! ---- commit: footpad histories and stick states, strut modes
       model%footpad(1:ng) = ev%trial(1:ng)
       do i = 1, ng
-        call gear_settle(model%gear(i))
-        call gear_prepare(model%gear(i), stat, m2)
+        call model%gear(i)%g%settle()
+        call model%gear(i)%g%prepare(stat, m2)
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', ev%t + dt, ' s: ', trim(m2)
           return
@@ -403,7 +397,7 @@ contains
     type(sim_eval_t), intent(in), optional :: ev  !! evaluation of the state reached, when the integrator
                                                   !! has made it: its strut modes are counted; default
                                                   !! the committed modes of the step just taken
-    integer :: ng, i
+    integer :: ng, i, ns, m(max_struts)
     real(wp) :: tilt, speed_char
 
     stat = STAT_OK
@@ -411,11 +405,13 @@ contains
     ng = sim%model%n_gears
     associate (model => sim%model)
       do i = 1, ng
+        ns = model%n_struts(i)
         if (present(ev)) then
-          call count_mode_switches(ev%mode(:, i), sim%loop%mode(:, i), res%mode_switches(:, i))
+          m(1:ns) = ev%mode(1:ns, i)
         else
-          call count_mode_switches(gear_strut_modes(model%gear(i)), sim%loop%mode(:, i), res%mode_switches(:, i))
+          call model%gear(i)%g%strut_modes(m(1:ns))
         end if
+        call count_mode_switches(m(1:ns), sim%loop%mode(1:ns, i), res%mode_switches(1:ns, i))
       end do
       res%n_steps = sim%loop%n
 
@@ -523,9 +519,9 @@ contains
   !> Counts the changes of each strut's crush mode (strut_modes), i.e. the switches of the buffer
   !! force law.
   pure subroutine count_mode_switches(m, mode, switches)
-    integer, intent(in) :: m(n_struts)        !! modes after the step [-]
-    integer, intent(inout) :: mode(n_struts)  !! mode at the previous step, updated [-]
-    integer, intent(inout) :: switches(n_struts)  !! mode changes so far [-]
+    integer, intent(in) :: m(:)               !! modes after the step [-]
+    integer, intent(inout) :: mode(:)         !! mode at the previous step, updated [-]
+    integer, intent(inout) :: switches(:)     !! mode changes so far [-]
     where (m /= mode) switches = switches + 1
     mode = m
   end subroutine count_mode_switches

@@ -4,19 +4,19 @@
 !! audit. The time integration that works on them is landyn_sim_core.
 module landyn_sim_model
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, msg_len, max_gears
+  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q
   use landyn_config, only: landyn_input_t, is_set
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3
   use landyn_body, only: body_t, body_init, body_point_position, inertia_tensor
-  use landyn_gear, only: gear_t, gear_state_t, gear_eval_t, strut_mass_t, gear_init, gear_footpad, gear_leg_momentum, &
-                         gear_relative_momenta, gear_rotation, gear_rates, gear_set_rates, gear_set_buffer, &
-                         gear_save_state, gear_restore_state, gear_crush_history, n_q, n_struts
+  use landyn_gear_base, only: gear_eval_t, gear_slot_t, gear_snapshot_slot_t
+  use landyn_strut, only: strut_mass_t
+  use landyn_tripod_gear, only: tripod_gear_t, tripod_init
   use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
   use landyn_contact, only: contact_law_t, make_contact_law
   use landyn_friction, only: friction_law_t, make_friction_law
   use landyn_footpad_state, only: footpad_state_t
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, STAT_INPUT
   use landyn_tube_friction, only: tube_friction_t, make_tube_friction
   implicit none
   private
@@ -25,11 +25,14 @@ module landyn_sim_model
   public :: setup_model, leg_energy, sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite
   public :: max_primary_stroke
 
-  !> Everything the time loop integrates.
+  !> Everything the time loop integrates. The gears are held through gear_base_t (any gear type);
+  !! their strut and coordinate counts are cached at assembly.
   type :: model_t
-    integer :: n_gears = 0
-    type(body_t) :: body
-    type(gear_t) :: gear(max_gears)
+    integer :: n_gears = 0                      !! number of gears [-]
+    type(body_t) :: body                        !! the lander body
+    type(gear_slot_t) :: gear(max_gears)        !! the gears
+    integer :: n_struts(max_gears) = 0          !! struts of gear i (its strut_count()) [-]
+    integer :: n_q(max_gears) = 0               !! generalized coordinates of gear i (its coordinate_count()) [-]
     type(terrain_plane_t) :: plane(max_gears)
     ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
     ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
@@ -60,7 +63,7 @@ module landyn_sim_model
     real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
     real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
     logical :: touched = .false.                       !! a footpad has touched the ground [-]
-    integer :: mode(n_struts, max_gears) = 0           !! crush mode of each strut at the last step [-]
+    integer :: mode(max_struts, max_gears) = 0         !! crush mode of each strut at the last step [-]
   end type sim_loop_t
 
   !> One simulation in progress: the model (parameters and evolving state) and the integrator.
@@ -90,12 +93,13 @@ module landyn_sim_model
     real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
     type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
                                                        !! forces, lock decisions (committed by sim_advance)
-    real(wp) :: qdd(n_q, max_gears) = 0.0_wp           !! gear accelerations [m/s^2, rad/s^2]
-    real(wp) :: strut_len(n_struts, max_gears) = 0.0_wp  !! strut lengths [m]
+    real(wp) :: qdd(max_gear_q, max_gears) = 0.0_wp    !! gear accelerations [m/s^2, rad/s^2]
+    real(wp) :: q_weight(max_gear_q, max_gears) = 0.0_wp  !! error weights of the gear accelerations (the
+                                                       !! gear's coordinate_weights) [-, m]
     logical :: locks_changed = .false.                 !! a strut locked or was released [-]
     ! discrete state after the evaluation: what an event changes
-    integer :: mode(n_struts, max_gears) = 0           !! strut modes (strut_modes) [-]
-    integer :: segment(n_struts, max_gears) = 0        !! piece of each buffer law (stage, stop) [-]
+    integer :: mode(max_struts, max_gears) = 0         !! strut modes (the gears' strut_modes) [-]
+    integer :: segment(max_struts, max_gears) = 0      !! piece of each buffer law (stage, stop) [-]
     logical :: contact(max_gears) = .false.            !! footpad in contact [-]
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
     real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
@@ -105,30 +109,33 @@ module landyn_sim_model
   type :: velocities_t
     real(wp) :: v(3) = 0.0_wp                          !! mass-centre velocity, global [m/s]
     real(wp) :: omega(3) = 0.0_wp                      !! body rates, lander axes [rad/s]
-    real(wp) :: qd(n_q, max_gears) = 0.0_wp            !! gear rates [m/s, rad/s]
+    real(wp) :: qd(max_gear_q, max_gears) = 0.0_wp     !! gear rates [m/s, rad/s]
   end type velocities_t
 
   !> Everything of a simulation that evolves in time (see sim_save).
   type :: sim_snapshot_t
     type(body_t) :: body                               !! body state
-    type(gear_state_t) :: gear(max_gears)              !! gear states
+    type(gear_snapshot_slot_t) :: gear(max_gears)      !! gear states (allocated by the first sim_save)
     type(footpad_state_t) :: footpad(max_gears)        !! footpad histories and stick states
     type(sim_loop_t) :: loop                           !! integrator state
   end type sim_snapshot_t
 
 contains
 
-  !> Builds the model (body, gears, terrain, laws) and places it at t = 0.
-  subroutine setup_model(inp, model, stat, errmsg)
+  !> Builds the model (body, gears, terrain, laws) and places it at t = 0. The input describes
+  !! tripod gears (landyn_tripod_gear); gears of any other type given in `gears` take the place of
+  !! the input's (in the gear frames the input defines), before the lander is placed.
+  subroutine setup_model(inp, model, stat, errmsg, gears)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(model_t), intent(out) :: model         !! model at t = 0
-    integer, intent(out) :: stat                !! 0 on success
+    integer, intent(out) :: stat                !! 0 on success, STAT_INPUT when a gear exceeds the capacities
     character(len=*), intent(inout) :: errmsg   !! message on failure
+    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i
     type(gear_geometry_t) :: geom
-    type(strut_mass_t) :: sm(n_struts)
+    type(strut_mass_t) :: sm(3)
     type(tube_friction_t) :: tube
     real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
-    integer :: i, k
+    integer :: i
     character(len=msg_len) :: m2
 
     stat = STAT_OK
@@ -167,18 +174,35 @@ contains
         write (errmsg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
         return
       end if
-      call gear_set_buffer(model%gear(i), 1, primary_honeycomb_t(n_stages=inp%primary%n_stages, &
-        stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
-        k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping))
-      do k = 2, n_struts
-        call gear_set_buffer(model%gear(i), k, secondary_honeycomb_t( &
+      ! the input describes tripods (landyn_tripod_gear); the model holds any gear type
+      block
+        type(tripod_gear_t) :: tripod
+        call tripod_init(tripod, geom, rot, sm, primary_honeycomb_t(n_stages=inp%primary%n_stages, &
+          stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
+          k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping), secondary_honeycomb_t( &
           f_lengthening=inp%secondary%force_lengthening, f_shortening=inp%secondary%force_shortening, &
           stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
-          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping))
+          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping), stat, m2, tube)
+        if (stat /= 0) then; errmsg = m2; return; end if
+        allocate (model%gear(i)%g, source=tripod)
+      end block
+      call gear_counts(model, i)
+    end do
+    if (present(gears)) then
+      do i = 1, min(model%n_gears, size(gears))
+        if (.not. allocated(gears(i)%g)) cycle
+        deallocate (model%gear(i)%g)
+        allocate (model%gear(i)%g, source=gears(i)%g)
+        call gear_counts(model, i)
       end do
-      call gear_init(model%gear(i), geom, rot, sm, stat, m2, tube)
-      if (stat /= 0) then; errmsg = m2; return; end if
-      model%rot(:, :, i) = gear_rotation(model%gear(i))
+    end if
+    do i = 1, model%n_gears
+      if (model%n_struts(i) > max_struts .or. model%n_q(i) > max_gear_q) then
+        stat = STAT_INPUT
+        write (errmsg, '(a,i0,a,i0,a,i0,a)') 'gear ', i, ': ', model%n_struts(i), ' struts and ', model%n_q(i), &
+          ' coordinates exceed the capacities max_struts and max_gear_q (landyn_kinds)'
+        return
+      end if
     end do
 
     ! Placement: the given position, or the lowest footpad at `clearance` above its surface.
@@ -194,8 +218,8 @@ contains
     if (.not. all(is_set(inp%initial%position))) then
       dz = huge(1.0_wp)
       do i = 1, model%n_gears
-        call gear_footpad(model%gear(i), pos, vel)
-        xd = body_point_position(model%body, matmul(gear_rotation(model%gear(i)), pos))
+        call model%gear(i)%g%footpad(pos, vel)
+        xd = body_point_position(model%body, matmul(model%rot(:, :, i), pos))
         ! moving the body down by dz raises the penetration by dz * (-n_z) = dz cos(slope)
         dz = min(dz, (-inp%initial%clearance - penetration(model%plane(i), xd))/cos(inp%terrain%slope(i)))
       end do
@@ -207,9 +231,19 @@ contains
     end if
     model%body%acc = model%g_vec     ! free fall before touchdown
     do i = 1, model%n_gears
-      call gear_leg_momentum(model%gear(i), pos, model%first_moment0(:, i), dz)
+      call model%gear(i)%g%leg_momentum(pos, model%first_moment0(:, i), dz)
     end do
   end subroutine setup_model
+
+  !> Caches gear i's rotation, strut and coordinate counts in the model (after the gear is set or
+  !! replaced; before its first evaluation).
+  subroutine gear_counts(model, i)
+    type(model_t), intent(inout) :: model       !! model with gear i allocated
+    integer, intent(in) :: i                    !! gear [-]
+    model%rot(:, :, i) = model%gear(i)%g%rotation()
+    model%n_struts(i) = model%gear(i)%g%strut_count()
+    model%n_q(i) = model%gear(i)%g%coordinate_count()
+  end subroutine gear_counts
 
   !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross terms
   !! V . p_rel + w . h_rel(mass centre) of the kinetic energy (the body carries the total mass; the
@@ -223,9 +257,9 @@ contains
     real(wp) :: p_rel(3), h_rel(3), t_rel, fm(3), mleg, rg(3, 3), rot(3, 3), pl(3), hl(3), p_dummy(3)
     e = 0.0_wp
     do i = 1, model%n_gears
-      call gear_relative_momenta(model%gear(i), p_rel, h_rel, t_rel)
-      call gear_leg_momentum(model%gear(i), p_dummy, fm, mleg)
-      rot = gear_rotation(model%gear(i))
+      call model%gear(i)%g%relative_momenta(p_rel, h_rel, t_rel)
+      call model%gear(i)%g%leg_momentum(p_dummy, fm, mleg)
+      rot = model%rot(:, :, i)
       rg = matmul(model%body%r, rot)
       pl = mv3(rot, p_rel)
       hl = mv3(rot, h_rel) - cross3(model%body%mc, pl)
@@ -246,7 +280,10 @@ contains
     integer :: i
     snap%body = sim%model%body
     do i = 1, sim%model%n_gears
-      call gear_save_state(sim%model%gear(i), snap%gear(i))
+      associate (g => sim%model%gear(i)%g)
+        if (.not. allocated(snap%gear(i)%s)) call g%new_snapshot(snap%gear(i)%s)
+        call g%save_state(snap%gear(i)%s)
+      end associate
     end do
     snap%footpad = sim%model%footpad
     snap%loop = sim%loop
@@ -259,7 +296,7 @@ contains
     integer :: i
     sim%model%body = snap%body
     do i = 1, sim%model%n_gears
-      call gear_restore_state(sim%model%gear(i), snap%gear(i))
+      call sim%model%gear(i)%g%restore_state(snap%gear(i)%s)
     end do
     sim%model%footpad = snap%footpad
     sim%loop = snap%loop
@@ -274,14 +311,15 @@ contains
     real(wp), intent(in) :: lead                !! [s]
     type(sim_eval_t), intent(in) :: ev          !! evaluation with the accelerations
     type(velocities_t), intent(out) :: kept     !! the stored velocities
-    integer :: i
+    integer :: i, nq
     kept%v = model%body%v
     kept%omega = model%body%omega
     model%body%v = kept%v + lead*ev%acc
     model%body%omega = kept%omega + lead*ev%alpha
     do i = 1, model%n_gears
-      kept%qd(:, i) = gear_rates(model%gear(i))
-      call gear_set_rates(model%gear(i), kept%qd(:, i) + lead*ev%gear(i)%qdd)
+      nq = model%n_q(i)
+      call model%gear(i)%g%rates(kept%qd(1:nq, i))
+      call model%gear(i)%g%set_rates(kept%qd(1:nq, i) + lead*ev%gear(i)%qdd(1:nq))
     end do
   end subroutine lead_velocities
 
@@ -293,7 +331,7 @@ contains
     model%body%v = kept%v
     model%body%omega = kept%omega
     do i = 1, model%n_gears
-      call gear_set_rates(model%gear(i), kept%qd(:, i))
+      call model%gear(i)%g%set_rates(kept%qd(1:model%n_q(i), i))
     end do
   end subroutine restore_velocities
 
@@ -304,14 +342,14 @@ contains
          all(ieee_is_finite(body%euler)) .and. all(ieee_is_finite(body%omega))
   end function body_is_finite
 
-  !> The largest primary stroke reached by any gear (progress lines).
+  !> The largest stroke of a primary strut (each gear's first) reached by any gear (progress lines).
   pure real(wp) function max_primary_stroke(model, ng) result(s)
     type(model_t), intent(in) :: model          !! model
     integer, intent(in) :: ng                   !! number of gears [-]
-    real(wp) :: s_min(n_struts), s_max(n_struts), v(ng)
+    real(wp) :: s_min(max_struts), s_max(max_struts), v(ng)
     integer :: i
     do i = 1, ng
-      call gear_crush_history(model%gear(i), s_min, s_max)
+      call model%gear(i)%g%crush_history(s_min(1:model%n_struts(i)), s_max(1:model%n_struts(i)))
       v(i) = s_max(1)
     end do
     s = maxval(v)

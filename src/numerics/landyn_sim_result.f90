@@ -1,10 +1,9 @@
 !> The result of one run: the time series (one column per output sample), the summary, the
 !! energy audit's channels; their allocation, the recording of a sample and the summary at the end.
 module landyn_sim_result
-  use landyn_kinds, only: wp, rad2deg
+  use landyn_kinds, only: wp, rad2deg, max_struts
   use landyn_body, only: body_kinetic_energy
-  use landyn_gear, only: gear_rotation, gear_strut_lengths, gear_strokes, gear_crush_work, gear_crush_history, &
-                         gear_buffer_capacity, gear_violations, n_struts
+  use landyn_gear_base, only: strut_name_len
   use landyn_loads, only: n_load, load_peaks_t, gear_load_vector, load_peaks_init
   use landyn_terrain, only: slip_velocity
   use landyn_sim_model, only: model_t, sim_eval_t
@@ -13,9 +12,12 @@ module landyn_sim_result
 
   public :: sim_result_t, allocate_result, record, finish
 
-  !> Time series (columns = output samples) and summary of one run.
+  !> Time series (columns = output samples) and summary of one run. Per-strut arrays have as many
+  !! rows as the gear with the most struts (3 for tripods); a gear's rows beyond its own count stay 0.
   type :: sim_result_t
-    integer :: n_gears = 0
+    integer :: n_gears = 0                                 !! number of gears [-]
+    integer, allocatable :: n_struts(:)                    !! (n_gears) struts of each gear [-]
+    character(len=strut_name_len), allocatable :: strut_names(:, :)  !! (struts, n_gears) their names [-]
     integer :: n_out = 0                                   !! samples stored
     real(wp), allocatable :: t(:)                          !! [s]
     real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
@@ -94,11 +96,23 @@ module landyn_sim_result
 
 contains
 
-  !> Allocates the result arrays (once, before the time loop).
-  subroutine allocate_result(res, ng, n_cap)
+  !> Allocates the result arrays (once, before the time loop) for the gears of a model.
+  subroutine allocate_result(res, model, n_cap)
     type(sim_result_t), intent(inout) :: res  !! result
-    integer, intent(in) :: ng                 !! number of gears
+    type(model_t), intent(in) :: model        !! model with its gears
     integer, intent(in) :: n_cap              !! capacity in samples
+    integer :: ng, n_struts, i, k
+    ng = model%n_gears
+    n_struts = maxval(model%n_struts(1:ng))
+    res%n_gears = ng
+    allocate (res%n_struts(ng), res%strut_names(n_struts, ng))
+    res%n_struts = model%n_struts(1:ng)
+    res%strut_names = ''
+    do i = 1, ng
+      do k = 1, res%n_struts(i)
+        res%strut_names(k, i) = model%gear(i)%g%strut_name(k)
+      end do
+    end do
     allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
               res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
     allocate (res%strut_length(n_struts, ng, n_cap), res%stroke(n_struts, ng, n_cap), res%strut_force(n_struts, ng, n_cap), &
@@ -123,7 +137,19 @@ contains
     allocate (res%loads(n_load, ng, n_cap), res%interface_force(3, ng, n_cap), res%gear_rot(3, 3, ng))
     res%loads = 0.0_wp                 ! stays zero when the interface loads are not computed
     res%interface_force = 0.0_wp
+    res%strut_length = 0.0_wp          ! the rows beyond a gear's strut count stay zero
+    res%stroke = 0.0_wp
+    res%strut_force = 0.0_wp
+    res%strut_force_peak = 0.0_wp
+    res%crush_net = 0.0_wp
+    res%crush_pos = 0.0_wp
+    res%crush_neg = 0.0_wp
+    res%stroke_final = 0.0_wp
+    res%stroke_margin = 0.0_wp
+    res%crush_work = 0.0_wp
+    res%bottomed = 0
     call load_peaks_init(res%load_peaks, ng)
+    res%gear_rot = model%rot(:, :, 1:ng)
     res%n_out = 0
   end subroutine allocate_result
 
@@ -142,8 +168,8 @@ contains
     real(wp), intent(in) :: ke_legs               !! leg relative kinetic energy [J]
     real(wp), intent(in) :: e_el                  !! contact elastic energy [J]
     real(wp), intent(in) :: gravity               !! [m/s^2]
-    integer :: k, i
-    real(wp) :: s(n_struts), sd(n_struts), rot(3, 3), pe, ke, crush, e_in
+    integer :: k, i, ns
+    real(wp) :: s(max_struts), sd(max_struts), w(max_struts), rot(3, 3), pe, ke, crush, e_in
     if (res%n_out >= size(res%t)) return
     res%n_out = res%n_out + 1
     k = res%n_out
@@ -156,15 +182,18 @@ contains
     res%overload(:, k) = ev%ovl
     crush = 0.0_wp
     do i = 1, res%n_gears
-      associate (g => model%gear(i))
-        rot = gear_rotation(g)
-        res%strut_length(:, i, k) = gear_strut_lengths(g)
-        call gear_strokes(g, s, sd)
-        res%stroke(:, i, k) = s
-        res%strut_force(:, i, k) = ev%gear(i)%axial
+      ns = model%n_struts(i)
+      associate (g => model%gear(i)%g)
+        rot = model%rot(:, :, i)
+        call g%strut_lengths(s(1:ns))
+        res%strut_length(1:ns, i, k) = s(1:ns)
+        call g%strokes(s(1:ns), sd(1:ns))
+        res%stroke(1:ns, i, k) = s(1:ns)
+        res%strut_force(1:ns, i, k) = ev%gear(i)%axial(1:ns)
         res%loads(:, i, k) = gear_load_vector(rot, ev%gear(i))
         res%interface_force(:, i, k) = matmul(rot, ev%gear(i)%f_interface)
-        crush = crush + sum(gear_crush_work(g))
+        call g%crush_work(w(1:ns))
+        crush = crush + sum(w(1:ns))
       end associate
       res%footpad_position(:, i, k) = ev%xd(:, i)
       res%ground_force(:, i, k) = ev%fground(:, i)
@@ -202,27 +231,29 @@ contains
     type(model_t), intent(in) :: model         !! model
     type(sim_result_t), intent(inout) :: res   !! result
     real(wp), intent(in) :: t                  !! final time [s]
-    integer :: i, k
-    real(wp) :: s(n_struts), sd(n_struts), s_min(n_struts), s_max(n_struts), cap_pos, cap_neg, mpos, mneg, viol, drift
+    integer :: i, k, ns
+    real(wp) :: s(max_struts), sd(max_struts), s_min(max_struts), s_max(max_struts), cap_pos, cap_neg, mpos, mneg, viol, drift
     res%t_final = t
     do i = 1, res%n_gears
-      associate (g => model%gear(i))
-        call gear_strokes(g, s, sd)
-        call gear_crush_history(g, s_min, s_max)
-        res%stroke_final(:, i) = s
-        res%crush_pos(:, i) = s_max
-        res%crush_neg(:, i) = 0.0_wp - s_min
-        res%crush_net(:, i) = s_max + s_min
-        res%crush_work(:, i) = gear_crush_work(g)
-        do k = 1, n_struts
-          call gear_buffer_capacity(g, k, cap_pos, cap_neg)
+      ns = model%n_struts(i)
+      associate (g => model%gear(i)%g)
+        call g%strokes(s(1:ns), sd(1:ns))
+        call g%crush_history(s_min(1:ns), s_max(1:ns))
+        res%stroke_final(1:ns, i) = s(1:ns)
+        res%crush_pos(1:ns, i) = s_max(1:ns)
+        res%crush_neg(1:ns, i) = 0.0_wp - s_min(1:ns)
+        res%crush_net(1:ns, i) = s_max(1:ns) + s_min(1:ns)
+        call g%crush_work(s(1:ns))
+        res%crush_work(1:ns, i) = s(1:ns)
+        do k = 1, ns
+          call g%buffer_capacity(k, cap_pos, cap_neg)
           mpos = cap_pos - s_max(k)
           mneg = huge(1.0_wp)
           if (cap_neg > 0.0_wp) mneg = cap_neg + s_min(k)
           res%stroke_margin(k, i) = min(mpos, mneg)
           res%bottomed(k, i) = merge(1, 0, res%stroke_margin(k, i) < 0.0_wp)
         end do
-        call gear_violations(g, viol, drift)
+        call g%violations(viol, drift)
         res%max_violation = max(res%max_violation, viol)
         res%max_drift = max(res%max_drift, drift)
       end associate

@@ -3,7 +3,6 @@ module landyn_report
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
   use landyn_simulation, only: sim_result_t
-  use landyn_gear, only: n_struts, strut_names
   implicit none
   private
 
@@ -16,7 +15,7 @@ contains
     integer, intent(in) :: u                    !! formatted output unit
     type(landyn_input_t), intent(in) :: inp     !! resolved input
     type(sim_result_t), intent(in) :: res       !! results
-    integer :: i, k
+    integer :: i, k, meas
     write (u, '(a)') ''
     write (u, '(a)') 'LANDYN summary: '//trim(inp%simulation%title)
     write (u, '(a,f8.4,a,i0,a,a)') '  end time ', res%t_final, ' s after ', res%n_steps, ' steps: ', trim(res%end_reason)
@@ -27,9 +26,11 @@ contains
       ' discontinuities crossed in steps of event_resolution (local error estimate above the tolerance)'
     write (u, '(a)') ''
     write (u, '(a)') '  meas gear strut            crush [mm]  (+) [mm]  (-) [mm]  margin [mm]  peak force [kN]  switches'
+    meas = 0
     do i = 1, res%n_gears
-      do k = 1, n_struts
-        write (u, '(2x,i4,1x,i4,1x,a15,f13.1,2f10.1,f13.1,f17.1,i10,a)') n_struts*(i - 1) + k, i, strut_names(k), &
+      do k = 1, res%n_struts(i)
+        meas = meas + 1
+        write (u, '(2x,i4,1x,i4,1x,a15,f13.1,2f10.1,f13.1,f17.1,i10,a)') meas, i, res%strut_names(k, i), &
           1000.0_wp*res%crush_net(k, i), 1000.0_wp*res%crush_pos(k, i), 1000.0_wp*res%crush_neg(k, i), &
           1000.0_wp*res%stroke_margin(k, i), 1.0e-3_wp*res%peak_strut_force(k, i), res%mode_switches(k, i), &
           merge(' BOTTOMED OUT', '             ', res%bottomed(k, i) == 1)

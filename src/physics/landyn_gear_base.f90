@@ -1,33 +1,99 @@
 !> The interface every landing-gear type offers: a gear is a set of struts between the body and
 !! one footpad, with its own generalized coordinates, and what the rest of the code needs from it
-!! is listed here as deferred bindings. The tripod of the paper (landyn_gear, landyn_tripod_gear)
-!! is one extension; a gear type with another strut set is another extension of gear_base_t, not
-!! an edit of the tripod (test_gear_types defines a single telescopic strut with a footpad and
-!! drives both through this interface).
+!! is listed here as deferred bindings. The simulation (landyn_sim_model, landyn_sim_core,
+!! landyn_impact) holds its gears as gear_slot_t and calls them only through these bindings, so a
+!! gear type with another strut set is an extension of gear_base_t, not an edit: the tripod of the
+!! paper (landyn_gear, landyn_tripod_gear) is one extension, test_gear_types and test_gear_landing
+!! define a single telescopic strut with a footpad and land it.
 !!
 !! Sign conventions shared by all gear types: gear frame fixed to the body; forces in newtons in
 !! the gear frame; strokes in each strut's Table-3 sense; axial forces compression positive.
+!! Per-strut arrays have strut_count() entries, per-coordinate arrays coordinate_count(), at most
+!! max_struts and max_gear_q (landyn_kinds), the capacities the simulation's records are sized by.
 module landyn_gear_base
-  use landyn_kinds, only: wp
+  use landyn_kinds, only: wp, max_struts, max_gear_q, max_gear_rows
   implicit none
   private
 
-  public :: gear_base_t
+  public :: gear_base_t, gear_eval_t, gear_snapshot_t, gear_slot_t, gear_snapshot_slot_t, strut_name_len
+
+  integer, parameter :: strut_name_len = 15     !! length of a strut's name [-]
+
+  !> What one evaluation of a gear decides and computes (evaluate) from its committed state,
+  !! without changing it; commit makes it the gear's state. The same record for every gear type:
+  !! entries beyond the gear's strut and coordinate counts are unused.
+  type :: gear_eval_t
+    real(wp) :: qdd(max_gear_q) = 0.0_wp          !! generalized accelerations [m/s^2, rad/s^2]
+    real(wp) :: axial(max_struts) = 0.0_wp        !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    logical :: locked(max_struts) = .true.        !! strut locked [-]
+    integer :: dir(max_struts) = 0                !! sliding direction [-]
+    real(wp) :: s_lock(max_struts) = 0.0_wp       !! stroke held by a locked strut [m]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    logical :: rigid = .false.                    !! the gear stays rigid [-]
+    ! interface loads, gear frame: column k (k <= strut count) is the force the upper joint of
+    ! strut k puts on the body, column max_struts + 1 the force the footpad puts on its strut
+    real(wp) :: f_joint(3, max_struts + 1) = 0.0_wp  !! joint forces [N]
+    real(wp) :: m_joint(3, max_struts) = 0.0_wp   !! moments of the upper joints on the body (about the
+                                                  !! strut's Hooke-joint axis: its spin is constrained) [N m]
+    real(wp) :: f_interface(3) = 0.0_wp           !! the gear's total force on the body from the
+                                                  !! leg's momentum balance (= sum of the upper joints') [N]
+  end type gear_eval_t
 
   !> A landing gear: struts, footpad and their state.
   type, abstract :: gear_base_t
   contains
     procedure(count_iface), deferred :: strut_count
     procedure(count_iface), deferred :: coordinate_count
+    procedure(name_iface), deferred :: strut_name
+    procedure(rotation_iface), deferred :: rotation
     procedure(footpad_iface), deferred :: footpad
+    procedure(evaluate_iface), deferred :: evaluate
+    procedure(commit_iface), deferred :: commit
     procedure(dynamics_iface), deferred :: dynamics
     procedure(integrate_iface), deferred :: integrate
+    procedure(settle_iface), deferred :: settle
+    procedure(prepare_iface), deferred :: prepare
     procedure(per_strut_pair_iface), deferred :: strokes
-    procedure(per_strut_iface), deferred :: axial_forces
-    procedure(per_strut_iface), deferred :: crush_work
+    procedure(per_strut_pair_iface), deferred :: crush_history
+    procedure(vector_iface), deferred :: axial_forces
+    procedure(vector_iface), deferred :: crush_work
+    procedure(vector_iface), deferred :: strut_lengths
+    procedure(int_per_strut_iface), deferred :: law_segments
+    procedure(locks_iface), deferred :: locks
+    procedure(modes_iface), deferred :: strut_modes
+    procedure(capacity_iface), deferred :: buffer_capacity
+    procedure(violations_iface), deferred :: violations
+    procedure(vector_iface), deferred :: coordinate_weights
+    procedure(vector_iface), deferred :: rates
+    procedure(set_vector_iface), deferred :: set_rates
+    procedure(rigid_iface), deferred :: is_rigid
+    procedure(rows_iface), deferred :: velocity_rows
+    procedure(vector_iface), deferred :: mass_diagonal
+    procedure(maps_iface), deferred :: momentum_maps
+    procedure(momenta_iface), deferred :: relative_momenta
+    procedure(leg_momentum_iface), deferred :: leg_momentum
     procedure(body_load_iface), deferred :: body_load
     procedure(energy_iface), deferred :: relative_kinetic_energy
+    procedure(new_snapshot_iface), deferred :: new_snapshot
+    procedure(save_iface), deferred :: save_state
+    procedure(restore_iface), deferred :: restore_state
   end type gear_base_t
+
+  !> The evolving state of a gear (save_state, restore_state): each gear type extends it.
+  type, abstract :: gear_snapshot_t
+  end type gear_snapshot_t
+
+  !> Holder of one gear of any type (the simulation's gears).
+  type :: gear_slot_t
+    class(gear_base_t), allocatable :: g          !! the gear
+  end type gear_slot_t
+
+  !> Holder of one gear's snapshot (allocated once by the gear's new_snapshot).
+  type :: gear_snapshot_slot_t
+    class(gear_snapshot_t), allocatable :: s      !! the snapshot
+  end type gear_snapshot_slot_t
 
   abstract interface
     !> A count of the gear type (struts, generalized coordinates).
@@ -36,13 +102,54 @@ module landyn_gear_base
       class(gear_base_t), intent(in) :: self      !! gear
     end function count_iface
 
+    !> The name of strut k (reports).
+    pure function name_iface(self, k) result(name)
+      import :: gear_base_t, strut_name_len
+      class(gear_base_t), intent(in) :: self      !! gear
+      integer, intent(in) :: k                    !! strut [-]
+      character(len=strut_name_len) :: name       !! its name [-]
+    end function name_iface
+
+    !> Gear frame -> lander frame rotation.
+    pure function rotation_iface(self) result(rot)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear
+      real(wp) :: rot(3, 3)                       !! [-]
+    end function rotation_iface
+
     !> Footpad joint position and its velocity relative to the body, gear frame.
-    pure subroutine footpad_iface(self, pos, vel)
+    pure subroutine footpad_iface(self, pos, vel, lead)
       import :: gear_base_t, wp
       class(gear_base_t), intent(in) :: self      !! gear
       real(wp), intent(out) :: pos(3)             !! position [m]
       real(wp), intent(out) :: vel(3)             !! velocity [m/s]
+      real(wp), intent(in), optional :: lead      !! the velocity with the stored rates led by lead times the
+                                                  !! committed accelerations; default 0 [s]
     end subroutine footpad_iface
+
+    !> Crush logic and accelerations of the committed state for a footpad force and the uniform
+    !! field, into an evaluation record (every component set anew); the gear is not changed
+    !! (commit makes it its state).
+    subroutine evaluate_iface(self, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
+      import :: gear_base_t, gear_eval_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+      ! inout, not out: the gear type resets the record itself (once, not once per layer)
+      type(gear_eval_t), intent(inout) :: ge      !! the evaluation (previous contents replaced)
+      real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
+      real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame, gear frame [m/s^2]
+      integer, intent(out) :: stat                !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+      real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
+      real(wp), intent(in), optional :: alpha(3)  !! body angular acceleration, gear axes [rad/s^2]
+      logical, intent(in), optional :: loads      !! compute the interface loads; default .true. [-]
+    end subroutine evaluate_iface
+
+    !> Makes an evaluation the gear's committed state (accelerations, forces, lock decisions).
+    pure subroutine commit_iface(self, ge)
+      import :: gear_base_t, gear_eval_t
+      class(gear_base_t), intent(inout) :: self   !! gear
+      type(gear_eval_t), intent(in) :: ge         !! its evaluation
+    end subroutine commit_iface
 
     !> Crush logic and accelerations for a footpad force and the uniform field, committed as the
     !! gear's state (buffer forces, modes, the load on the body).
@@ -56,9 +163,10 @@ module landyn_gear_base
       real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
     end subroutine dynamics_iface
 
-    !> One semi-implicit Euler step of the gear alone (body held fixed) with its constraint
-    !! correction, crush history and absorbed work.
-    subroutine integrate_iface(self, dt, tol, max_iter, max_drift, stat, errmsg)
+    !> One semi-implicit Euler step of the gear with its constraint correction, crush history and
+    !! absorbed work. The velocity projection is the system's (landyn_impact); alone = .true.
+    !! projects the gear's velocities in its own metric instead (body held fixed).
+    subroutine integrate_iface(self, dt, tol, max_iter, max_drift, stat, errmsg, kick, alone)
       import :: gear_base_t, wp
       class(gear_base_t), intent(inout) :: self   !! gear
       real(wp), intent(in) :: dt                  !! time step [s]
@@ -67,22 +175,130 @@ module landyn_gear_base
       real(wp), intent(in) :: max_drift           !! violation before correction that means dt is too large [m]
       integer, intent(out) :: stat                !! STAT_OK on success
       character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+      real(wp), intent(in), optional :: kick      !! velocity update length (variable-step leapfrog); default dt [s]
+      logical, intent(in), optional :: alone      !! project the gear's own velocities; default .false. [-]
     end subroutine integrate_iface
 
-    !> Two per-strut quantities (size strut_count()).
+    !> After the system's velocity projection: a gear with all struts locked becomes rigid.
+    pure subroutine settle_iface(self)
+      import :: gear_base_t
+      class(gear_base_t), intent(inout) :: self   !! gear
+    end subroutine settle_iface
+
+    !> Prepares what the next evaluation of a gear that has become rigid needs (caches).
+    subroutine prepare_iface(self, stat, errmsg)
+      import :: gear_base_t
+      class(gear_base_t), intent(inout) :: self   !! gear
+      integer, intent(out) :: stat                !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    end subroutine prepare_iface
+
+    !> Two per-strut quantities (strokes and their rates, or the crush history: most negative and
+    !! most positive stroke reached).
     pure subroutine per_strut_pair_iface(self, s, sd)
       import :: gear_base_t, wp
       class(gear_base_t), intent(in) :: self      !! gear
-      real(wp), intent(out) :: s(:)               !! strokes [m]
-      real(wp), intent(out) :: sd(:)              !! stroke rates [m/s]
+      real(wp), intent(out) :: s(:)               !! strokes, or most negative strokes [m]
+      real(wp), intent(out) :: sd(:)              !! stroke rates [m/s], or most positive strokes [m]
     end subroutine per_strut_pair_iface
 
-    !> One per-strut quantity (size strut_count()).
-    pure subroutine per_strut_iface(self, v)
+    !> One per-strut or per-coordinate quantity of the committed state.
+    pure subroutine vector_iface(self, v)
       import :: gear_base_t, wp
       class(gear_base_t), intent(in) :: self      !! gear
-      real(wp), intent(out) :: v(:)               !! per strut [N or J]
-    end subroutine per_strut_iface
+      real(wp), intent(out) :: v(:)               !! per strut or per coordinate [N, J, m, kg, m/s, rad/s or -]
+    end subroutine vector_iface
+
+    !> Replaces a per-coordinate quantity (the generalized velocities).
+    pure subroutine set_vector_iface(self, v)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(inout) :: self   !! gear
+      real(wp), intent(in) :: v(:)                !! per coordinate [m/s, rad/s]
+    end subroutine set_vector_iface
+
+    !> One integer per strut (the piece of each buffer law at the current strokes).
+    pure subroutine int_per_strut_iface(self, v)
+      import :: gear_base_t
+      class(gear_base_t), intent(in) :: self      !! gear
+      integer, intent(out) :: v(:)                !! per strut [-]
+    end subroutine int_per_strut_iface
+
+    !> Which struts are locked (committed state).
+    pure subroutine locks_iface(self, locked)
+      import :: gear_base_t
+      class(gear_base_t), intent(in) :: self      !! gear
+      logical, intent(out) :: locked(:)           !! per strut [-]
+    end subroutine locks_iface
+
+    !> Crush mode of each strut (0 locked, +1/-1 crushing toward +s/-s, 2 free) of an evaluation,
+    !! or of the committed state.
+    pure subroutine modes_iface(self, m, ge)
+      import :: gear_base_t, gear_eval_t
+      class(gear_base_t), intent(in) :: self      !! gear
+      integer, intent(out) :: m(:)                !! per strut [-]
+      type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
+    end subroutine modes_iface
+
+    !> Stroke capacity of strut k's buffer in each direction.
+    subroutine capacity_iface(self, k, cap_pos, cap_neg)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear
+      integer, intent(in) :: k                    !! strut [-]
+      real(wp), intent(out) :: cap_pos            !! toward +s [m]
+      real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
+    end subroutine capacity_iface
+
+    !> Largest constraint violation after and before the correction so far.
+    pure subroutine violations_iface(self, violation, drift)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear
+      real(wp), intent(out) :: violation          !! after correction [m]
+      real(wp), intent(out) :: drift              !! before correction [m]
+    end subroutine violations_iface
+
+    !> The gear is rigid: all struts locked and at rest relative to the body (no part in the
+    !! velocity projection).
+    pure logical function rigid_iface(self)
+      import :: gear_base_t
+      class(gear_base_t), intent(in) :: self      !! gear
+    end function rigid_iface
+
+    !> Velocity constraint rows at the current configuration (A qd = 0; the columns beyond the
+    !! coordinate count zero); the gear may keep what it computed for its next evaluation at the
+    !! same configuration.
+    pure subroutine rows_iface(self, a, nrow)
+      import :: gear_base_t, wp, max_gear_rows, max_gear_q
+      class(gear_base_t), intent(inout) :: self   !! gear
+      real(wp), intent(out) :: a(max_gear_rows, max_gear_q)  !! rows (nrow x coordinate_count()) [m/rad, -]
+      integer, intent(out) :: nrow                !! number of rows [-]
+    end subroutine rows_iface
+
+    !> Maps from the generalized velocities to the legs' relative linear momentum and their
+    !! relative angular momentum about the lander origin, gear axes.
+    pure subroutine maps_iface(self, pm, hm)
+      import :: gear_base_t, wp, max_gear_q
+      class(gear_base_t), intent(in) :: self      !! gear
+      real(wp), intent(out) :: pm(3, max_gear_q)  !! d p_rel / d qd [kg, kg m]
+      real(wp), intent(out) :: hm(3, max_gear_q)  !! d h_rel / d qd [kg m, kg m^2]
+    end subroutine maps_iface
+
+    !> The legs' relative momenta and relative kinetic energy, gear frame.
+    pure subroutine momenta_iface(self, p_rel, h_rel, t_rel)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear
+      real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
+      real(wp), intent(out) :: h_rel(3)           !! relative angular momentum about O_L [kg m^2/s]
+      real(wp), intent(out) :: t_rel              !! relative kinetic energy [J]
+    end subroutine momenta_iface
+
+    !> The legs' relative linear momentum, first moment of mass and mass, gear frame.
+    pure subroutine leg_momentum_iface(self, p_rel, first_moment, leg_mass)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(in) :: self      !! gear
+      real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
+      real(wp), intent(out) :: first_moment(3)    !! sum m x [kg m]
+      real(wp), intent(out) :: leg_mass           !! sum m [kg]
+    end subroutine leg_momentum_iface
 
     !> The gear's load on the body in the model (the ground force minus the rate of the legs'
     !! relative momentum) and its moment about the lander origin, gear frame.
@@ -98,6 +314,27 @@ module landyn_gear_base
       import :: gear_base_t, wp
       class(gear_base_t), intent(in) :: self      !! gear
     end function energy_iface
+
+    !> Allocates a snapshot record of the gear's type (once, before the time loop).
+    subroutine new_snapshot_iface(self, snap)
+      import :: gear_base_t, gear_snapshot_t
+      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_snapshot_t), allocatable, intent(inout) :: snap  !! the record
+    end subroutine new_snapshot_iface
+
+    !> Copies the gear's evolving state out (restoring it repeats the gear bit for bit).
+    pure subroutine save_iface(self, snap)
+      import :: gear_base_t, gear_snapshot_t
+      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_snapshot_t), intent(inout) :: snap  !! record from new_snapshot (contents replaced)
+    end subroutine save_iface
+
+    !> Puts a state from save_state back.
+    pure subroutine restore_iface(self, snap)
+      import :: gear_base_t, gear_snapshot_t
+      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_snapshot_t), intent(in) :: snap  !! saved state
+    end subroutine restore_iface
   end interface
 
 end module landyn_gear_base

@@ -26,6 +26,7 @@
 module landyn_gear_model
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
+  use landyn_gear_base, only: gear_eval_t   ! the evaluation record of every gear type
   use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
@@ -116,27 +117,6 @@ module landyn_gear_model
     real(wp) :: kin_q(n_q) = 0.0_wp               !! coordinates of the cached kinematics [m, rad]
     type(strut_kin_t) :: kin(n_struts)            !! cached strut kinematics at kin_q
   end type gear_state_t
-
-  !> What one evaluation of a gear decides and computes (gear_evaluate) from its committed state,
-  !! without changing it; gear_commit makes it the gear's state.
-  type :: gear_eval_t
-    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
-    real(wp) :: axial(n_struts) = 0.0_wp                 !! axial buffer force [N]
-    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
-    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
-    logical :: locked(n_struts) = .true.                 !! strut locked [-]
-    integer :: dir(n_struts) = 0                         !! sliding direction [-]
-    real(wp) :: s_lock(n_struts) = 0.0_wp                !! stroke held by a locked strut [m]
-    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
-    logical :: rigid = .false.                    !! the gear stays rigid [-]
-    ! interface loads (gear_joint_loads), gear frame: columns a, b, c are the forces the upper
-    ! joints put on the body, column 4 the force the footpad puts on the primary at d
-    real(wp) :: f_joint(3, 4) = 0.0_wp            !! joint forces [N]
-    real(wp) :: m_joint(3, 3) = 0.0_wp            !! moments of a, b, c on the body (about the strut's
-                                                  !! Hooke-joint axis: its spin is constrained) [N m]
-    real(wp) :: f_interface(3) = 0.0_wp           !! the gear's total force on the body from the
-                                                  !! leg's momentum balance (= sum of columns a-c) [N]
-  end type gear_eval_t
 
   !> One landing gear: geometry, masses, buffers and state.
   type :: gear_t

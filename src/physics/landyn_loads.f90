@@ -6,18 +6,20 @@
 !!
 !! A gear's load vector (n_load = 21 values, lander axes): forces of a, b, c on the body [N]
 !! (1:9), force of the footpad on the primary at d [N] (10:12), moments of a, b, c on the body [N m]
-!! (13:21). The gear-level physics is landyn_gear's (gear_eval_t%f_joint, m_joint).
+!! (13:21). The gear-level physics is the gear type's (gear_eval_t%f_joint, m_joint): for any gear
+!! type a, b, c are the upper joints of its struts 1 to max_struts (zero for a gear with fewer) and
+!! d its footpad.
 module landyn_loads
-  use landyn_kinds, only: wp
-  use landyn_gear, only: gear_eval_t
+  use landyn_kinds, only: wp, max_struts
+  use landyn_gear_base, only: gear_eval_t
   implicit none
   private
 
   public :: n_load, n_joint, n_quantity, load_peaks_t, gear_load_vector, load_peaks_init, load_peaks_update
   public :: joint_names, quantity_names, load_names
 
-  integer, parameter :: n_load = 21        !! values of a gear's load vector [-]
-  integer, parameter :: n_joint = 4        !! joints of the peak table: a, b, c, d [-]
+  integer, parameter :: n_joint = max_struts + 1  !! joints of the peak table: a, b, c, d [-]
+  integer, parameter :: n_load = 3*n_joint + 3*max_struts  !! values of a gear's load vector (21) [-]
   integer, parameter :: n_quantity = 4     !! quantities of the peak table: x, y, z, magnitude [-]
   character(len=1), parameter :: joint_names(n_joint) = ['a', 'b', 'c', 'd']
   character(len=9), parameter :: quantity_names(n_quantity) = [character(len=9) :: 'x', 'y', 'z', 'magnitude']
@@ -44,11 +46,11 @@ contains
     type(gear_eval_t), intent(in) :: ge        !! the gear's evaluation
     real(wp) :: v(n_load)                      !! [N, N m]
     integer :: j
-    do j = 1, 4
+    do j = 1, n_joint
       v(3*j - 2:3*j) = matmul(rot, ge%f_joint(:, j))
     end do
-    do j = 1, 3
-      v(12 + 3*j - 2:12 + 3*j) = matmul(rot, ge%m_joint(:, j))
+    do j = 1, max_struts
+      v(3*n_joint + 3*j - 2:3*n_joint + 3*j) = matmul(rot, ge%m_joint(:, j))
     end do
   end function gear_load_vector
 
