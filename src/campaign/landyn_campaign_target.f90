@@ -220,6 +220,7 @@ contains
     end if
   end subroutine next_part
 
+  !> Copy of t with every character a replaced by b (builds the label of a subscript range).
   pure function replace_char(t, a, b) result(s)
     character(len=*), intent(in) :: t     !! text [-]
     character(len=1), intent(in) :: a, b  !! replace a by b [-]

@@ -23,29 +23,33 @@ module landyn_lapack
     end subroutine cholesky_iface
   end interface
 
+  !> LAPACK dpotrf (blocked) and dpotf2 (unblocked) Cholesky factorisations A = U^T U.
   procedure(cholesky_iface) :: dpotrf, dpotf2
 
   interface
+    !> LAPACK dgesv: solves A X = B for a general A by LU factorisation with partial pivoting.
     subroutine dgesv(n, nrhs, a, lda, ipiv, b, ldb, info)
       import :: wp
-      integer, intent(in) :: n, nrhs, lda, ldb
-      real(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      integer, intent(out) :: ipiv(*)
-      integer, intent(out) :: info
+      integer, intent(in) :: n, nrhs, lda, ldb         !! order, right-hand sides, leading dimensions [-]
+      real(wp), intent(inout) :: a(lda, *), b(ldb, *)  !! matrix in, LU factors out; right-hand sides in, solutions out [any]
+      integer, intent(out) :: ipiv(*)                  !! pivot indices (row i was swapped with ipiv(i)) [-]
+      integer, intent(out) :: info                     !! LAPACK INFO: 0 ok, < 0 illegal argument, > 0 U(i,i) zero [-]
     end subroutine dgesv
+    !> BLAS dtrsv: solves a triangular system A x = b or A^T x = b in place.
     subroutine dtrsv(uplo, trans, diag, n, a, lda, x, incx)
       import :: wp
-      character(len=1), intent(in) :: uplo, trans, diag
-      integer, intent(in) :: n, lda, incx
-      real(wp), intent(in) :: a(lda, *)
-      real(wp), intent(inout) :: x(*)
+      character(len=1), intent(in) :: uplo, trans, diag  !! 'U'|'L' triangle, 'N'|'T' transpose, 'N'|'U' unit diagonal [-]
+      integer, intent(in) :: n, lda, incx                !! order, leading dimension, stride of x [-]
+      real(wp), intent(in) :: a(lda, *)                  !! triangular matrix [any]
+      real(wp), intent(inout) :: x(*)                    !! right-hand side in, solution out [any]
     end subroutine dtrsv
+    !> LAPACK dposv: solves A X = B for a symmetric positive-definite A by Cholesky factorisation.
     subroutine dposv(uplo, n, nrhs, a, lda, b, ldb, info)
       import :: wp
-      character(len=1), intent(in) :: uplo
-      integer, intent(in) :: n, nrhs, lda, ldb
-      real(wp), intent(inout) :: a(lda, *), b(ldb, *)
-      integer, intent(out) :: info
+      character(len=1), intent(in) :: uplo              !! triangle of A that is used, 'U' or 'L' [-]
+      integer, intent(in) :: n, nrhs, lda, ldb          !! order, right-hand sides, leading dimensions [-]
+      real(wp), intent(inout) :: a(lda, *), b(ldb, *)   !! matrix in, Cholesky factor out; right-hand sides in, solutions out [any]
+      integer, intent(out) :: info                      !! LAPACK INFO: 0 ok, < 0 illegal argument, > 0 not positive definite [-]
     end subroutine dposv
   end interface
 

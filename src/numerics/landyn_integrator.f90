@@ -18,6 +18,8 @@ module landyn_integrator
   end type integrator_t
 
   abstract interface
+    !> Prepares the integrator once after sim_init (step settings from the input; the adaptive one also
+    !! evaluates and records t = 0, the fixed one leaves that to its first step).
     subroutine start_iface(self, sim, inp, res, stat, errmsg)
       import :: integrator_t, sim_t, landyn_input_t, sim_result_t
       class(integrator_t), intent(inout) :: self   !! integrator
@@ -28,6 +30,7 @@ module landyn_integrator
       character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
     end subroutine start_iface
 
+    !> Advances the simulation by one accepted step, records output, and says when the run has ended.
     subroutine step_iface(self, sim, inp, res, done, stat, errmsg, progress_unit)
       import :: integrator_t, sim_t, landyn_input_t, sim_result_t
       class(integrator_t), intent(inout) :: self   !! integrator

@@ -16,8 +16,8 @@ module landyn_integrator_fixed
     real(wp) :: dt = 0.0_wp    !! the step [s]
     type(sim_eval_t) :: ev     !! work record of each step's evaluation
   contains
-    procedure :: start => fixed_start
-    procedure :: step => fixed_step
+    procedure :: start => fixed_start   !! checks the simulation was set up with &simulation dt; t = 0 is left to the first step
+    procedure :: step => fixed_step     !! one sim_step of dt (evaluate, advance, commit)
   end type fixed_integrator_t
 
 contains

@@ -30,9 +30,9 @@ module landyn_buffer
   !> Interface of every buffer law.
   type, abstract :: buffer_law_t
   contains
-    procedure(resistance_iface), deferred :: resistance
-    procedure(capacity_iface), deferred :: capacity
-    procedure(segment_iface), deferred :: segment
+    procedure(resistance_iface), deferred :: resistance  !! force bounds against motion toward +s and -s [N]
+    procedure(capacity_iface), deferred :: capacity      !! stroke capacity toward +s and -s [m]
+    procedure(segment_iface), deferred :: segment        !! piece of the force-stroke curve at s (for event location) [-]
   end type buffer_law_t
 
   abstract interface
@@ -77,9 +77,9 @@ module landyn_buffer
     real(wp) :: stage_force(5) = 0.0_wp      !! crush force of each stage [N]
     real(wp) :: stage_end(5) = 0.0_wp        !! stroke at which each stage ends [m]
   contains
-    procedure :: resistance => primary_resistance
-    procedure :: capacity => primary_capacity
-    procedure :: segment => primary_segment
+    procedure :: resistance => primary_resistance  !! stage crush force in shortening, rigid stop in extension [N]
+    procedure :: capacity => primary_capacity      !! end of the last stage in shortening, 0 in extension [m]
+    procedure :: segment => primary_segment        !! stage number, n_stages + 1 on the stop [-]
   end type primary_honeycomb_t
 
   !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
@@ -89,13 +89,15 @@ module landyn_buffer
     real(wp) :: stroke_lengthening = 0.27_wp !! stroke available toward +s [m]
     real(wp) :: stroke_shortening = 0.27_wp  !! stroke available toward -s [m]
   contains
-    procedure :: resistance => secondary_resistance
-    procedure :: capacity => secondary_capacity
-    procedure :: segment => secondary_segment
+    procedure :: resistance => secondary_resistance  !! crush force in lengthening and in shortening [N]
+    procedure :: capacity => secondary_capacity      !! stroke_lengthening and stroke_shortening [m]
+    procedure :: segment => secondary_segment        !! 0 within the stroke, +1 / -1 on a stop [-]
   end type secondary_honeycomb_t
 
 contains
 
+  !> Primary bounds (eq. 21): the current stage's crush force against shortening at the crush front
+  !! (plus the stop beyond the last stage), 0 inside the crushed range; rigid against extension at s <= 0.
   pure subroutine primary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
     class(primary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (shortening positive) [m]
@@ -137,6 +139,7 @@ contains
     f = f_last + k_stop*over + c_stop*max(rate, 0.0_wp)
   end function with_stop
 
+  !> Primary capacity: the end of the last stage in shortening, none in extension.
   pure subroutine primary_capacity(self, cap_pos, cap_neg)
     class(primary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(out) :: cap_pos   !! stroke capacity in shortening [m]
@@ -159,6 +162,8 @@ contains
     end do
   end function primary_segment
 
+  !> Secondary bounds (eq. 22): f_lengthening / f_shortening at the crush front of each direction
+  !! (plus the stop beyond the stroke), 0 inside the crushed range.
   pure subroutine secondary_resistance(self, s, s_dot, s_hismin, s_hismax, f_pos, f_neg)
     class(secondary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(in) :: s          !! stroke (lengthening positive) [m]
@@ -179,6 +184,7 @@ contains
     end if
   end subroutine secondary_resistance
 
+  !> Secondary capacity: stroke_lengthening toward +s, stroke_shortening toward -s.
   pure subroutine secondary_capacity(self, cap_pos, cap_neg)
     class(secondary_honeycomb_t), intent(in) :: self!! the buffer law
     real(wp), intent(out) :: cap_pos   !! stroke available in lengthening [m]

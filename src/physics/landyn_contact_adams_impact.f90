@@ -13,7 +13,7 @@ module landyn_contact_adams_impact
   type, extends(damped_hertz_t) :: adams_impact_t
     real(wp) :: penetration = 1.0e-4_wp            !! d_max: penetration of full damping [m]
   contains
-    procedure :: damping_coefficient => adams_impact_damping
+    procedure :: damping_coefficient => adams_impact_damping  !! STEP(delta, 0, 0, d_max, C) [N s/m]
   end type adams_impact_t
 
 contains

@@ -12,7 +12,7 @@ module landyn_contact_base
   type, extends(damped_hertz_t) :: base_contact_t
     real(wp) :: damping_depth = 1.0e-4_wp          !! D1: penetration at which full damping applies [m]; 0: no ramp
   contains
-    procedure :: damping_coefficient => base_damping
+    procedure :: damping_coefficient => base_damping  !! kappa C, kappa = min(delta/D1, 1) [N s/m]
   end type base_contact_t
 
 contains

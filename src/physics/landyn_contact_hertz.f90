@@ -10,7 +10,7 @@ module landyn_contact_hertz
   !> Hertz contact: F = K delta^n (Table 4).
   type, extends(hertz_spring_t) :: hertz_contact_t
   contains
-    procedure :: normal_force => hertz_normal_force
+    procedure :: normal_force => hertz_normal_force  !! K delta^n, rate-independent [N]
   end type hertz_contact_t
 
 contains
@@ -22,6 +22,7 @@ contains
       allocate (b%law, source=hertz_contact_t(name='hertz', stiffness=b%cfg%stiffness, exponent=b%cfg%exponent))
   end subroutine build
 
+  !> Normal force of the Hertz law: the spring alone, K delta^n (0 outside the ground).
   pure function hertz_normal_force(self, delta, delta_dot, state) result(f)
     class(hertz_contact_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta               !! penetration [m]

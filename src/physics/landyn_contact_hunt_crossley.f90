@@ -15,7 +15,7 @@ module landyn_contact_hunt_crossley
     real(wp) :: alpha = 0.0_wp                     !! alpha of c_r = 1 - alpha v_impact; 0: constant e [s/m]
     real(wp) :: min_impact_speed = 0.1_wp          !! floor of the impact speed in chi [m/s]
   contains
-    procedure :: normal_force => hunt_crossley_normal_force
+    procedure :: normal_force => hunt_crossley_normal_force  !! K delta^n + chi delta^n delta_dot, clamped at 0 [N]
   end type hunt_crossley_t
 
 contains
@@ -44,6 +44,8 @@ contains
                           restitution=restitution, alpha=alpha, min_impact_speed=min_impact_speed)
   end function hunt_crossley
 
+  !> Normal force of the Hunt-Crossley law: max(0, K delta^n (1 + (chi/K) delta_dot)), chi from the
+  !! impact velocity in the contact history (min_impact_speed without a state); 0 outside the ground.
   pure function hunt_crossley_normal_force(self, delta, delta_dot, state) result(f)
     class(hunt_crossley_t), intent(in) :: self  !! the law (the state holds the impact velocity)
     real(wp), intent(in) :: delta               !! penetration [m]

@@ -10,7 +10,7 @@ module landyn_contact_kelvin_voigt
   !> Hertz contact + linear damping (Kelvin-Voigt): F = K delta^n + D delta_dot (D = damping).
   type, extends(damped_hertz_t) :: kelvin_voigt_t
   contains
-    procedure :: damping_coefficient => kelvin_voigt_damping
+    procedure :: damping_coefficient => kelvin_voigt_damping  !! the constant D [N s/m]
   end type kelvin_voigt_t
 
 contains

@@ -12,7 +12,7 @@ module landyn_contact_kelvin_voigt_bilinear
   type, extends(hertz_damper_t) :: kelvin_voigt_bilinear_t
     real(wp) :: damping2 = 1.0e4_wp                !! D2 [N s^2/m^2]
   contains
-    procedure :: normal_force => kelvin_voigt_bilinear_normal_force
+    procedure :: normal_force => kelvin_voigt_bilinear_normal_force  !! K delta^n + D1 delta_dot + D2 delta_dot |delta_dot| [N]
   end type kelvin_voigt_bilinear_t
 
 contains
@@ -26,6 +26,8 @@ contains
                                                     exponent=b%cfg%exponent, damping=b%cfg%damping, damping2=b%cfg%damping2))
   end subroutine build
 
+  !> Normal force of the bilinear Kelvin-Voigt law: max(0, K delta^n + D1 delta_dot + D2 delta_dot |delta_dot|)
+  !! inside the ground, 0 outside.
   pure function kelvin_voigt_bilinear_normal_force(self, delta, delta_dot, state) result(f)
     class(kelvin_voigt_bilinear_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta                       !! penetration [m]

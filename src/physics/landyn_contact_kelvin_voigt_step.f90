@@ -11,7 +11,7 @@ module landyn_contact_kelvin_voigt_step
   type, extends(damped_hertz_t) :: kelvin_voigt_step_t
     real(wp) :: step_depth = 1.0e-4_wp             !! d: penetration beyond which the damping is off [m]
   contains
-    procedure :: damping_coefficient => kelvin_voigt_step_damping
+    procedure :: damping_coefficient => kelvin_voigt_step_damping  !! D for delta <= d, 0 beyond [N s/m]
   end type kelvin_voigt_step_t
 
 contains

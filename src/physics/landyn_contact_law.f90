@@ -54,10 +54,10 @@ module landyn_contact_law
     character(len=name_len) :: name = ''  !! law name as given in &contact law [-]
     logical :: has_history = .false.      !! the law reads a contact_state_t: advance it once per step [-]
   contains
-    procedure(normal_force_i), deferred :: normal_force
-    procedure(spring_force_i), deferred :: spring_force
-    procedure(elastic_energy_i), deferred :: elastic_energy
-    procedure :: dissipation_power
+    procedure(normal_force_i), deferred :: normal_force      !! normal force F_Z >= 0 [N]
+    procedure(spring_force_i), deferred :: spring_force      !! conservative part of F_Z, dE/d(delta) [N]
+    procedure(elastic_energy_i), deferred :: elastic_energy  !! energy E(delta) stored in the spring part [J]
+    procedure :: dissipation_power                           !! power the contact removes, (F_Z - spring) delta_dot [W]
   end type contact_law_t
 
   abstract interface
@@ -105,9 +105,9 @@ module landyn_contact_law
     real(wp) :: stiffness = 3.16227766016838e9_wp  !! K [N/m^exponent]
     real(wp) :: exponent = 1.5_wp                  !! n [-]
   contains
-    procedure :: spring_force => hertz_spring_force
-    procedure :: elastic_energy => hertz_elastic_energy
-    procedure :: damped_force
+    procedure :: spring_force => hertz_spring_force      !! K delta^n [N]
+    procedure :: elastic_energy => hertz_elastic_energy  !! K delta^(n+1)/(n+1) [J]
+    procedure :: damped_force                            !! K delta^n + c delta_dot clamped at 0 [N]
   end type hertz_spring_t
 
   !> Hertz spring and a linear damping coefficient (the laws with a `damping` input).
@@ -120,8 +120,8 @@ module landyn_contact_law
   !! A law of this kind only implements damping_coefficient.
   type, abstract, extends(hertz_damper_t) :: damped_hertz_t
   contains
-    procedure(damping_coefficient_i), deferred :: damping_coefficient
-    procedure :: normal_force => damped_hertz_normal_force
+    procedure(damping_coefficient_i), deferred :: damping_coefficient  !! c(delta) [N s/m]
+    procedure :: normal_force => damped_hertz_normal_force           !! max(0, K delta^n + c(delta) delta_dot) [N]
   end type damped_hertz_t
 
   abstract interface
@@ -168,6 +168,7 @@ contains
     p = (self%normal_force(delta, delta_dot, state) - self%spring_force(delta, state))*delta_dot
   end function dissipation_power
 
+  !> The Hertz spring force K delta^n (0 outside the ground).
   pure function hertz_spring_force(self, delta, state) result(f)
     class(hertz_spring_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
@@ -181,6 +182,7 @@ contains
     end if
   end function hertz_spring_force
 
+  !> The energy stored in the Hertz spring, K delta^(n+1)/(n+1) (0 outside the ground).
   pure function hertz_elastic_energy(self, delta, state) result(e)
     class(hertz_spring_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration [m]
@@ -204,6 +206,7 @@ contains
     f = max(0.0_wp, self%stiffness*delta**self%exponent + c*delta_dot)
   end function damped_force
 
+  !> Normal force of a damped Hertz law: max(0, K delta^n + c(delta) delta_dot) inside the ground, 0 outside.
   pure function damped_hertz_normal_force(self, delta, delta_dot, state) result(f)
     class(damped_hertz_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: delta              !! penetration, > 0 inside the ground [m]

@@ -20,10 +20,10 @@ module landyn_contact_regolith
     real(wp) :: unload_stiffness = 1.0e8_wp        !! k_u [N/m]
     real(wp) :: damping = 1.0e4_wp                 !! C on the unloading/reloading line [N s/m]
   contains
-    procedure :: normal_force => regolith_normal_force
-    procedure :: spring_force => regolith_spring_force
-    procedure :: elastic_energy => regolith_elastic_energy
-    procedure :: dissipation_power => regolith_dissipation_power
+    procedure :: normal_force => regolith_normal_force            !! virgin curve with drag, or the unloading line [N]
+    procedure :: spring_force => regolith_spring_force            !! elastic part, the line K_b z_max^n_b - k_u (z_max - z) >= 0 [N]
+    procedure :: elastic_energy => regolith_elastic_energy        !! energy the unloading line gives back [J]
+    procedure :: dissipation_power => regolith_dissipation_power  !! sinkage work, drag and damping power [W]
   end type regolith_t
 
 contains
@@ -64,6 +64,8 @@ contains
     if (present(state)) zm = max(state%delta_max, delta)
   end function regolith_zmax
 
+  !> Normal force of the regolith law: K_b z^n_b + alpha max(z_dot, 0)^2 on the virgin curve (z >= z_max),
+  !! max(0, unloading line + C z_dot) below the deepest sinkage; 0 outside the ground.
   pure function regolith_normal_force(self, delta, delta_dot, state) result(f)
     class(regolith_t), intent(in) :: self  !! the law (the state holds the deepest sinkage)
     real(wp), intent(in) :: delta          !! penetration (sinkage) [m]

@@ -12,8 +12,8 @@ module landyn_friction_coulomb
   type, extends(friction_law_t) :: coulomb_t
     real(wp) :: mu_slide = 0.4_wp    !! sliding coefficient (mu_s for ty1/ty2, mu_d for ty4) [-]
   contains
-    procedure :: coefficient => coulomb_coefficient
-    procedure :: max_coefficient => coulomb_max_coefficient
+    procedure :: coefficient => coulomb_coefficient          !! mu_slide at every slip speed [-]
+    procedure :: max_coefficient => coulomb_max_coefficient  !! max(mu_stick, mu_slide) [-]
   end type coulomb_t
 
 contains
@@ -60,6 +60,7 @@ contains
 
   ! ---------------------------------------------------------------- ty1, ty2, ty4
 
+  !> The sliding coefficient mu_slide, independent of the slip speed.
   pure function coulomb_coefficient(self, speed) result(mu)
     class(coulomb_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: speed         !! slip speed (no effect) [m/s]
@@ -67,6 +68,7 @@ contains
     mu = self%mu_slide + 0.0_wp*speed     ! speed-independent (the product only reads speed)
   end function coulomb_coefficient
 
+  !> The larger of the stick and sliding coefficients, max(mu_stick, mu_slide).
   pure function coulomb_max_coefficient(self) result(mu)
     class(coulomb_t), intent(in) :: self  !! the law
     real(wp) :: mu                        !! max(mu_stick, mu_slide) [-]

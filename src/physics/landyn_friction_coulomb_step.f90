@@ -17,8 +17,8 @@ module landyn_friction_coulomb_step
     real(wp) :: v_static = 0.1_wp    !! stiction transition slip speed v_s [m/s]
     real(wp) :: v_dynamic = 1.0_wp   !! friction transition slip speed v_d [m/s]
   contains
-    procedure :: friction_force => coulomb_step_force
-    procedure :: coefficient => coulomb_step_coefficient
+    procedure :: friction_force => coulomb_step_force       !! -mu(|v|) N v_slip/|v_slip|, no viscous term [N]
+    procedure :: coefficient => coulomb_step_coefficient    !! the two STEP ramps, mu_d beyond v_d [-]
   end type coulomb_step_t
 
 contains
@@ -44,6 +44,7 @@ contains
 
   ! ---------------------------------------------------------------- coulomb_step
 
+  !> The coefficient mu(|v|) = STEP(v, 0, 0, v_s, mu_s) below v_s, STEP(v, v_s, mu_s, v_d, mu_d) up to v_d, mu_d beyond.
   pure function coulomb_step_coefficient(self, speed) result(mu)
     class(coulomb_step_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: speed              !! slip speed (its magnitude is used) [m/s]
@@ -60,6 +61,7 @@ contains
     end if
   end function coulomb_step_coefficient
 
+  !> Friction force of coulomb_step: mu(|v_slip|) N opposing the slip (no viscous term), 0 at zero slip.
   pure function coulomb_step_force(self, v_slip, f_normal) result(f_t)
     class(coulomb_step_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: v_slip(2)          !! slip velocity, local (t1, t2) [m/s]

@@ -74,10 +74,10 @@ module landyn_friction_law
     real(wp) :: stick_damping = 1.0e5_wp     !! c of the stick damper [N s/m]
     real(wp) :: viscous = 0.0_wp             !! C_v of the viscous term -C_v v_slip [N s/m]
   contains
-    procedure :: friction_force
-    procedure(coefficient_i), deferred :: coefficient
-    procedure(max_coefficient_i), deferred :: max_coefficient
-    procedure :: stick_slip_force
+    procedure :: friction_force                                !! sliding force mu(|v|) N + viscous, opposing the slip [N]
+    procedure(coefficient_i), deferred :: coefficient          !! Coulomb part mu at a slip speed [-]
+    procedure(max_coefficient_i), deferred :: max_coefficient  !! bound of mu over all slip speeds [-]
+    procedure :: stick_slip_force                              !! force of a law with stiction, advancing its stick state [N]
   end type friction_law_t
 
   abstract interface
@@ -111,7 +111,7 @@ module landyn_friction_law
     real(wp) :: mu_static = 0.4_wp   !! static coefficient mu_s = F_S / N [-]
     real(wp) :: mu_dynamic = 0.4_wp  !! dynamic (Coulomb) coefficient mu_d = F_D / N [-]
   contains
-    procedure :: max_coefficient => two_coefficient_max
+    procedure :: max_coefficient => two_coefficient_max  !! max(mu_s, mu_d) [-]
   end type two_coefficient_t
 
   !> A two-coefficient law with a Stribeck curve exp(-(|v|/v_S)^delta) (ty5, ty6).

@@ -15,7 +15,7 @@ module landyn_friction_modified_stribeck
     real(wp) :: v0 = 0.1_wp          !! stiction velocity v0 [m/s]
     real(wp) :: eps = 0.85_wp        !! epsilon [-]
   contains
-    procedure :: coefficient => modified_stribeck_coefficient
+    procedure :: coefficient => modified_stribeck_coefficient  !! parabola below v0, Stribeck curve beyond [-]
   end type modified_stribeck_t
 
 contains
@@ -45,6 +45,7 @@ contains
 
   ! ---------------------------------------------------------------- ty6
 
+  !> mu(|v|) of ty6: mu_s (1 - (|v| - v0)^2/v0^2) below v0, mu_d + (mu_s - mu_d) exp(-eps (|v|/v_S)^delta) beyond.
   pure function modified_stribeck_coefficient(self, speed) result(mu)
     class(modified_stribeck_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: speed                   !! slip speed [m/s]

@@ -12,9 +12,9 @@ module landyn_friction_regularized_coulomb
     real(wp) :: mu_static = 0.4_wp   !! mu_s [-]
     real(wp) :: v0 = 0.1_wp          !! regularisation speed v0 [m/s]
   contains
-    procedure :: friction_force => regularized_coulomb_force
-    procedure :: coefficient => regularized_coulomb_coefficient
-    procedure :: max_coefficient => regularized_coulomb_max_coefficient
+    procedure :: friction_force => regularized_coulomb_force                !! mu(|v|) N opposing the slip, no viscous term [N]
+    procedure :: coefficient => regularized_coulomb_coefficient             !! exponential ramp to mu_s at v0 [-]
+    procedure :: max_coefficient => regularized_coulomb_max_coefficient     !! mu_s [-]
   end type regularized_coulomb_t
 
 contains
@@ -35,6 +35,7 @@ contains
 
   ! ---------------------------------------------------------------- ty3
 
+  !> mu(|v|) of ty3: mu_s (1 - exp(-3|v|/v0))/(1 - exp(-3)) up to v0, mu_s beyond.
   pure function regularized_coulomb_coefficient(self, speed) result(mu)
     class(regularized_coulomb_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: speed                     !! slip speed [m/s]
@@ -48,12 +49,14 @@ contains
     end if
   end function regularized_coulomb_coefficient
 
+  !> The bound of ty3's coefficient, mu_s (reached at v0).
   pure function regularized_coulomb_max_coefficient(self) result(mu)
     class(regularized_coulomb_t), intent(in) :: self  !! the law
     real(wp) :: mu                                    !! mu_s [-]
     mu = self%mu_static
   end function regularized_coulomb_max_coefficient
 
+  !> Friction force of ty3: mu(|v_slip|) N opposing the slip (no viscous term), 0 at zero slip.
   pure function regularized_coulomb_force(self, v_slip, f_normal) result(f_t)
     class(regularized_coulomb_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: v_slip(2)                 !! slip velocity [m/s]

@@ -11,7 +11,7 @@ module landyn_friction_stribeck
   !! plus C_v |v|; sticks up to mu_s N.
   type, extends(stribeck_curve_t) :: stribeck_t
   contains
-    procedure :: coefficient => stribeck_coefficient
+    procedure :: coefficient => stribeck_coefficient  !! mu_d + (mu_s - mu_d) exp(-(|v|/v_S)^delta) [-]
   end type stribeck_t
 
 contains
@@ -42,6 +42,7 @@ contains
 
   ! ---------------------------------------------------------------- ty5
 
+  !> mu(|v|) of ty5: mu_d + (mu_s - mu_d) exp(-(|v|/v_S)^delta).
   pure function stribeck_coefficient(self, speed) result(mu)
     class(stribeck_t), intent(in) :: self  !! the law
     real(wp), intent(in) :: speed          !! slip speed [m/s]

@@ -175,6 +175,7 @@ contains
     v = matmul(plane%frame, w)
   end function to_global
 
+  !> True when x is a finite number (neither NaN nor infinite); checks the &terrain heights and directions.
   elemental function is_finite(x) result(yes)
     real(wp), intent(in) :: x  !! value [any unit]
     logical :: yes             !! .true. when x is neither NaN nor infinite
