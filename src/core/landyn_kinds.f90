@@ -7,7 +7,7 @@ module landyn_kinds
   integer, parameter, public :: wp = real64   !! working real kind
   integer, parameter, public :: ip = int32    !! default integer kind
 
-  real(wp), parameter, public :: pi = 3.141592653589793238462643383279503_wp
+  real(wp), parameter, public :: pi = 3.141592653589793238462643383279503_wp  !! the circle constant [-]
   real(wp), parameter, public :: deg2rad = pi/180.0_wp  !! degrees -> radians
   real(wp), parameter, public :: rad2deg = 180.0_wp/pi  !! radians -> degrees
   real(wp), parameter, public :: g_earth = 9.80665_wp   !! standard gravity [m/s^2], for loads in g

@@ -79,7 +79,8 @@ contains
   subroutine solve_spd(n, a, lda, b, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
-    real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in a(1:n,1:n) (upper triangle used); overwritten by its factor [any]
+    real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in a(1:n,1:n) (upper triangle used);
+                                                   !! overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
     integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]

@@ -61,8 +61,8 @@ module landyn_integrator_adaptive
                                            !! the other slot takes the next state (no copy on acceptance)
     integer :: ip = 1                      !! slot of the current state's snapshot [-]
   contains
-    procedure :: start => adaptive_start
-    procedure :: step => adaptive_step
+    procedure :: start => adaptive_start   !! evaluates and records the state at t = 0
+    procedure :: step => adaptive_step     !! one accepted step (retries and event location inside)
   end type adaptive_integrator_t
 
 contains

@@ -33,7 +33,7 @@ module landyn_sim_model
     type(gear_slot_t) :: gear(max_gears)        !! the gears
     integer :: n_struts(max_gears) = 0          !! struts of gear i (its strut_count()) [-]
     integer :: n_q(max_gears) = 0               !! generalized coordinates of gear i (its coordinate_count()) [-]
-    type(terrain_plane_t) :: plane(max_gears)
+    type(terrain_plane_t) :: plane(max_gears)         !! the terrain plane under footpad i
     ! The laws are immutable parameter objects shared by all footpads; what evolves (contact
     ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
     class(contact_law_t), allocatable :: contact       !! normal contact law

@@ -69,9 +69,9 @@ module landyn_sim_result
     real(wp) :: final_euler(3) = 0.0_wp                    !! [deg]
     real(wp) :: final_tilt = 0.0_wp                        !! [deg]
     real(wp) :: max_tilt = 0.0_wp                          !! [deg]
-    logical :: tipped_over = .false.
-    logical :: at_rest = .false.
-    character(len=64) :: end_reason = ''
+    logical :: tipped_over = .false.                       !! the tilt passed tipover_angle [-]
+    logical :: at_rest = .false.                           !! the run ended with the lander at rest [-]
+    character(len=64) :: end_reason = ''                   !! why the run ended (end time, at rest, tip-over, ...) [-]
     real(wp) :: energy_input = 0.0_wp                      !! initial KE + potential released + thrust work [J]
     real(wp) :: energy_residual = 0.0_wp                   !! final residual / energy_input [-]
     real(wp) :: max_violation = 0.0_wp                     !! after correction [m]
@@ -89,7 +89,8 @@ module landyn_sim_result
     real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
   end type sim_result_t
 
-  integer, parameter, public :: n_energy = 11
+  integer, parameter, public :: n_energy = 11   !! terms of the energy audit [-]
+  !> Names of the energy audit's terms (the columns of /timeseries/energy).
   character(len=24), parameter, public :: energy_names(n_energy) = [character(len=24) :: &
     'kinetic_body', 'kinetic_legs', 'potential_released', 'honeycomb_work', 'contact_damping', &
     'contact_elastic', 'friction', 'strut_impacts', 'thrust_work', 'input', 'residual']

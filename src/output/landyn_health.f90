@@ -23,7 +23,8 @@ module landyn_health
   integer, parameter :: health_warn = 1   !! result doubtful [-]
   integer, parameter :: health_fail = 2   !! run meaningless [-]
 
-  integer, parameter :: n_checks = 6
+  integer, parameter :: n_checks = 6   !! number of health checks [-]
+  !> Names of the health checks, in the order of health_t%result.
   character(len=24), parameter :: check_names(n_checks) = [character(len=24) :: &
     'leg_mass', 'gear_separation', 'initial_penetration', 'strut_length', 'energy_residual', 'finite_peaks']
 
@@ -41,7 +42,7 @@ module landyn_health
     integer :: result(n_checks) = health_ok              !! per check: health_ok, health_warn or health_fail [-]
     character(len=:), allocatable :: messages            !! one line per check that did not pass, '' if none [-]
   contains
-    procedure :: status => health_status
+    procedure :: status => health_status   !! the worst level over all checks [-]
   end type health_t
 
 contains
@@ -166,6 +167,7 @@ contains
 
   contains
 
+    !> Records a check that did not pass: its level and a message line.
     subroutine put(c, level, text)
       integer, intent(in) :: c               !! check index [-]
       integer, intent(in) :: level           !! health_warn or health_fail [-]

@@ -44,41 +44,41 @@ module landyn_gear_base
   !> A landing gear: struts, footpad and their state.
   type, abstract :: gear_base_t
   contains
-    procedure(count_iface), deferred :: strut_count
-    procedure(count_iface), deferred :: coordinate_count
-    procedure(name_iface), deferred :: strut_name
-    procedure(rotation_iface), deferred :: rotation
-    procedure(footpad_iface), deferred :: footpad
-    procedure(evaluate_iface), deferred :: evaluate
-    procedure(commit_iface), deferred :: commit
-    procedure(dynamics_iface), deferred :: dynamics
-    procedure(integrate_iface), deferred :: integrate
-    procedure(settle_iface), deferred :: settle
-    procedure(prepare_iface), deferred :: prepare
-    procedure(per_strut_pair_iface), deferred :: strokes
-    procedure(per_strut_pair_iface), deferred :: crush_history
-    procedure(vector_iface), deferred :: axial_forces
-    procedure(vector_iface), deferred :: crush_work
-    procedure(vector_iface), deferred :: strut_lengths
-    procedure(int_per_strut_iface), deferred :: law_segments
-    procedure(locks_iface), deferred :: locks
-    procedure(modes_iface), deferred :: strut_modes
-    procedure(capacity_iface), deferred :: buffer_capacity
-    procedure(violations_iface), deferred :: violations
-    procedure(vector_iface), deferred :: coordinate_weights
-    procedure(vector_iface), deferred :: rates
-    procedure(set_vector_iface), deferred :: set_rates
-    procedure(rigid_iface), deferred :: is_rigid
-    procedure(rows_iface), deferred :: velocity_rows
-    procedure(vector_iface), deferred :: mass_diagonal
-    procedure(maps_iface), deferred :: momentum_maps
-    procedure(momenta_iface), deferred :: relative_momenta
-    procedure(leg_momentum_iface), deferred :: leg_momentum
-    procedure(body_load_iface), deferred :: body_load
-    procedure(energy_iface), deferred :: relative_kinetic_energy
-    procedure(new_snapshot_iface), deferred :: new_snapshot
-    procedure(save_iface), deferred :: save_state
-    procedure(restore_iface), deferred :: restore_state
+    procedure(count_iface), deferred :: strut_count                    !! number of struts [-]
+    procedure(count_iface), deferred :: coordinate_count               !! number of generalized coordinates [-]
+    procedure(name_iface), deferred :: strut_name                      !! name of strut k (reports)
+    procedure(rotation_iface), deferred :: rotation                    !! gear frame -> lander frame rotation [-]
+    procedure(footpad_iface), deferred :: footpad                      !! footpad position and velocity, gear frame [m, m/s]
+    procedure(evaluate_iface), deferred :: evaluate                    !! crush logic and accelerations into a gear_eval_t
+    procedure(commit_iface), deferred :: commit                        !! makes an evaluation the committed state
+    procedure(dynamics_iface), deferred :: dynamics                    !! evaluate and commit in one call
+    procedure(integrate_iface), deferred :: integrate                  !! one step with the constraint correction
+    procedure(settle_iface), deferred :: settle                        !! all struts locked: the gear becomes rigid
+    procedure(prepare_iface), deferred :: prepare                      !! caches for the next evaluation of a rigid gear
+    procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
+    procedure(per_strut_pair_iface), deferred :: crush_history         !! most negative and positive strokes reached [m]
+    procedure(vector_iface), deferred :: axial_forces                  !! axial buffer forces [N]
+    procedure(vector_iface), deferred :: crush_work                    !! energy absorbed by each buffer [J]
+    procedure(vector_iface), deferred :: strut_lengths                 !! strut lengths [m]
+    procedure(int_per_strut_iface), deferred :: law_segments           !! piece of each buffer law [-]
+    procedure(locks_iface), deferred :: locks                          !! which struts are locked [-]
+    procedure(modes_iface), deferred :: strut_modes                    !! crush mode of each strut [-]
+    procedure(capacity_iface), deferred :: buffer_capacity             !! stroke capacity of strut k's buffer [m]
+    procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
+    procedure(vector_iface), deferred :: coordinate_weights            !! error-norm weights of the coordinates [-]
+    procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
+    procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
+    procedure(rigid_iface), deferred :: is_rigid                       !! all struts locked and at rest
+    procedure(rows_iface), deferred :: velocity_rows                   !! velocity constraint rows (A qd = 0)
+    procedure(vector_iface), deferred :: mass_diagonal                 !! mass matrix diagonal [kg, kg m^2]
+    procedure(maps_iface), deferred :: momentum_maps                   !! maps from qd to the legs' momenta
+    procedure(momenta_iface), deferred :: relative_momenta             !! legs' relative momenta and kinetic energy
+    procedure(leg_momentum_iface), deferred :: leg_momentum            !! legs' momentum, first moment and mass
+    procedure(body_load_iface), deferred :: body_load                  !! load on the body and its moment [N, N m]
+    procedure(energy_iface), deferred :: relative_kinetic_energy       !! legs' kinetic energy relative to the body [J]
+    procedure(new_snapshot_iface), deferred :: new_snapshot            !! allocates a snapshot of the gear's type
+    procedure(save_iface), deferred :: save_state                      !! copies the evolving state out
+    procedure(restore_iface), deferred :: restore_state                !! puts a saved state back
   end type gear_base_t
 
   !> The evolving state of a gear (save_state, restore_state): each gear type extends it.

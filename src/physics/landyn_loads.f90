@@ -21,7 +21,8 @@ module landyn_loads
   integer, parameter :: n_joint = max_struts + 1  !! joints of the peak table: a, b, c, d [-]
   integer, parameter :: n_load = 3*n_joint + 3*max_struts  !! values of a gear's load vector (21) [-]
   integer, parameter :: n_quantity = 4     !! quantities of the peak table: x, y, z, magnitude [-]
-  character(len=1), parameter :: joint_names(n_joint) = ['a', 'b', 'c', 'd']
+  character(len=1), parameter :: joint_names(n_joint) = ['a', 'b', 'c', 'd']  !! the hard points of the peak table [-]
+  !> The quantities of the peak table.
   character(len=9), parameter :: quantity_names(n_quantity) = [character(len=9) :: 'x', 'y', 'z', 'magnitude']
   !> Names of the load vector's values (the columns of the simultaneous loads).
   character(len=4), parameter :: load_names(n_load) = [character(len=4) :: &

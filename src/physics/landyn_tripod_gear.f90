@@ -25,41 +25,41 @@ module landyn_tripod_gear
   type, extends(gear_base_t) :: tripod_gear_t
     type(gear_t) :: gear                            !! the tripod (landyn_gear)
   contains
-    procedure :: strut_count => tripod_strut_count
-    procedure :: coordinate_count => tripod_coordinate_count
-    procedure :: strut_name => tripod_strut_name
-    procedure :: rotation => tripod_rotation
-    procedure :: footpad => tripod_footpad
-    procedure :: evaluate => tripod_evaluate
-    procedure :: commit => tripod_commit
-    procedure :: dynamics => tripod_dynamics
-    procedure :: integrate => tripod_integrate
-    procedure :: settle => tripod_settle
-    procedure :: prepare => tripod_prepare
-    procedure :: strokes => tripod_strokes
-    procedure :: crush_history => tripod_crush_history
-    procedure :: axial_forces => tripod_axial_forces
-    procedure :: crush_work => tripod_crush_work
-    procedure :: strut_lengths => tripod_strut_lengths
-    procedure :: law_segments => tripod_law_segments
-    procedure :: locks => tripod_locks
-    procedure :: strut_modes => tripod_strut_modes
-    procedure :: buffer_capacity => tripod_buffer_capacity
-    procedure :: violations => tripod_violations
-    procedure :: coordinate_weights => tripod_coordinate_weights
-    procedure :: rates => tripod_rates
-    procedure :: set_rates => tripod_set_rates
-    procedure :: is_rigid => tripod_is_rigid
-    procedure :: velocity_rows => tripod_velocity_rows
-    procedure :: mass_diagonal => tripod_mass_diagonal
-    procedure :: momentum_maps => tripod_momentum_maps
-    procedure :: relative_momenta => tripod_relative_momenta
-    procedure :: leg_momentum => tripod_leg_momentum
-    procedure :: body_load => tripod_body_load
-    procedure :: relative_kinetic_energy => tripod_kinetic_energy
-    procedure :: new_snapshot => tripod_new_snapshot
-    procedure :: save_state => tripod_save_state
-    procedure :: restore_state => tripod_restore_state
+    procedure :: strut_count => tripod_strut_count                     !! number of struts [-]
+    procedure :: coordinate_count => tripod_coordinate_count           !! number of generalized coordinates [-]
+    procedure :: strut_name => tripod_strut_name                       !! name of strut k (reports)
+    procedure :: rotation => tripod_rotation                           !! gear frame -> lander frame rotation [-]
+    procedure :: footpad => tripod_footpad                             !! footpad position and velocity, gear frame [m, m/s]
+    procedure :: evaluate => tripod_evaluate                           !! crush logic and accelerations into a gear_eval_t
+    procedure :: commit => tripod_commit                               !! makes an evaluation the committed state
+    procedure :: dynamics => tripod_dynamics                           !! evaluate and commit in one call
+    procedure :: integrate => tripod_integrate                         !! one step with the constraint correction
+    procedure :: settle => tripod_settle                               !! all struts locked: the gear becomes rigid
+    procedure :: prepare => tripod_prepare                             !! caches for the next evaluation of a rigid gear
+    procedure :: strokes => tripod_strokes                             !! strokes and stroke rates [m, m/s]
+    procedure :: crush_history => tripod_crush_history                 !! most negative and positive strokes reached [m]
+    procedure :: axial_forces => tripod_axial_forces                   !! axial buffer forces [N]
+    procedure :: crush_work => tripod_crush_work                       !! energy absorbed by each buffer [J]
+    procedure :: strut_lengths => tripod_strut_lengths                 !! strut lengths [m]
+    procedure :: law_segments => tripod_law_segments                   !! piece of each buffer law [-]
+    procedure :: locks => tripod_locks                                 !! which struts are locked [-]
+    procedure :: strut_modes => tripod_strut_modes                     !! crush mode of each strut [-]
+    procedure :: buffer_capacity => tripod_buffer_capacity             !! stroke capacity of strut k's buffer [m]
+    procedure :: violations => tripod_violations                       !! largest constraint violations [m]
+    procedure :: coordinate_weights => tripod_coordinate_weights       !! error-norm weights of the coordinates [-]
+    procedure :: rates => tripod_rates                                 !! generalized velocities [m/s, rad/s]
+    procedure :: set_rates => tripod_set_rates                         !! replaces the generalized velocities
+    procedure :: is_rigid => tripod_is_rigid                           !! all struts locked and at rest
+    procedure :: velocity_rows => tripod_velocity_rows                 !! velocity constraint rows (A qd = 0)
+    procedure :: mass_diagonal => tripod_mass_diagonal                 !! mass matrix diagonal [kg, kg m^2]
+    procedure :: momentum_maps => tripod_momentum_maps                 !! maps from qd to the legs' momenta
+    procedure :: relative_momenta => tripod_relative_momenta           !! legs' relative momenta and kinetic energy
+    procedure :: leg_momentum => tripod_leg_momentum                   !! legs' momentum, first moment and mass
+    procedure :: body_load => tripod_body_load                         !! load on the body and its moment [N, N m]
+    procedure :: relative_kinetic_energy => tripod_kinetic_energy      !! legs' kinetic energy relative to the body [J]
+    procedure :: new_snapshot => tripod_new_snapshot                   !! allocates a snapshot of the gear's type
+    procedure :: save_state => tripod_save_state                       !! copies the evolving state out
+    procedure :: restore_state => tripod_restore_state                 !! puts a saved state back
   end type tripod_gear_t
 
   !> The tripod's evolving state (gear_state_t).
