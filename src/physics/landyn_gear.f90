@@ -1,40 +1,41 @@
-!> Landing-gear multibody dynamics (paper section 2.4, eqs. 12-16, Step 4 of section 3.1): the
-!! public interface of the tripod gear. The types and the procedure interfaces are declared in
-!! landyn_gear_model (gear_t and gear_state_t opaque); the bodies live in its submodules:
+!> Landing-gear multibody dynamics of the paper's tripod gear (section 2.4, eqs. 12-16, Step 4 of
+!! section 3.1): its coordinates, its types and the interfaces of every procedure of the gear, the
+!! public interface that users (the tripod gear type, the tests) `use`. gear_t and gear_state_t
+!! are opaque (private components): the bodies live in the submodules of this module, which see
+!! the components, and everyone else goes through the procedures:
 !!
-!!   landyn_strut             one strut's mass model (strut_t: first moment and inertia of its length)
-!!   landyn_gear_model        coordinates, gear_t and its state and evaluation records, interfaces
-!!   landyn_gear_setup        set-up, footpad, mass matrix, strokes and the accessors of the state
+!!   landyn_gear_setup        set-up, footpad, strut kinematics, mass matrix, strokes, accessors
 !!   landyn_gear_inertia      generalized forces, relative momentum and inertia terms
 !!   landyn_gear_dynamics     crush logic and the gear DAE at one instant (gear_evaluate/commit)
 !!   landyn_gear_joint_loads  interface loads of the joints
 !!   landyn_gear_constraints  the gear's step and its constraint-violation correction
 !!
-!! Users (the simulation, the impact projection, the tests) `use landyn_gear`.
+!! Each gear has nine generalized coordinates q = (d1, th1, th2, db1, thb1, thb2, dc1, thc1, thc2),
+!! measured in the gear frame, which is fixed to the lander body: per strut its length and the two
+!! angles of its upper universal joint (parametrisation in landyn_kinematics). Six holonomic
+!! constraints (eq. 6) tie the secondaries' lower ball joints to the lugs on the primary's outer
+!! tube, leaving three degrees of freedom: the three strut lengths. Strut k's coordinates are
+!! q(idx_len(k)) (length), q(idx_len(k) + 1) and q(idx_len(k) + 2) (angles); the layout itself is
+!! defined once, by landyn_kinematics' iq_* indices.
+!!
+!! Mass model (derived, see docs/theory.md): each strut is a landyn_strut strut_t (upper part
+!! pivoting with the strut, lower part sliding with its length, the primary carrying the footpad
+!! mass at its lower end). With u = R0 (sin t2, -sin t1 cos t2, cos t1 cos t2),
+!! |du/dt|^2 = cos^2 t2 t1dot^2 + t2dot^2, so the kinetic energy of one strut is
+!! T = 1/2 m_s Ldot^2 + 1/2 J(L) (cos^2 t2 t1dot^2 + t2dot^2): the mass matrix is diagonal and the
+!! velocity-coupling terms follow from Lagrange's equations.
 module landyn_gear
-  use landyn_strut, only: strut_mass_t, strut_t
-  use landyn_gear_model, only: gear_t, buffer_slot_t, gear_state_t, gear_eval_t, gear_init, gear_footpad, &
-                               gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments, gear_strokes, &
-                               gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, &
-                               gear_led_rates, gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, &
-                               gear_cache_jacobian, gear_mass_diagonal, gear_crush_history, gear_crush_work, &
-                               gear_violations, gear_buffer_capacity, gear_set_buffer, gear_save_state, &
-                               gear_restore_state, gear_axial_forces, gear_body_load, gear_coordinates, &
-                               gear_accelerations, gear_set_coordinates, gear_set_locks, gear_slide_directions, &
-                               gear_set_crush_history, gear_set_axial_forces, gear_set_rigid, gear_tube_bound, &
-                               gear_geometry, gear_strut, gear_nominal_lengths, &
-                               gear_generalized_forces, gear_relative_inertia, gear_relative_momenta, &
-                               gear_leg_momentum, gear_momentum_maps, gear_evaluate, gear_commit, gear_prepare, &
-                               gear_dynamics, gear_integrate, gear_settle, gear_velocity_rows, GEAR_DRIFT, &
-                               GEAR_NOT_CONVERGED, n_struts, strut_names, n_q, n_phi, max_rows, idx_len
+  use landyn_kinds, only: wp
+  use landyn_buffer, only: buffer_law_t
+  use landyn_gear_base, only: gear_eval_t   ! the evaluation record of every gear type
+  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
+  use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
+  use landyn_tube_friction, only: tube_friction_t
   implicit none
   private
 
-  public :: gear_t, strut_mass_t, strut_t, buffer_slot_t, gear_state_t, gear_eval_t
-  public :: gear_init, gear_evaluate, gear_commit, gear_prepare, gear_dynamics, gear_integrate
-  public :: gear_footpad, gear_mass_matrix, gear_generalized_forces
-  public :: gear_relative_kinetic_energy, gear_relative_inertia, gear_leg_momentum
-  public :: gear_relative_momenta, gear_velocity_rows, gear_momentum_maps, gear_settle, gear_law_segments
+  public :: gear_t, buffer_slot_t, gear_state_t, gear_eval_t, strut_mass_t, strut_t
+  public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments
   public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
@@ -42,8 +43,622 @@ module landyn_gear
   public :: gear_coordinates, gear_accelerations, gear_set_coordinates, gear_set_locks, gear_slide_directions
   public :: gear_set_crush_history, gear_set_axial_forces, gear_set_rigid, gear_tube_bound, gear_geometry
   public :: gear_strut, gear_nominal_lengths
-  public :: GEAR_DRIFT, GEAR_NOT_CONVERGED
-  public :: max_rows, idx_len, n_struts, strut_names
-  public :: n_q, n_phi
+  public :: gear_generalized_forces, gear_relative_inertia, gear_relative_momenta, gear_leg_momentum, gear_momentum_maps
+  public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
+  public :: gear_integrate, gear_settle, gear_velocity_rows, GEAR_DRIFT, GEAR_NOT_CONVERGED
+  public :: n_struts, strut_names, n_q, n_phi, max_rows, idx_len
+
+  integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
+  character(len=*), parameter :: strut_names(n_struts) = [character(len=15) :: 'primary', 'secondary left', &
+                                                          'secondary right']   !! names of the struts [-]
+  integer, parameter :: n_q = n_gear_q                    !! generalized coordinates per gear (landyn_kinematics) [-]
+  integer, parameter :: n_phi = n_gear_phi                !! holonomic constraints per gear (landyn_kinematics) [-]
+  integer, parameter :: max_rows = n_phi + n_struts       !! constraint rows per gear at most (Phi_q and the locks) [-]
+  integer, parameter :: idx_len(n_struts) = [iq_d1, iq_db1, iq_dc1]   !! index of each strut's length in q [-]
+  integer, parameter :: GEAR_DRIFT = 2            !! from gear_integrate when the violation before correction exceeds max_drift [-]
+  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! from gear_integrate when the position correction did not converge [-]
+
+  !> Holder for a polymorphic buffer law (one per strut).
+  type :: buffer_slot_t
+    class(buffer_law_t), allocatable :: law   !! the strut's buffer law (landyn_buffer)
+  end type buffer_slot_t
+
+  !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
+  type :: strut_kin_t
+    real(wp) :: p(3) = 0.0_wp     !! upper joint, gear frame [m]
+    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
+    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
+    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
+    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
+    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
+    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
+    type(strut_mass_functions_t) :: mf  !! mass functions at the strut's length [kg, kg m, kg m^2]
+  end type strut_kin_t
+
+  !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
+  !! accumulators) and the caches that depend on it: gear_t's component `st`. An opaque snapshot:
+  !! copying it out (gear_save_state) and back (gear_restore_state) restores the gear exactly, so
+  !! that a step can be rejected or repeated (the geometry, masses and buffer laws are parameters
+  !! and stay in gear_t).
+  type :: gear_state_t
+    private
+    real(wp) :: q(n_q) = 0.0_wp                   !! generalized coordinates [m, rad]
+    real(wp) :: qd(n_q) = 0.0_wp                  !! generalized velocities [m/s, rad/s]
+    real(wp) :: qdd(n_q) = 0.0_wp                 !! generalized accelerations [m/s^2, rad/s^2]
+    logical :: locked(n_struts) = .true.                 !! strut locked [-]
+    integer :: dir(n_struts) = 0                         !! sliding direction [-]
+    real(wp) :: s_lock(n_struts) = 0.0_wp                !! stroke held by a locked strut [m]
+    real(wp) :: s_hismin(n_struts) = 0.0_wp              !! most negative stroke reached [m]
+    real(wp) :: s_hismax(n_struts) = 0.0_wp              !! most positive stroke reached [m]
+    real(wp) :: axial(n_struts) = 0.0_wp                 !! axial buffer force [N]
+    real(wp) :: f_body(3) = 0.0_wp                !! force on the body, gear frame [N]
+    real(wp) :: m_body(3) = 0.0_wp                !! moment on the body about O_L, gear axes [N m]
+    real(wp) :: work_crush(n_struts) = 0.0_wp            !! energy absorbed by each buffer [J]
+    real(wp) :: max_violation = 0.0_wp            !! largest violation after correction [m]
+    real(wp) :: max_drift = 0.0_wp                !! largest violation before correction [m]
+    integer :: n_correction_iter = 0              !! largest number of correction iterations [-]
+    real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
+    ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
+    ! computed once and reused until a strut breaks loose.
+    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
+                                                  !! changing locked or qd from outside requires rigid = .false.)
+    logical :: rigid_cache = .false.              !! the caches below are valid
+    type(strut_kin_t) :: sk_c(n_struts)                  !! cached strut kinematics
+    real(wp) :: mdiag_c(n_q) = 0.0_wp             !! cached mass matrix diagonal [kg, kg m^2]
+    real(wp) :: a_c(max_rows, n_q) = 0.0_wp       !! cached constraint rows [-, m]
+    real(wp) :: chol_c(max_rows, max_rows) = 0.0_wp  !! cached Cholesky factor
+    logical :: phq_ok = .false.                   !! Phi_q cache valid [-]
+    real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
+    real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
+    ! The strut kinematics and mass functions at the current coordinates (strut_kinematics),
+    ! computed once per step (gear_integrate) and reused by every evaluation at the same q (the
+    ! dynamics, the velocity projection's momentum maps and mass matrix, the energy audit).
+    logical :: kin_ok = .false.                   !! kin is valid for the coordinates kin_q [-]
+    real(wp) :: kin_q(n_q) = 0.0_wp               !! coordinates of the cached kinematics [m, rad]
+    type(strut_kin_t) :: kin(n_struts)            !! cached strut kinematics at kin_q
+  end type gear_state_t
+
+  !> One landing gear: geometry, masses, buffers and state.
+  type :: gear_t
+    private
+    type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
+    real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
+    type(strut_t) :: strut(n_struts)              !! primary, left, right: mass models (landyn_strut)
+    real(wp) :: leg_mass = 0.0_wp                 !! sum of the strut masses (set by gear_init) [kg]
+    real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
+    type(buffer_slot_t) :: buffer(n_struts)              !! primary, left, right buffer laws
+    type(tube_friction_t) :: tube                 !! friction between the primary's tubes (eqs. 23-26)
+    real(wp) :: sigma(n_struts) = [-1.0_wp, 1.0_wp, 1.0_wp]  !! ds/dL: stroke sign convention per strut [-]
+    real(wp) :: len0(n_struts) = 0.0_wp                  !! nominal strut lengths [m]
+    type(gear_state_t) :: st                      !! everything that evolves (a snapshot is a copy of it)
+  end type gear_t
+
+  interface
+    ! ---- set-up, footpad, strut kinematics, mass matrix, strokes and accessors (landyn_gear_setup)
+
+    !> Sets up a gear at its nominal configuration, all struts locked and at rest.
+    module subroutine gear_init(gear, geom, rot, mass, stat, errmsg, tube)
+      type(gear_t), intent(inout) :: gear          !! gear to initialise (buffers must already be allocated)
+      type(gear_geometry_t), intent(in) :: geom    !! geometry in the gear frame
+      real(wp), intent(in) :: rot(3, 3)            !! gear frame -> lander frame [-]
+      type(strut_mass_t), intent(in) :: mass(n_struts)    !! strut mass properties
+      integer, intent(out) :: stat                 !! STAT_OK, or STAT_FAILED (a buffer law or sliding mass missing)
+      character(len=*), intent(inout) :: errmsg    !! message on failure
+      type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
+    end subroutine gear_init
+
+    !> Footpad position and velocity in the gear frame.
+    module pure subroutine gear_footpad(gear, pos, vel, qd)
+      type(gear_t), intent(in) :: gear     !! gear
+      real(wp), intent(out) :: pos(3)      !! footpad joint position, gear frame [m]
+      real(wp), intent(out) :: vel(3)      !! its velocity relative to the body, gear frame [m/s]
+      real(wp), intent(in), optional :: qd(n_q)  !! generalized velocities to use; default the gear's [m/s, rad/s]
+    end subroutine gear_footpad
+
+    !> Upper joint, axis and axis partials of each strut at q, and its mass functions at its length
+    !! (the cached ones when q is the configuration they were computed at: the same values).
+    module pure subroutine strut_kinematics(gear, q, sk)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
+      type(strut_kin_t), intent(out) :: sk(3) !! per-strut kinematics
+    end subroutine strut_kinematics
+
+    !> Diagonal of the mass matrix M(q).
+    module pure function gear_mass_matrix(gear, q) result(mdiag)
+      type(gear_t), intent(in) :: gear   !! gear
+      real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
+      real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
+    end function gear_mass_matrix
+
+    !> Diagonal of the mass matrix at q from the struts' mass functions at their lengths q(idx_len).
+    module pure function mass_diagonal(mf, q) result(mdiag)
+      type(strut_mass_functions_t), intent(in) :: mf(n_struts)  !! mass functions [kg, kg m, kg m^2]
+      real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
+      real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
+    end function mass_diagonal
+
+    !> Caches the strut kinematics at the current coordinates (after they changed).
+    module pure subroutine cache_kinematics(gear)
+      type(gear_t), intent(inout) :: gear   !! gear
+    end subroutine cache_kinematics
+
+    !> Relative kinetic energy of the leg parts, 1/2 qd^T M qd.
+    module pure function gear_relative_kinetic_energy(gear) result(t)
+      type(gear_t), intent(in) :: gear   !! gear
+      real(wp) :: t                      !! kinetic energy relative to the body [J]
+    end function gear_relative_kinetic_energy
+
+    !> Stroke and stroke rate of each strut (Table 3 sense).
+    module pure subroutine strokes(gear, qv, qdv, s, sd)
+      type(gear_t), intent(in) :: gear   !! gear
+      real(wp), intent(in) :: qv(n_q)    !! coordinates [m, rad]
+      real(wp), intent(in) :: qdv(n_q)   !! velocities [m/s, rad/s]
+      real(wp), intent(out) :: s(3)      !! strokes [m]
+      real(wp), intent(out) :: sd(3)     !! stroke rates [m/s]
+    end subroutine strokes
+
+    !> The piece of each strut's buffer law at the current strokes (buffer_law_t%segment): changes
+    !! exactly at a stage end or where an end-of-stroke stop begins.
+    module pure function gear_law_segments(gear) result(seg)
+      type(gear_t), intent(in) :: gear   !! gear
+      integer :: seg(3)                  !! segment of primary, left, right [-]
+    end function gear_law_segments
+
+    !> First moment of mass of the leg parts, sum m x, gear frame.
+    module pure function leg_first_moment(sk, q) result(fm)
+      type(strut_kin_t), intent(in) :: sk(3)   !! strut kinematics at q
+      real(wp), intent(in) :: q(n_q)           !! coordinates [m, rad]
+      real(wp) :: fm(3)                        !! [kg m]
+    end function leg_first_moment
+
+    !> Stroke and stroke rate of each strut at the gear's current state (Table 3 sense).
+    module pure subroutine gear_strokes(gear, s, sd)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp), intent(out) :: s(n_struts)    !! strokes [m]
+      real(wp), intent(out) :: sd(n_struts)   !! stroke rates [m/s]
+    end subroutine gear_strokes
+
+    !> Strut lengths at the gear's current state.
+    module pure function gear_strut_lengths(gear) result(len)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: len(n_struts)               !! strut lengths [m]
+    end function gear_strut_lengths
+
+    !> Mass of the leg parts, the sum of the strut masses.
+    module pure real(wp) function gear_leg_mass(gear) result(m)
+      type(gear_t), intent(in) :: gear        !! gear
+    end function gear_leg_mass
+
+    !> Gear frame -> lander frame rotation.
+    module pure function gear_rotation(gear) result(rot)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: rot(3, 3)                   !! [-]
+    end function gear_rotation
+
+    !> Generalized velocities (the stored ones: half a step behind the coordinates in the leapfrog).
+    module pure function gear_rates(gear) result(qd)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: qd(n_q)                     !! [m/s, rad/s]
+    end function gear_rates
+
+    !> Replaces the generalized velocities (the system velocity projection; leading the stored
+    !! velocities for an output sample, undone afterwards). A rigid gear must stay at rest.
+    module pure subroutine gear_set_rates(gear, qd)
+      type(gear_t), intent(inout) :: gear     !! gear
+      real(wp), intent(in) :: qd(n_q)         !! [m/s, rad/s]
+    end subroutine gear_set_rates
+
+    !> The generalized velocities led by `lead` times the committed accelerations, qd + lead qdd.
+    module pure function gear_led_rates(gear, lead) result(qd)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp), intent(in) :: lead            !! [s]
+      real(wp) :: qd(n_q)                     !! [m/s, rad/s]
+    end function gear_led_rates
+
+    !> Which struts are locked (committed state).
+    module pure function gear_locks(gear) result(locked)
+      type(gear_t), intent(in) :: gear        !! gear
+      logical :: locked(n_struts)             !! [-]
+    end function gear_locks
+
+    !> Crush mode of each strut of the committed state (strut_modes).
+    module pure function gear_strut_modes(gear) result(m)
+      type(gear_t), intent(in) :: gear        !! gear
+      integer :: m(n_struts)                  !! [-]
+    end function gear_strut_modes
+
+    !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
+    !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
+    !! of motion is not a mode).
+    module pure function strut_modes(locked, axial, dir) result(m)
+      logical, intent(in) :: locked(n_struts)   !! struts locked [-]
+      real(wp), intent(in) :: axial(n_struts)   !! axial buffer forces [N]
+      integer, intent(in) :: dir(n_struts)      !! sliding directions [-]
+      integer :: m(n_struts)                    !! modes [-]
+    end function strut_modes
+
+    !> The gear is rigid: all struts locked and at rest relative to the body.
+    module pure logical function gear_is_rigid(gear) result(rigid)
+      type(gear_t), intent(in) :: gear        !! gear
+    end function gear_is_rigid
+
+    !> Caches Phi_q at the current coordinates for the next evaluation (it was computed for the
+    !! velocity projection at the same configuration).
+    module pure subroutine gear_cache_jacobian(gear, phq)
+      type(gear_t), intent(inout) :: gear     !! gear
+      real(wp), intent(in) :: phq(:, :)       !! Phi_q at gear%st%q, n_phi x n_q [-, m]
+    end subroutine gear_cache_jacobian
+
+    !> Diagonal of the mass matrix at the current coordinates.
+    module pure function gear_mass_diagonal(gear) result(mdiag)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: mdiag(n_q)                  !! [kg, kg m^2]
+    end function gear_mass_diagonal
+
+    !> Most negative and most positive stroke reached by each strut.
+    module pure subroutine gear_crush_history(gear, s_min, s_max)
+      type(gear_t), intent(in) :: gear          !! gear
+      real(wp), intent(out) :: s_min(n_struts)  !! [m]
+      real(wp), intent(out) :: s_max(n_struts)  !! [m]
+    end subroutine gear_crush_history
+
+    !> Energy absorbed by each buffer so far.
+    module pure function gear_crush_work(gear) result(w)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: w(n_struts)                 !! [J]
+    end function gear_crush_work
+
+    !> Largest constraint violation after and before the correction so far.
+    module pure subroutine gear_violations(gear, violation, drift)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp), intent(out) :: violation      !! after correction [m]
+      real(wp), intent(out) :: drift          !! before correction [m]
+    end subroutine gear_violations
+
+    !> Stroke capacity of strut k's buffer in each direction (buffer_law_t%capacity).
+    module subroutine gear_buffer_capacity(gear, k, cap_pos, cap_neg)
+      type(gear_t), intent(in) :: gear        !! gear
+      integer, intent(in) :: k                !! strut [-]
+      real(wp), intent(out) :: cap_pos        !! toward +s [m]
+      real(wp), intent(out) :: cap_neg        !! toward -s (0: none) [m]
+    end subroutine gear_buffer_capacity
+
+    !> Sets strut k's buffer law (before gear_init).
+    module subroutine gear_set_buffer(gear, k, law)
+      type(gear_t), intent(inout) :: gear     !! gear
+      integer, intent(in) :: k                !! strut [-]
+      class(buffer_law_t), intent(in) :: law  !! buffer law
+    end subroutine gear_set_buffer
+
+    !> Copies the gear's evolving state out (a snapshot: restoring it repeats the gear bit for bit).
+    module pure subroutine gear_save_state(gear, st)
+      type(gear_t), intent(in) :: gear        !! gear
+      ! inout, not out: intent(out) would first reset the record to its defaults at every save
+      type(gear_state_t), intent(inout) :: st !! its state (previous contents replaced)
+    end subroutine gear_save_state
+
+    !> Puts a state from gear_save_state back.
+    module pure subroutine gear_restore_state(gear, st)
+      type(gear_t), intent(inout) :: gear     !! gear
+      type(gear_state_t), intent(in) :: st    !! saved state
+    end subroutine gear_restore_state
+
+    !> Axial buffer forces of the committed state (compression positive for the primary, the
+    !! Table-3 sense of each strut).
+    module pure function gear_axial_forces(gear) result(axial)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: axial(n_struts)             !! [N]
+    end function gear_axial_forces
+
+    !> The committed load on the body: force and moment about the lander origin, gear frame.
+    module pure subroutine gear_body_load(gear, f_body, m_body)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp), intent(out) :: f_body(3)      !! [N]
+      real(wp), intent(out) :: m_body(3)      !! [N m]
+    end subroutine gear_body_load
+
+    !> Generalized coordinates of the gear's current state.
+    pure module function gear_coordinates(gear) result(q)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: q(n_q)                      !! [m, rad]
+    end function gear_coordinates
+
+    !> Generalized accelerations of the committed state.
+    pure module function gear_accelerations(gear) result(qdd)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: qdd(n_q)                    !! [m/s^2, rad/s^2]
+    end function gear_accelerations
+
+    !> Replaces the generalized coordinates and, when given, the velocities (a state set up by hand,
+    !! as the unit tests do; nothing else changes: a rigid gear must be released with gear_set_rigid).
+    pure module subroutine gear_set_coordinates(gear, q, qd)
+      type(gear_t), intent(inout) :: gear     !! gear
+      real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
+      real(wp), intent(in), optional :: qd(n_q)  !! velocities [m/s, rad/s]
+    end subroutine gear_set_coordinates
+
+    !> Sets which struts are locked and, when given, the strokes the locked ones hold.
+    pure module subroutine gear_set_locks(gear, locked, s_lock)
+      type(gear_t), intent(inout) :: gear     !! gear
+      logical, intent(in) :: locked(n_struts) !! struts locked [-]
+      real(wp), intent(in), optional :: s_lock(n_struts)  !! strokes held by locked struts [m]
+    end subroutine gear_set_locks
+
+    !> Sliding direction of each strut of the committed state (+1 toward +s, -1 toward -s, 0 never slid).
+    pure module function gear_slide_directions(gear) result(dir)
+      type(gear_t), intent(in) :: gear        !! gear
+      integer :: dir(n_struts)                !! [-]
+    end function gear_slide_directions
+
+    !> Sets the most negative and most positive stroke reached by each strut (gear_crush_history).
+    pure module subroutine gear_set_crush_history(gear, s_min, s_max)
+      type(gear_t), intent(inout) :: gear       !! gear
+      real(wp), intent(in) :: s_min(n_struts)   !! [m]
+      real(wp), intent(in) :: s_max(n_struts)   !! [m]
+    end subroutine gear_set_crush_history
+
+    !> Sets the committed axial buffer forces (gear_axial_forces), e.g. the secondaries' forces
+    !! of a previous step, from which the tube friction of the next one follows.
+    pure module subroutine gear_set_axial_forces(gear, axial)
+      type(gear_t), intent(inout) :: gear       !! gear
+      real(wp), intent(in) :: axial(n_struts)   !! [N]
+    end subroutine gear_set_axial_forces
+
+    !> Puts the gear into or out of the rigid state (gear_is_rigid); its rigid caches are dropped
+    !! (recomputed by gear_prepare). A rigid gear must have all struts locked and qd = 0.
+    pure module subroutine gear_set_rigid(gear, rigid)
+      type(gear_t), intent(inout) :: gear       !! gear
+      logical, intent(in) :: rigid              !! rigid [-]
+    end subroutine gear_set_rigid
+
+    !> The primary's tube-friction bound of the committed step (0 when tube friction is off).
+    pure module function gear_tube_bound(gear) result(bound)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: bound                       !! [N]
+    end function gear_tube_bound
+
+    !> The gear's geometry: hard points and nominal strut frames in the gear frame.
+    pure module function gear_geometry(gear) result(geom)
+      type(gear_t), intent(in) :: gear        !! gear
+      type(gear_geometry_t) :: geom           !! geometry [m, -]
+    end function gear_geometry
+
+    !> Strut k's mass model (landyn_strut).
+    pure module function gear_strut(gear, k) result(strut)
+      type(gear_t), intent(in) :: gear        !! gear
+      integer, intent(in) :: k                !! strut: 1 primary, 2 left, 3 right [-]
+      type(strut_t) :: strut                  !! its mass model [kg, m, kg m^2]
+    end function gear_strut
+
+    !> Nominal strut lengths (zero stroke).
+    pure module function gear_nominal_lengths(gear) result(len0)
+      type(gear_t), intent(in) :: gear        !! gear
+      real(wp) :: len0(n_struts)              !! [m]
+    end function gear_nominal_lengths
+
+    ! ---- generalized forces, momentum and inertia terms (landyn_gear_inertia)
+
+    !> Generalized forces: velocity coupling (Q_ine), the uniform field (Q_grv) and the footpad force.
+    module pure subroutine gear_generalized_forces(gear, q, qd, f_field, f_foot, q_ine, q_grv, q_ext)
+      type(gear_t), intent(in) :: gear     !! gear
+      real(wp), intent(in) :: q(n_q)       !! coordinates [m, rad]
+      real(wp), intent(in) :: qd(n_q)      !! velocities [m/s, rad/s]
+      real(wp), intent(in) :: f_field(3)   !! uniform acceleration field (gravity - frame acceleration), gear frame [m/s^2]
+      real(wp), intent(in) :: f_foot(3)    !! force on the footpad, gear frame [N]
+      real(wp), intent(out) :: q_ine(n_q)  !! velocity-coupling generalized force [N, N m]
+      real(wp), intent(out) :: q_grv(n_q)  !! field generalized force [N, N m]
+      real(wp), intent(out) :: q_ext(n_q)  !! footpad-force generalized force [N, N m]
+    end subroutine gear_generalized_forces
+
+    !> generalized_forces with the strut kinematics and mass functions at q given.
+    module pure subroutine generalized_forces(q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+      real(wp), intent(in) :: q(n_q)         !! coordinates [m, rad]
+      real(wp), intent(in) :: qd(n_q)        !! velocities [m/s, rad/s]
+      type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at q
+      real(wp), intent(in) :: f_field(3)     !! uniform field, gear frame [m/s^2]
+      real(wp), intent(in) :: f_foot(3)      !! footpad force, gear frame [N]
+      real(wp), intent(out) :: q_ine(n_q)    !! velocity coupling [N, N m]
+      real(wp), intent(out) :: q_grv(n_q)    !! field [N, N m]
+      real(wp), intent(out) :: q_ext(n_q)    !! footpad force [N, N m]
+    end subroutine generalized_forces
+
+    !> Generalized force -H_a^T alpha of the non-uniform part of the frame's angular-acceleration
+    !! field, -alpha x (r - a) on every leg part (r - a measured from the upper primary joint a):
+    !! per strut, with P its upper joint, the columns of H_a are those of the relative angular
+    !! momentum about a, (P - a) x p_j + J u x u_j (see gear_momentum_maps).
+    module pure function alpha_forces(gear, q, sk, alpha) result(qa)
+      type(gear_t), intent(in) :: gear       !! gear
+      real(wp), intent(in) :: q(n_q)         !! coordinates [m, rad]
+      type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at q
+      real(wp), intent(in) :: alpha(3)       !! angular acceleration, gear axes [rad/s^2]
+      real(wp) :: qa(n_q)                    !! generalized force [N, N m]
+    end function alpha_forces
+
+    !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
+    !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
+    !! the sliding parts of m r and J(L) as in the mass matrix:
+    !!   f = m_s Ldd u + 2 m_s Ld udot + S uddot,
+    !!   H_dot about the upper joint P = u x (2 S1 Ld udot + J uddot), m = P x f + H_dot.
+    module pure subroutine gear_relative_inertia(gear, f_rel, m_rel)
+      type(gear_t), intent(in) :: gear    !! gear with qdd set
+      real(wp), intent(out) :: f_rel(3)   !! relative momentum rate, gear frame [N]
+      real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
+    end subroutine gear_relative_inertia
+
+    !> The legs' relative momentum and angular-momentum rates for given strut kinematics and
+    !! accelerations, in total and per strut (gear_relative_inertia, the joint loads).
+    module pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel, f_strut, h_strut)
+      type(gear_t), intent(in) :: gear       !! gear (q, qd)
+      type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
+      real(wp), intent(in) :: qdd(n_q)       !! generalized accelerations [m/s^2, rad/s^2]
+      real(wp), intent(out) :: f_rel(3)      !! relative momentum rate, gear frame [N]
+      real(wp), intent(out) :: m_rel(3)      !! relative angular momentum rate about O_L [N m]
+      real(wp), intent(out), optional :: f_strut(3, 3)  !! each strut's share of f_rel [N]
+      real(wp), intent(out), optional :: h_strut(3, 3)  !! rate of each strut's relative angular momentum
+                                                        !! about its upper joint [N m]
+    end subroutine relative_inertia
+
+    !> Relative linear momentum, relative angular momentum about the lander origin and relative
+    !! kinetic energy of the leg parts: per strut p = m_s Ld u + S udot and
+    !! h = P x p + J(L) u x udot (spin about the axis neglected, as in the mass matrix).
+    module pure subroutine gear_relative_momenta(gear, p_rel, h_rel, t_rel)
+      type(gear_t), intent(in) :: gear      !! gear
+      real(wp), intent(out) :: p_rel(3)     !! sum m v_rel, gear frame [kg m/s]
+      real(wp), intent(out) :: h_rel(3)     !! relative angular momentum about O_L, gear axes [kg m^2/s]
+      real(wp), intent(out) :: t_rel        !! relative kinetic energy 1/2 qd^T M qd [J]
+    end subroutine gear_relative_momenta
+
+    !> Relative linear momentum and first moment of mass of the leg parts (for the energy audit).
+    module pure subroutine gear_leg_momentum(gear, p_rel, first_moment, leg_mass)
+      type(gear_t), intent(in) :: gear         !! gear
+      real(wp), intent(out) :: p_rel(3)        !! sum m v_rel, gear frame [kg m/s]
+      real(wp), intent(out) :: first_moment(3) !! sum m x, gear frame [kg m]
+      real(wp), intent(out) :: leg_mass        !! sum m [kg]
+    end subroutine gear_leg_momentum
+
+    !> Linear maps from the generalized velocities to the legs' relative linear momentum and their
+    !! relative angular momentum about the lander origin, both in gear axes:
+    !! p_rel = pm qd, h_rel = hm qd (the same quantities as gear_relative_momenta).
+    module pure subroutine gear_momentum_maps(gear, pm, hm)
+      type(gear_t), intent(in) :: gear       !! gear
+      real(wp), intent(out) :: pm(3, n_q)    !! d p_rel / d qd [kg, kg m]
+      real(wp), intent(out) :: hm(3, n_q)    !! d h_rel / d qd [kg m, kg m^2]
+    end subroutine gear_momentum_maps
+
+    ! ---- crush logic and the DAE at one instant (landyn_gear_dynamics)
+
+    !> Accelerations, buffer forces and the force on the body for the current state (Steps 2-4).
+    !! f_foot is the ground force on the footpad and f_field the uniform field, both in the gear frame.
+    !!
+    !! With `dt` present the lock decision is made at velocity level over the coming step (Moreau's
+    !! time-stepping reading of the complementarity): a crushing strut whose sliding speed would
+    !! reverse within the step is locked now with the lock row demanding sd(t + dt) = 0, and it stays
+    !! locked when the force that needs lies within the buffer's bounds. The strut then stops exactly
+    !! at the end of the step instead of overshooting under its full crush force and being stopped by
+    !! the velocity projection, which made the modes chatter (crushing -> locked -> free every few
+    !! steps) and the projection dissipate energy that the crush work had not accounted for.
+    !!
+    !! `alpha` is the body's angular acceleration (gear axes). The uniform field f is the
+    !! acceleration field at the upper primary joint a; the leg parts away from a also feel
+    !! -alpha x (r - a), whose generalized force is -H_a^T alpha with H_a the map from qd to the
+    !! legs' relative angular momentum about a. Without it the legs and the body disagree on the
+    !! work of the angular acceleration during an impact (an energy audit error of ~0.2 % in
+    !! landings with rotation). The remaining frame terms (centrifugal variation over the leg,
+    !! Coriolis) are two orders smaller at the body rates of a landing and are neglected.
+    module subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
+      type(gear_t), intent(in) :: gear             !! gear with its committed state (unchanged)
+      type(gear_eval_t), intent(out) :: ge         !! accelerations, buffer forces, lock decisions, body load
+      real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+      real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
+      real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+      logical, intent(in), optional :: loads       !! compute the interface loads (f_joint, m_joint,
+                                                   !! f_interface); default .true. [-]
+    end subroutine gear_evaluate
+
+    !> Evaluates the gear (gear_evaluate) and commits the result at once (gear_commit), preparing a
+    !! rigid gear's caches first: the gear alone, as the unit tests drive it.
+    module subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt, alpha)
+      type(gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
+      real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
+      real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
+      real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
+    end subroutine gear_dynamics
+
+    !> Makes an evaluation (gear_evaluate) the gear's state: accelerations, buffer forces, lock
+    !! decisions, the load on the body; a gear that broke loose from the rigid state leaves it.
+    module pure subroutine gear_commit(gear, ge)
+      type(gear_t), intent(inout) :: gear          !! gear
+      type(gear_eval_t), intent(in) :: ge          !! its evaluation
+    end subroutine gear_commit
+
+    !> Computes the caches of a gear that has become rigid (gear_settle), so that evaluating it needs
+    !! only the cached factor. Nothing is done for a gear that is not rigid or already prepared.
+    module subroutine gear_prepare(gear, stat, errmsg)
+      type(gear_t), intent(inout) :: gear          !! gear
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    end subroutine gear_prepare
+
+    ! ---- interface loads of the joints (landyn_gear_joint_loads)
+
+    !> Interface loads of a gear, gear frame: the force each upper joint a, b, c puts on the body and
+    !! the force the footpad puts on the primary at its ball joint d (f_joint columns 1-4), and the
+    !! gear's total force on the body (f_interface) from the leg's momentum balance.
+    !!
+    !! Each strut is a free body between its upper joint (no moment: universal joint, spin neglected)
+    !! and its lower end: the ground force at the footpad and the lugs' reactions for the primary
+    !! (-lambda_e, -lambda_f: the multipliers of Phi = [e_pri - e_sec; f_pri - f_sec], M qdd = Q -
+    !! Phi_q^T lambda), +lambda_e, +lambda_f for the left and right secondaries. Its force balance in
+    !! the body frame, with the frame field on all its parts (uniform g - a_frame and the angular
+    !! part -alpha x (r - a)), gives the joint force: body on strut = f_k - F_field,k - F_lower,k,
+    !! with f_k the rate of the strut's relative momentum; the joint's force on the body is its
+    !! negative. The buffer and lock forces are internal to a strut. The footpad (the primary's end
+    !! mass) puts f_foot - m_fp (d_rel'' - field at d) on the primary.
+    !!
+    !! The body of the model carries the legs' mass, so what it receives from a gear in its equations
+    !! is f_body = f_foot - f_rel; the physical interface force adds the legs' weight and inertia in
+    !! the moving frame: f_interface = f_body + m_leg f_field - alpha x (first moment of the legs
+    !! about a). The sum of the three joint forces equals it (the lug reactions cancel).
+    module pure subroutine joint_loads(gear, sk, q, qd, qdd, f_strut, h_strut, lam_phi, f_foot, f_field, alpha, f_body, &
+                                f_joint, m_joint, f_interface)
+      type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
+      type(strut_kin_t), intent(in) :: sk(3)       !! strut kinematics at q
+      real(wp), intent(in) :: q(n_q)               !! coordinates [m, rad]
+      real(wp), intent(in) :: qd(n_q)              !! velocities [m/s, rad/s]
+      real(wp), intent(in) :: qdd(n_q)             !! accelerations [m/s^2, rad/s^2]
+      real(wp), intent(in) :: f_strut(3, 3)        !! rate of each strut's relative momentum [N]
+      real(wp), intent(in) :: h_strut(3, 3)        !! rate of its relative angular momentum about its upper joint [N m]
+      real(wp), intent(in) :: lam_phi(n_phi)       !! multipliers of the lug constraints [N]
+      real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad [N]
+      real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame [m/s^2]
+      real(wp), intent(in) :: alpha(3)             !! body angular acceleration, gear axes [rad/s^2]
+      real(wp), intent(in) :: f_body(3)            !! the gear's load on the body in the model, f_foot - f_rel [N]
+      real(wp), intent(out) :: f_joint(3, 4)       !! forces of a, b, c on the body; footpad on primary at d [N]
+      real(wp), intent(out) :: m_joint(3, 3)       !! moments of a, b, c on the body [N m]
+      real(wp), intent(out) :: f_interface(3)      !! the gear's total physical force on the body [N]
+    end subroutine joint_loads
+
+    ! ---- the step and the constraint correction (landyn_gear_constraints)
+
+    !> Advances the gear one step (semi-implicit Euler), decides the crush modes at the end of the
+    !! step, applies the direct position correction of Step 4 and updates the crush history and the
+    !! absorbed work. The velocity correction (Step 4's second half) is a plastic impact of the whole
+    !! system and is done by the caller for all gears and the body together (landyn_impact); for a
+    !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
+    !! kinetic metric (used by the unit tests of a free gear).
+    module subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity, kick)
+      type(gear_t), intent(inout) :: gear          !! gear
+      real(wp), intent(in) :: dt                   !! time step [s]
+      real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
+      integer, intent(in) :: max_iter              !! iteration cap of the position correction
+      real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
+      real(wp), intent(in), optional :: kick       !! velocity update length (variable-step leapfrog); default dt [s]
+    end subroutine gear_integrate
+
+    !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
+    !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.
+    module pure subroutine gear_settle(gear)
+      type(gear_t), intent(inout) :: gear    !! gear after the velocity projection
+    end subroutine gear_settle
+
+    !> Velocity constraint rows of the gear at its current configuration: Phi_q and one row per
+    !! locked strut (its stroke rate held at zero). A qd = 0 is the velocity constraint.
+    module pure subroutine gear_velocity_rows(gear, a, nrow)
+      type(gear_t), intent(in) :: gear           !! gear
+      real(wp), intent(out) :: a(max_rows, n_q)  !! rows [m/rad, -]
+      integer, intent(out) :: nrow               !! number of rows [-]
+    end subroutine gear_velocity_rows
+  end interface
+
 
 end module landyn_gear

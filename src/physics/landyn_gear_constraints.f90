@@ -2,7 +2,7 @@
 !! modes at the end of the step, the direct position correction dq = -A^+ Phi iterated to the
 !! tolerance (A^+ = A^T (A A^T)^-1), the crush history and work; the velocity rows A of the system
 !! velocity projection (landyn_impact).
-submodule (landyn_gear_model) landyn_gear_constraints
+submodule (landyn_gear) landyn_gear_constraints
   use landyn_kinds, only: msg_len
   use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
   use landyn_lapack, only: solve_spd_unblocked

@@ -12,7 +12,7 @@
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
 !! complement A M^-1 A^T is small and SPD); test_gear solves the unreduced system with LU for
 !! cross-checking.
-submodule (landyn_gear_model) landyn_gear_dynamics
+submodule (landyn_gear) landyn_gear_dynamics
   use landyn_buffer, only: rigid_force
   use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3
   use landyn_lapack, only: solve_spd_unblocked, factor_spd

@@ -7,7 +7,7 @@
 !! f = g - a_body(a_i) (gravity minus the acceleration of the upper primary joint), taken from the
 !! previous step. Rotational (centrifugal, Coriolis) frame terms are neglected: the body rotates at
 !! a few deg/s at most, and their effect on a leg of tens of kg is far below the crush levels.
-submodule (landyn_gear_model) landyn_gear_inertia
+submodule (landyn_gear) landyn_gear_inertia
   use landyn_kinematics, only: cross3
   implicit none
 

@@ -1,6 +1,6 @@
 !> Interface loads of a gear: the forces and moments of the upper joints on the body and of the
 !! footpad on the primary, from each strut's free-body balance (landyn_loads collects them).
-submodule (landyn_gear_model) landyn_gear_joint_loads
+submodule (landyn_gear) landyn_gear_joint_loads
   use landyn_kinematics, only: cross3
   implicit none
 

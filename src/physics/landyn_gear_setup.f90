@@ -1,6 +1,6 @@
 !> The gear's set-up (gear_init), footpad, strut kinematics, mass matrix and strokes, and the
 !! accessors through which the other layers and the tests read and set its (private) state.
-submodule (landyn_gear_model) landyn_gear_setup
+submodule (landyn_gear) landyn_gear_setup
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinematics, only: strut_axis_derivs
   use landyn_status, only: STAT_OK, STAT_FAILED
