@@ -37,6 +37,7 @@ module landyn_study
   use landyn_strings, only: int_text, lower_case
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH
   use landyn_files, only: base_name
+  use landyn_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
   implicit none
@@ -57,10 +58,6 @@ module landyn_study
   integer, parameter :: status_input = EXIT_INPUT        !! invalid input: not run
   integer, parameter :: status_failed = EXIT_DIVERGED    !! the simulation failed (diverged)
   integer, parameter :: status_unhealthy = EXIT_HEALTH   !! completed, but a run-health check failed (docs/health.md)
-  !> Names of the struts of a gear, in the order of the result file's strut axis (Table 3); their
-  !! number bounds measure_strut. The crush lengths themselves take their shape from the results.
-  character(len=*), parameter :: strut_names(3) = [character(len=15) :: 'primary', 'secondary left', &
-                                                   'secondary right']
 
   !> One law variant.
   type :: variant_t
