@@ -172,8 +172,8 @@ module landyn_gear
     end function gear_mass_matrix
 
     !> Diagonal of the mass matrix at q from the struts' mass functions at their lengths q(idx_len).
-    module pure function mass_diagonal(mf, q) result(mdiag)
-      type(strut_mass_functions_t), intent(in) :: mf(n_struts)  !! mass functions [kg, kg m, kg m^2]
+    module pure function mass_diagonal(sk, q) result(mdiag)
+      type(strut_kin_t), intent(in) :: sk(:)  !! strut kinematics with the mass functions [kg, kg m, kg m^2]
       real(wp), intent(in) :: q(n_q)     !! generalized coordinates [m, rad]
       real(wp) :: mdiag(n_q)             !! diagonal of M [kg, kg m^2]
     end function mass_diagonal

@@ -56,7 +56,7 @@ contains
       if (stat /= STAT_OK .or. done) return
     end if
     call strut_kinematics(gear, gear%st%q, sk)
-    mdiag = mass_diagonal(sk%mf, gear%st%q)
+    mdiag = mass_diagonal(sk, gear%st%q)
     call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
     if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
@@ -256,7 +256,7 @@ contains
     integer :: k, i, j, nrow
     nrow = n_phi + 3
     call strut_kinematics(gear, c%q, c%sk_c)
-    c%mdiag_c = mass_diagonal(c%sk_c%mf, c%q)
+    c%mdiag_c = mass_diagonal(c%sk_c, c%q)
     c%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, c%q)
     do k = 1, 3
       c%a_c(n_phi + k, :) = 0.0_wp

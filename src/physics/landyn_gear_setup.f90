@@ -118,18 +118,18 @@ contains
   end procedure cache_kinematics
 
   module procedure gear_mass_matrix
-    type(strut_mass_functions_t) :: mf(n_struts)
+    type(strut_kin_t) :: sk(n_struts)
     integer :: k
     if (gear%st%kin_ok) then
       if (same_coordinates(q, gear%st%kin_q)) then
-        mdiag = mass_diagonal(gear%st%kin%mf, q)
+        mdiag = mass_diagonal(gear%st%kin, q)
         return
       end if
     end if
     do k = 1, n_struts
-      mf(k) = gear%strut(k)%at(q(idx_len(k)))
+      sk(k)%mf = gear%strut(k)%at(q(idx_len(k)))
     end do
-    mdiag = mass_diagonal(mf, q)
+    mdiag = mass_diagonal(sk, q)
   end procedure gear_mass_matrix
 
   module procedure mass_diagonal
@@ -137,9 +137,9 @@ contains
     real(wp) :: jr, c
     do k = 1, 3
       i0 = idx_len(k) - 1
-      jr = mf(k)%j
+      jr = sk(k)%mf%j
       c = cos(q(i0 + 3))
-      mdiag(i0 + 1) = mf(k)%m_s
+      mdiag(i0 + 1) = sk(k)%mf%m_s
       mdiag(i0 + 2) = jr*c*c
       mdiag(i0 + 3) = jr
     end do
