@@ -11,7 +11,7 @@ module landyn_campaign_case
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears, deg2rad
-  use landyn_status, only: EXIT_OK, EXIT_INPUT, EXIT_DIVERGED
+  use landyn_status, only: STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t, run_simulation
@@ -363,7 +363,7 @@ contains
     type(case_row_t), intent(out) :: row    !! row [-]
     integer, intent(out) :: stat            !! 0 ok, 1 inconsistent parts [-]
     integer :: k, l1, l2, l3
-    stat = 1
+    stat = STAT_FAILED
     if (size(ibuf) /= row_int_count .or. size(rbuf) /= row_real_count(n_par, n_gears)) return
     l1 = ibuf(9)
     l2 = ibuf(10)
@@ -395,7 +395,7 @@ contains
     row%message = text(1:l1)
     row%end_reason = text(l1 + 1:l1 + l2)
     row%history_file = text(l1 + l2 + 1:l1 + l2 + l3)
-    stat = 0
+    stat = STAT_OK
   end subroutine unpack_row
 
 end module landyn_campaign_case

@@ -49,7 +49,7 @@ module landyn_campaign_parallel
                                    results_init, results_add, results_rows, results_missing, &
                                    results_take_rows
   use landyn_campaign_journal, only: journal_open, journal_append, journal_flush, journal_read
-  use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_status, only: STAT_FAILED, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_tasks, only: load_or_report, report_probability, report_row
   implicit none
   private
@@ -594,7 +594,7 @@ contains
     integer, intent(out) :: stat            !! 0 ok, 1 malformed [-]
     integer :: ibuf(row_int_count), ni, nr
     real(wp) :: rbuf(row_real_count(n_par, n_gears))
-    stat = 1
+    stat = STAT_FAILED
     ni = size(ibuf)*storage_size(ibuf)/8
     nr = size(rbuf)*storage_size(rbuf)/8
     if (len(buf) < ni + nr) return

@@ -24,6 +24,7 @@
 module landyn_campaign_rng
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp, pi
+  use landyn_status, only: STAT_FAILED, STAT_OK
   implicit none
   private
 
@@ -143,13 +144,13 @@ contains
     real(wp), intent(out) :: x             !! the deviate [deck unit]
     integer, intent(out) :: stat           !! 0 ok, 1 no draw fell inside [lo, hi] [-]
     integer :: k
-    stat = 0
+    stat = STAT_OK
     do k = 0, max_tries - 1
       x = mean + sd*case_normal(seed, case_id, param, k)
       if (x >= lo .and. x <= hi) return
     end do
     x = mean
-    stat = 1
+    stat = STAT_FAILED
   end subroutine case_truncated_normal
 
 end module landyn_campaign_rng

@@ -21,6 +21,7 @@
 module landyn_files
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long_long, c_null_char
   use, intrinsic :: iso_fortran_env, only: iostat_end
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
@@ -66,7 +67,7 @@ contains
 
     text = ''
     msg = ''
-    stat = 0
+    stat = STAT_OK
     if (len(path) == 0) then
       call fail('empty file name')
       return
@@ -126,7 +127,7 @@ contains
       character(len=*), intent(in) :: why        !! reason [-]
       integer, intent(in), optional :: unit      !! open unit to close [-]
       if (present(unit)) close (unit)
-      stat = 1
+      stat = STAT_FAILED
       msg = why
     end subroutine fail
   end subroutine read_whole_file

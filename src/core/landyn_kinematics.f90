@@ -59,6 +59,7 @@
 !! Everything here is pure and allocation-free (fixed-size arrays) for use in the time-step loop.
 module landyn_kinematics
   use landyn_kinds, only: wp
+  use landyn_status, only: STAT_FAILED, STAT_OK
   implicit none
   private
 
@@ -203,12 +204,12 @@ contains
     d = a(1,1)*adj(1,1) + a(1,2)*adj(2,1) + a(1,3)*adj(3,1)
     if (is_singular3(a, d)) then
       ainv = 0.0_wp
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'inv3: singular 3x3 matrix'
       return
     end if
     ainv = adj/d
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
   end subroutine inv3
 
@@ -224,7 +225,7 @@ contains
     d = det3(a)
     if (is_singular3(a, d)) then
       x = 0.0_wp
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'solve3: singular 3x3 matrix'
       return
     end if
@@ -233,7 +234,7 @@ contains
       m(:,k) = rhs
       x(k) = det3(m)/d
     end do
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
   end subroutine solve3
 
@@ -403,7 +404,7 @@ contains
       end do
     end do
     if (.not. (scale > 0.0_wp)) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'build_gear_geometry: all hard points coincide'
       return
     end if
@@ -411,7 +412,7 @@ contains
     do i = 1, 5
       do k = i + 1, 6
         if (norm3(pts(:,k) - pts(:,i)) <= tol) then
-          stat = 1
+          stat = STAT_FAILED
           errmsg = 'build_gear_geometry: hard points ' // names(i) // ' and ' // names(k) // &
                    ' coincide (zero-length strut or degenerate gear)'
           return
@@ -441,7 +442,7 @@ contains
                'configuration (singular footpad Jacobian)'
       return
     end if
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
   end subroutine build_gear_geometry
 
@@ -676,12 +677,12 @@ contains
     end if
     if (is_singular3(j2, det3(j2))) then
       j = 0.0_wp
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'footpad_jacobians: J2 is singular (zero primary length or th2 = +-pi/2)'
       return
     end if
     j = matmul(j2, j3inv)
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
   end subroutine footpad_jacobians
 
@@ -725,11 +726,11 @@ contains
     call strut_angles_from_point(geom%b, geom%R0b, e_pri, q(iq_db1), q(iq_thb1), q(iq_thb2))
     call strut_angles_from_point(geom%c, geom%R0c, f_pri, q(iq_dc1), q(iq_thc1), q(iq_thc2))
     if (.not. (q(iq_d1) > 0.0_wp .and. q(iq_db1) > 0.0_wp .and. q(iq_dc1) > 0.0_wp)) then
-      stat = 1
+      stat = STAT_FAILED
       errmsg = 'gear_coords_from_footpad: zero-length strut'
       return
     end if
-    stat = 0
+    stat = STAT_OK
     errmsg = ''
   end subroutine gear_coords_from_footpad
 

@@ -3,6 +3,7 @@
 !! the paper and with heritage fixed-step codes.
 module landyn_integrator_fixed
   use landyn_kinds, only: wp
+  use landyn_status, only: STAT_INPUT, STAT_OK
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step
   use landyn_integrator, only: integrator_t
@@ -30,10 +31,10 @@ contains
     type(sim_result_t), intent(inout) :: res          !! result
     integer, intent(out) :: stat                      !! 0 on success
     character(len=*), intent(inout) :: errmsg         !! message on failure
-    stat = 0
+    stat = STAT_OK
     self%dt = inp%simulation%dt
     if (.not. (self%dt > 0.0_wp .and. abs(sim%dt - self%dt) <= 0.0_wp)) then
-      stat = 2
+      stat = STAT_INPUT
       errmsg = 'fixed integrator: the simulation was not set up with &simulation dt'
       return
     end if

@@ -4,6 +4,7 @@
 module landyn_simulation
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
+  use landyn_status, only: STAT_INPUT, STAT_OK
   use landyn_config, only: landyn_input_t, integrator_names
   use landyn_sim_core, only: sim_result_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
                              sim_save, sim_restore, n_energy, energy_names
@@ -25,14 +26,14 @@ contains
     class(integrator_t), allocatable, intent(out) :: integ     !! the integrator
     integer, intent(out) :: stat                               !! 0 on success, 2 for an unknown name
     character(len=*), intent(inout) :: errmsg                  !! message on failure
-    stat = 0
+    stat = STAT_OK
     select case (trim(inp%simulation%integrator))
     case ('fixed')
       allocate (fixed_integrator_t :: integ)
     case ('adaptive')
       allocate (adaptive_integrator_t :: integ)
     case default
-      stat = 2
+      stat = STAT_INPUT
       errmsg = "&simulation: integrator = '"//trim(inp%simulation%integrator)//"' is not one of: "//integrator_names
     end select
   end subroutine make_integrator

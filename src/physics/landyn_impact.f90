@@ -34,6 +34,7 @@ module landyn_impact
   use landyn_body, only: body_t
   use landyn_gear_base, only: gear_base_t, gear_slot_t
   use landyn_kinematics, only: mv3
+  use landyn_status, only: STAT_OK
   use landyn_lapack, only: factor_spd_unblocked
   use landyn_small_spd, only: small_upper_solve, small_upper_solve_multi
   implicit none
@@ -86,7 +87,7 @@ contains
     integer :: act(max_gears)
     character(len=msg_len) :: m2
 
-    stat = 0
+    stat = STAT_OK
     dissipated = 0.0_wp
     ! Active gears and their residuals.
     n_act = 0
