@@ -21,7 +21,7 @@ module landyn_input_registry
 
   public :: input_var_t, input_vars, n_groups, group_names, group_components, group_docs, k_real, k_int, k_logical, k_string
   public :: g_simulation, g_contact
-  public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, var_key, closest_name
+  public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, closest_name
 
   integer, parameter :: g_simulation = 1, g_lander = 2, g_engine = 3, g_gears = 4, g_primary = 5, &
                         g_secondary = 6, g_contact = 7, g_friction = 8, g_terrain = 9, g_initial = 10, &
@@ -58,7 +58,7 @@ module landyn_input_registry
     character(len=24) :: name = ''      !! namelist variable name [-]
     integer :: kind = k_real            !! storage class: k_real, k_int, k_logical or k_string [-]
     character(len=56) :: default = ''   !! the component's Fortran initialiser, in storage units (radians) [-]
-    character(len=8) :: length = ''     !! k_string only: the component's length (a number or a limit's name) [-]
+    character(len=16) :: length = ''    !! k_string only: the component's length (a number or a limit's name) [-]
     integer :: n1 = 0                   !! first extent (0: scalar) [-]
     integer :: n2 = 0                   !! second extent (0: rank < 2) [-]
     character(len=10) :: unit = ''      !! unit in the deck ('' if none, '-' dimensionless) [-]
@@ -432,13 +432,6 @@ module landyn_input_registry
     vars_secondary, vars_contact, vars_friction, vars_terrain, vars_initial, vars_output]
 
 contains
-
-  !> 'group%name' of entry iv.
-  pure function var_key(iv) result(s)
-    integer, intent(in) :: iv            !! entry index [-]
-    character(len=:), allocatable :: s   !! key [-]
-    s = trim(group_names(input_vars(iv)%group))//'%'//trim(input_vars(iv)%name)
-  end function var_key
 
   !> Index of a group name, 0 if unknown.
   pure function group_index(name) result(ig)

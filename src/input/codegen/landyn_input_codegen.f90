@@ -8,6 +8,7 @@
 !! when a file cannot be written.
 program landyn_input_codegen
   use landyn_status, only: EXIT_USAGE, EXIT_FILE
+  use landyn_strings, only: int_text, is_ident_char
   use landyn_input_registry, only: input_vars, n_groups, group_names, group_components, group_docs, &
                                    k_real, k_int, k_logical, k_string
   implicit none
@@ -23,6 +24,7 @@ program landyn_input_codegen
     stop EXIT_USAGE
   end if
   call get_command_argument(1, dir)
+  if (.not. registry_fits()) stop EXIT_USAGE
 
   text = groups_source()
   call write_file(trim(dir)//'/landyn_input_groups.f90', text, st)
@@ -33,14 +35,37 @@ program landyn_input_codegen
 
 contains
 
+  !> False (with a message) when a registry text the generator copies into source fills its field:
+  !! it may have been cut, and the source written from it would be wrong.
+  function registry_fits() result(ok)
+    logical :: ok   !! every default, string length and group description fits its field [-]
+    integer :: iv, ig
+    ok = .true.
+    do iv = 1, size(input_vars)
+      if (len_trim(input_vars(iv)%default) == len(input_vars(iv)%default) .or. &
+          len_trim(input_vars(iv)%length) == len(input_vars(iv)%length)) then
+        write (*, '(a)') 'landyn_input_codegen: the default or length of '//trim(group_names(input_vars(iv)%group))// &
+          '%'//trim(input_vars(iv)%name)//' fills its registry field: lengthen the field'
+        ok = .false.
+      end if
+    end do
+    do ig = 1, n_groups
+      if (len_trim(group_docs(ig)) == len(group_docs(ig))) then
+        write (*, '(a)') 'landyn_input_codegen: the description of group '//trim(group_names(ig))// &
+          ' fills its registry field: lengthen the field'
+        ok = .false.
+      end if
+    end do
+  end function registry_fits
+
   !> The source of module landyn_input_groups.
   function groups_source() result(s)
     character(len=:), allocatable :: s  !! Fortran source [-]
     character(len=:), allocatable :: kinds_names, limits_names, types
     integer :: ig, iv
-    kinds_names = 'wp'
-    if (len(used_names([character(len=9) :: 'pi', 'max_gears'])) > 0) &
-      kinds_names = kinds_names//', '//used_names([character(len=9) :: 'pi', 'max_gears'])
+    kinds_names = used_names([character(len=9) :: 'pi', 'max_gears'])
+    if (len(kinds_names) > 0) kinds_names = ', '//kinds_names
+    kinds_names = 'wp'//kinds_names
     limits_names = used_names([character(len=10) :: 'unset_real', 'max_stages', 'name_len', 'path_len'])
     types = ''
     do ig = 1, n_groups
@@ -98,7 +123,6 @@ contains
       '!! Values are in STORAGE units (angles in radians).'//nl// &
       'module landyn_input_access'//nl// &
       '  use landyn_config, only: landyn_input_t'//nl// &
-      '  use landyn_input_registry, only: var_key'//nl// &
       '  use landyn_input_value, only: input_value_t, move'//nl// &
       '  implicit none'//nl//'  private'//nl//nl// &
       '  public :: input_value_t, access_var, get_var'//nl//nl//'contains'//nl//nl// &
@@ -108,15 +132,14 @@ contains
       '    integer, intent(in) :: iv                   !! registry entry [-]'//nl// &
       '    type(input_value_t), intent(inout) :: v     !! value holder [storage unit]'//nl// &
       '    logical, intent(in) :: store                !! .true.: v -> inp; .false.: inp -> v [-]'//nl// &
-      '    select case (var_key(iv))'//nl
+      '    select case (iv)'//nl
     do iv = 1, size(input_vars)
-      s = s//"    case ('"//trim(group_names(input_vars(iv)%group))//'%'//trim(input_vars(iv)%name)//"')"//nl// &
+      s = s//'    case ('//int_text(iv)//')   ! '//trim(group_names(input_vars(iv)%group))//'%'// &
+        trim(input_vars(iv)%name)//nl// &
         '      call move(inp%'//trim(group_components(input_vars(iv)%group))//'%'//trim(input_vars(iv)%name)// &
         ', v, store)'//nl
     end do
-    s = s//'    case default'//nl// &
-      '      continue   ! every entry has a case: this file is generated from the registry'//nl// &
-      '    end select'//nl//'  end subroutine access_var'//nl//nl// &
+    s = s//'    end select'//nl//'  end subroutine access_var'//nl//nl// &
       '  !> The value of entry iv of inp.'//nl// &
       '  pure function get_var(inp, iv) result(v)'//nl// &
       '    type(landyn_input_t), intent(in) :: inp  !! input [-]'//nl// &
@@ -154,8 +177,8 @@ contains
     end select
     decl = '    '//decl//' :: '//trim(input_vars(iv)%name)
     if (input_vars(iv)%n1 > 0) then
-      decl = decl//'('//int_str(input_vars(iv)%n1)
-      if (input_vars(iv)%n2 > 0) decl = decl//', '//int_str(input_vars(iv)%n2)
+      decl = decl//'('//int_text(input_vars(iv)%n1)
+      if (input_vars(iv)%n2 > 0) decl = decl//', '//int_text(input_vars(iv)%n2)
       decl = decl//')'
     end if
     decl = decl//' = '//trim(input_vars(iv)%default)
@@ -207,19 +230,12 @@ contains
       if (k == 0) return
       k = start + k - 1
       yes = .true.
-      if (k > 1) yes = .not. ident_char(text(k - 1:k - 1))
-      if (yes .and. k + len(word) <= len(text)) yes = .not. ident_char(text(k + len(word):k + len(word)))
+      if (k > 1) yes = .not. is_ident_char(text(k - 1:k - 1))
+      if (yes .and. k + len(word) <= len(text)) yes = .not. is_ident_char(text(k + len(word):k + len(word)))
       if (yes) return
       start = k + 1
     end do
   end function has_word
-
-  !> True for a letter, a digit or '_'.
-  pure function ident_char(c) result(yes)
-    character, intent(in) :: c  !! character [-]
-    logical :: yes              !! part of an identifier [-]
-    yes = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z') .or. (c >= '0' .and. c <= '9') .or. c == '_'
-  end function ident_char
 
   !> `text` as comment lines of at most about 100 characters: `first` before the first, `rest`
   !! before the others.
@@ -234,7 +250,9 @@ contains
     a = 1
     do while (a <= len(text))
       b = min(len(text), a + width - 1)
-      if (b < len(text)) b = a + index(text(a:b + 1), ' ', back=.true.) - 2
+      if (b < len(text)) then   ! break at the last blank; a word longer than the width is cut
+        if (index(text(a:b + 1), ' ', back=.true.) > 1) b = a + index(text(a:b + 1), ' ', back=.true.) - 2
+      end if
       s = s//text(a:b)//nl
       a = b + 2
       if (a <= len(text)) s = s//rest
@@ -259,15 +277,6 @@ contains
       a = b + 1
     end do
   end function wrapped
-
-  !> Decimal text of i.
-  function int_str(i) result(s)
-    integer, intent(in) :: i             !! value [-]
-    character(len=:), allocatable :: s   !! text [-]
-    character(len=16) :: buf
-    write (buf, '(i0)') i
-    s = trim(buf)
-  end function int_str
 
   !> Write `text` to `path` (replacing it).
   subroutine write_file(path, text, st)
