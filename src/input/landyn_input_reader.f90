@@ -257,7 +257,7 @@ contains
     integer :: lv_int
     logical :: lv_logical
     character(len=path_len) :: lv_string
-    character(len=:), allocatable :: rest, scratch, buffer
+    character(len=:), allocatable :: rest, scratch, buffer, cls
     namelist /nl_real/ lv_real
     namelist /nl_reals/ lv_reals
     namelist /nl_matrix/ lv_matrix
@@ -267,8 +267,9 @@ contains
     rest = item(nbase + 1:)//' /'
     call access_var(inp, iv, v, .false.)
     e = input_vars(iv)
-    scratch = 'lv_'//scratch_class(e)
-    buffer = '&nl_'//scratch_class(e)//' '//scratch//rest
+    cls = scratch_class(e)
+    scratch = 'lv_'//cls
+    buffer = '&nl_'//cls//' '//scratch//rest
     select case (e%kind)
     case (k_int)
       lv_int = v%i

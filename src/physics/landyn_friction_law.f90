@@ -47,11 +47,10 @@
 !! (check_friction_law_input), so deck validation and factory share one rule.
 module landyn_friction_law
   use landyn_kinds, only: wp
-  use landyn_config, only: friction_cfg_t, name_len
+  use landyn_config, only: friction_cfg_t, name_len, is_set
   use landyn_strings, only: quote_text
   use landyn_real_text, only: fmt_real
   use landyn_law_checks, only: law_build_t
-  use landyn_config, only: is_set
   implicit none
   private
 

@@ -11,7 +11,7 @@ module landyn_law_checks
   implicit none
   private
 
-  public :: law_build_t, positive, nonnegative
+  public :: law_build_t, positive
 
   !> What a law builder works on besides the input and the law (extended by contact_build_t and
   !! friction_build_t): the namelist group, the message prefix, the messages so far, and whether
