@@ -34,18 +34,18 @@ module landyn_gear
   implicit none
   private
 
-  public :: gear_t, buffer_slot_t, gear_state_t, gear_eval_t, strut_mass_t, strut_t
+  public :: gear_t, gear_state_t, gear_eval_t, strut_mass_t, strut_t
   public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments
-  public :: gear_strokes, gear_strut_lengths, gear_leg_mass, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
+  public :: gear_strokes, gear_strut_lengths, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
   public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
   public :: gear_coordinates, gear_accelerations, gear_set_coordinates, gear_set_locks, gear_slide_directions
   public :: gear_set_crush_history, gear_set_axial_forces, gear_set_rigid, gear_tube_bound, gear_geometry
   public :: gear_strut, gear_nominal_lengths
-  public :: gear_generalized_forces, gear_relative_inertia, gear_relative_momenta, gear_leg_momentum, gear_momentum_maps
+  public :: gear_generalized_forces, gear_relative_momenta, gear_leg_momentum, gear_momentum_maps
   public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
-  public :: gear_integrate, gear_settle, gear_velocity_rows, GEAR_DRIFT, GEAR_NOT_CONVERGED
+  public :: gear_integrate, gear_settle, gear_velocity_rows
   public :: n_struts, strut_names, n_q, n_phi, max_rows, idx_len
 
   integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
@@ -55,8 +55,6 @@ module landyn_gear
   integer, parameter :: n_phi = n_gear_phi                !! holonomic constraints per gear (landyn_kinematics) [-]
   integer, parameter :: max_rows = n_phi + n_struts       !! constraint rows per gear at most (Phi_q and the locks) [-]
   integer, parameter :: idx_len(n_struts) = [iq_d1, iq_db1, iq_dc1]   !! index of each strut's length in q [-]
-  integer, parameter :: GEAR_DRIFT = 2            !! from gear_integrate when the violation before correction exceeds max_drift [-]
-  integer, parameter :: GEAR_NOT_CONVERGED = 3    !! from gear_integrate when the position correction did not converge [-]
 
   !> Holder for a polymorphic buffer law (one per strut).
   type :: buffer_slot_t
@@ -164,6 +162,15 @@ module landyn_gear
       type(strut_kin_t), intent(out) :: sk(3) !! per-strut kinematics
     end subroutine strut_kinematics
 
+    !> The strut kinematics computed afresh from the geometry and the struts alone (never from the
+    !! gear's state: a caller may be writing that state while it asks).
+    module pure subroutine kinematics_at(geom, strut, q, sk)
+      type(gear_geometry_t), intent(in) :: geom     !! hard points and nominal strut frames, gear frame
+      type(strut_t), intent(in) :: strut(n_struts)  !! the struts' mass models
+      real(wp), intent(in) :: q(n_q)                !! coordinates [m, rad]
+      type(strut_kin_t), intent(inout) :: sk(3)     !! per-strut kinematics (every component set)
+    end subroutine kinematics_at
+
     !> Diagonal of the mass matrix M(q).
     module pure function gear_mass_matrix(gear, q) result(mdiag)
       type(gear_t), intent(in) :: gear   !! gear
@@ -225,10 +232,6 @@ module landyn_gear
       real(wp) :: len(n_struts)               !! strut lengths [m]
     end function gear_strut_lengths
 
-    !> Mass of the leg parts, the sum of the strut masses.
-    module pure real(wp) function gear_leg_mass(gear) result(m)
-      type(gear_t), intent(in) :: gear        !! gear
-    end function gear_leg_mass
 
     !> Gear frame -> lander frame rotation.
     module pure function gear_rotation(gear) result(rot)
@@ -475,19 +478,12 @@ module landyn_gear
       real(wp) :: qa(n_q)                    !! generalized force [N, N m]
     end function alpha_forces
 
-    !> Rate of the legs' relative linear momentum (f_rel) and of their relative angular momentum
-    !! about the lander origin (m_rel), from q, qd, qdd. Per strut, with S = sum m r, S1 = sum over
-    !! the sliding parts of m r and J(L) as in the mass matrix:
-    !!   f = m_s Ldd u + 2 m_s Ld udot + S uddot,
-    !!   H_dot about the upper joint P = u x (2 S1 Ld udot + J uddot), m = P x f + H_dot.
-    module pure subroutine gear_relative_inertia(gear, f_rel, m_rel)
-      type(gear_t), intent(in) :: gear    !! gear with qdd set
-      real(wp), intent(out) :: f_rel(3)   !! relative momentum rate, gear frame [N]
-      real(wp), intent(out) :: m_rel(3)   !! relative angular momentum rate about O_L, gear axes [N m]
-    end subroutine gear_relative_inertia
 
     !> The legs' relative momentum and angular-momentum rates for given strut kinematics and
-    !! accelerations, in total and per strut (gear_relative_inertia, the joint loads).
+    !! accelerations, in total and per strut (the gear DAE, the joint loads). Per strut, with
+    !! S = sum m r, S1 = sum over the sliding parts of m r and J(L) as in the mass matrix:
+    !!   f = m_s Ldd u + 2 m_s Ld udot + S uddot,
+    !!   H_dot about the upper joint P = u x (2 S1 Ld udot + J uddot), m = P x f + H_dot.
     module pure subroutine relative_inertia(gear, sk, qdd, f_rel, m_rel, f_strut, h_strut)
       type(gear_t), intent(in) :: gear       !! gear (q, qd)
       type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q

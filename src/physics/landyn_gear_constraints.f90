@@ -7,7 +7,7 @@ submodule (landyn_gear) landyn_gear_constraints
   use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, STAT_DIVERGED
   use landyn_tube_friction, only: add_tube_bound
   implicit none
 
@@ -55,7 +55,7 @@ contains
     viol = maxval(abs(r(1:n_phi)))
     gear%st%max_drift = max(gear%st%max_drift, viol)
     if (viol > max_drift) then
-      stat = GEAR_DRIFT
+      stat = STAT_DIVERGED
       write (buf, '(a,es10.3,a,es10.3,a)') 'constraint drift ', viol, ' m in one step exceeds ', max_drift, &
         ' m: the time step is too large for this landing (reduce &simulation dt)'
       errmsg = buf
@@ -71,7 +71,7 @@ contains
     end do
     viol = maxval(abs(r(1:nrow)))
     if (viol > tol) then
-      stat = GEAR_NOT_CONVERGED
+      stat = STAT_DIVERGED
       write (buf, '(a,i0,a,es10.3,a,es10.3,a)') 'position constraint correction did not converge in ', max_iter, &
         ' iterations (violation ', viol, ' m, tolerance ', tol, ' m)'
       errmsg = buf
@@ -141,6 +141,7 @@ contains
       if (stat /= STAT_OK) then
         write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
           '): redundant constraints or a singular configuration'
+        stat = STAT_DIVERGED
         return
       end if
       do i = 1, nrow

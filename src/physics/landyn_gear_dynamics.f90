@@ -255,7 +255,8 @@ contains
     character(len=*), intent(inout) :: errmsg    !! message
     integer :: k, i, j, nrow
     nrow = n_phi + 3
-    call strut_kinematics(gear, c%q, c%sk_c)
+    ! afresh, not strut_kinematics: c may be gear%st, whose kinematics cache this must not read
+    call kinematics_at(gear%geom, gear%strut, c%q, c%sk_c)
     c%mdiag_c = mass_diagonal(c%sk_c, c%q)
     c%a_c(1:n_phi, :) = gear_constraint_jacobian(gear%geom, c%q)
     do k = 1, 3

@@ -22,10 +22,10 @@ contains
   module procedure generalized_forces
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: jr, jp, c, sn, len, lend, t1d, t2d, fm
+    real(wp) :: jr, jp, c, sn, lend, t1d, t2d, fm
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = q(i0 + 1); lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
+      lend = qd(i0 + 1); t1d = qd(i0 + 2); t2d = qd(i0 + 3)
       mf = sk(k)%mf
       jr = mf%j
       jp = mf%dj
@@ -47,10 +47,9 @@ contains
   module procedure alpha_forces
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: len, sm, jr, pa(3)
+    real(wp) :: sm, jr, pa(3)
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = q(i0 + 1)
       mf = sk(k)%mf
       sm = mf%s
       jr = mf%j
@@ -61,21 +60,16 @@ contains
     end do
   end procedure alpha_forces
 
-  module procedure gear_relative_inertia
-    type(strut_kin_t) :: sk(3)
-    call strut_kinematics(gear, gear%st%q, sk)
-    call relative_inertia(gear, sk, gear%st%qdd, f_rel, m_rel)
-  end procedure gear_relative_inertia
 
   module procedure relative_inertia
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: ud(3), udd(3), f(3), hd(3), len, ld, ldd, t1d, t2d, sm, s1, jr
+    real(wp) :: ud(3), udd(3), f(3), hd(3), ld, ldd, t1d, t2d, sm, s1, jr
     f_rel = 0.0_wp
     m_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%st%q(i0 + 1); ld = gear%st%qd(i0 + 1); ldd = qdd(i0 + 1)
+      ld = gear%st%qd(i0 + 1); ldd = qdd(i0 + 1)
       mf = sk(k)%mf
       t1d = gear%st%qd(i0 + 2); t2d = gear%st%qd(i0 + 3)
       ud = sk(k)%u1*t1d + sk(k)%u2*t2d
@@ -109,13 +103,12 @@ contains
     real(wp), intent(out) :: t_rel         !! relative kinetic energy [J]
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: ud(3), p(3), len, sm, jr, c
+    real(wp) :: ud(3), p(3), sm, jr, c
     p_rel = 0.0_wp
     h_rel = 0.0_wp
     t_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%st%q(i0 + 1)
       mf = sk(k)%mf
       ud = sk(k)%u1*qd(i0 + 2) + sk(k)%u2*qd(i0 + 3)
       sm = mf%s
@@ -132,12 +125,11 @@ contains
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: ud(3), len, sm
+    real(wp) :: ud(3), sm
     call strut_kinematics(gear, gear%st%q, sk)
     p_rel = 0.0_wp
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%st%q(i0 + 1)
       mf = sk(k)%mf
       ud = sk(k)%u1*gear%st%qd(i0 + 2) + sk(k)%u2*gear%st%qd(i0 + 3)
       sm = mf%s
@@ -151,11 +143,10 @@ contains
     type(strut_kin_t) :: sk(3)
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
-    real(wp) :: len, sm, jr
+    real(wp) :: sm, jr
     call strut_kinematics(gear, gear%st%q, sk)
     do k = 1, 3
       i0 = idx_len(k) - 1
-      len = gear%st%q(i0 + 1)
       mf = sk(k)%mf
       sm = mf%s
       jr = mf%j

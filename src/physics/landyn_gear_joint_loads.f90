@@ -7,7 +7,7 @@ submodule (landyn_gear) landyn_gear_joint_loads
 contains
 
   module procedure joint_loads
-    real(wp) :: f_low(3, 3), f_fld(3), sm, len, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
+    real(wp) :: f_low(3, 3), f_fld(3), sm, ud(3), udd(3), dd(3), fm(3), m_leg, jr, tau(3), n(3), r0(3, 3)
     real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3), rp(3, 3)
     integer :: k, i0
     type(strut_mass_functions_t) :: mf
@@ -25,7 +25,6 @@ contains
     e_sec = sk(2)%p + q(idx_len(2))*sk(2)%u
     f_sec = sk(3)%p + q(idx_len(3))*sk(3)%u
     do k = 1, 3
-      len = q(idx_len(k))
       mf = sk(k)%mf
       sm = mf%s
       jr = mf%j

@@ -79,24 +79,20 @@ contains
         return
       end if
     end if
-    call kinematics_at(gear, q, sk)
+    call kinematics_at(gear%geom, gear%strut, q, sk)
   end procedure strut_kinematics
 
-  !> strut_kinematics computed afresh.
-  pure subroutine kinematics_at(gear, q, sk)
-    type(gear_t), intent(in) :: gear        !! gear
-    real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
-    type(strut_kin_t), intent(inout) :: sk(3)  !! per-strut kinematics (every component set)
-    sk(1)%p = gear%geom%a
-    sk(2)%p = gear%geom%b
-    sk(3)%p = gear%geom%c
-    call strut_axis_derivs(gear%geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
-    call strut_axis_derivs(gear%geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
-    call strut_axis_derivs(gear%geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
-    sk(1)%mf = gear%strut(1)%at(q(idx_len(1)))
-    sk(2)%mf = gear%strut(2)%at(q(idx_len(2)))
-    sk(3)%mf = gear%strut(3)%at(q(idx_len(3)))
-  end subroutine kinematics_at
+  module procedure kinematics_at
+    sk(1)%p = geom%a
+    sk(2)%p = geom%b
+    sk(3)%p = geom%c
+    call strut_axis_derivs(geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
+    call strut_axis_derivs(geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
+    call strut_axis_derivs(geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+    sk(1)%mf = strut(1)%at(q(idx_len(1)))
+    sk(2)%mf = strut(2)%at(q(idx_len(2)))
+    sk(3)%mf = strut(3)%at(q(idx_len(3)))
+  end procedure kinematics_at
 
   !> a and b are the same coordinates, bit for bit (so that a cache keyed on them gives exactly
   !! what computing afresh would).
@@ -112,7 +108,7 @@ contains
   end function same_coordinates
 
   module procedure cache_kinematics
-    call kinematics_at(gear, gear%st%q, gear%st%kin)
+    call kinematics_at(gear%geom, gear%strut, gear%st%q, gear%st%kin)
     gear%st%kin_q = gear%st%q
     gear%st%kin_ok = .true.
   end procedure cache_kinematics
@@ -166,10 +162,9 @@ contains
   module procedure leg_first_moment
     integer :: k
     type(strut_mass_functions_t) :: mf
-    real(wp) :: len, sm
+    real(wp) :: sm
     fm = 0.0_wp
     do k = 1, 3
-      len = q(idx_len(k))
       mf = sk(k)%mf
       sm = mf%s
       fm = fm + mf%m_tot*sk(k)%p + sm*sk(k)%u
@@ -184,9 +179,6 @@ contains
     len = gear%st%q(idx_len)
   end procedure gear_strut_lengths
 
-  module procedure gear_leg_mass
-    m = gear%leg_mass
-  end procedure gear_leg_mass
 
   module procedure gear_rotation
     rot = gear%rot
