@@ -27,7 +27,7 @@
 module landyn_gear
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
-  use landyn_gear_base, only: gear_eval_t   ! the evaluation record of every gear type
+  use landyn_gear_base, only: gear_eval_t, strut_mode   ! the evaluation record and mode codes of every gear type
   use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
@@ -271,9 +271,7 @@ module landyn_gear
       integer :: m(n_struts)                  !! [-]
     end function gear_strut_modes
 
-    !> Crush mode of each strut: 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding
-    !! against a nonzero bound), 2 sliding freely inside the crushed range (no force; its direction
-    !! of motion is not a mode).
+    !> Crush mode of each strut (landyn_gear_base's strut_mode).
     module pure function strut_modes(locked, axial, dir) result(m)
       logical, intent(in) :: locked(n_struts)   !! struts locked [-]
       real(wp), intent(in) :: axial(n_struts)   !! axial buffer forces [N]

@@ -15,7 +15,7 @@ module landyn_gear_base
   implicit none
   private
 
-  public :: gear_base_t, gear_eval_t, gear_snapshot_t, gear_slot_t, gear_snapshot_slot_t, strut_name_len
+  public :: gear_base_t, gear_eval_t, gear_snapshot_t, gear_slot_t, gear_snapshot_slot_t, strut_name_len, strut_mode
 
   integer, parameter :: strut_name_len = 15     !! length of a strut's name [-]
 
@@ -336,5 +336,23 @@ module landyn_gear_base
       class(gear_snapshot_t), intent(in) :: snap  !! saved state
     end subroutine restore_iface
   end interface
+
+contains
+
+  !> Crush mode of a strut, the same codes for every gear type (the simulation counts their
+  !! switches): 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding against a nonzero
+  !! bound), 2 sliding freely inside the crushed range (no force; its direction is not a mode).
+  elemental integer function strut_mode(locked, axial, dir) result(m)
+    logical, intent(in) :: locked     !! strut locked [-]
+    real(wp), intent(in) :: axial     !! axial buffer force [N]
+    integer, intent(in) :: dir        !! sliding direction [-]
+    if (locked) then
+      m = 0
+    else if (abs(axial) > tiny(1.0_wp)) then
+      m = sign(1, dir)
+    else
+      m = 2
+    end if
+  end function strut_mode
 
 end module landyn_gear_base

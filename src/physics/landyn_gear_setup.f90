@@ -205,16 +205,7 @@ contains
   end procedure gear_strut_modes
 
   module procedure strut_modes
-    integer :: k
-    do k = 1, n_struts
-      if (locked(k)) then
-        m(k) = 0
-      else if (abs(axial(k)) > tiny(1.0_wp)) then
-        m(k) = sign(1, dir(k))
-      else
-        m(k) = 2
-      end if
-    end do
+    m = strut_mode(locked, axial, dir)
   end procedure strut_modes
 
   module procedure gear_is_rigid
