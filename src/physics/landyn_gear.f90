@@ -159,7 +159,8 @@ module landyn_gear
     module pure subroutine strut_kinematics(gear, q, sk)
       type(gear_t), intent(in) :: gear        !! gear
       real(wp), intent(in) :: q(n_q)          !! coordinates [m, rad]
-      type(strut_kin_t), intent(out) :: sk(3) !! per-strut kinematics
+      type(strut_kin_t), intent(inout) :: sk(3) !! per-strut kinematics (every component set; inout so
+                                                !! that the record is not reset before it is overwritten)
     end subroutine strut_kinematics
 
     !> The strut kinematics computed afresh from the geometry and the struts alone (never from the

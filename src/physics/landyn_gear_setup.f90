@@ -62,7 +62,15 @@ contains
 
   module procedure gear_footpad
     real(wp) :: u(3), du1(3), du2(3), d11(3), d12(3), d22(3), v(n_q)
-    call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
+    ! the primary's axis from the kinematics cache when it holds the current coordinates (it does
+    ! after every step): the same values strut_axis_derivs gives
+    if (gear%st%kin_ok .and. same_coordinates(gear%st%q, gear%st%kin_q)) then
+      u = gear%st%kin(1)%u
+      du1 = gear%st%kin(1)%u1
+      du2 = gear%st%kin(1)%u2
+    else
+      call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
+    end if
     if (present(qd)) then
       v = qd
     else
