@@ -27,8 +27,9 @@ module landyn_integrator_adaptive
   use landyn_kinds, only: wp, msg_len
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
-                             sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
+                             sim_evaluate, sim_book, sim_accept, finish, body_is_finite
   use landyn_integrator, only: integrator_t
+  use landyn_scheme_leapfrog, only: leapfrog_advance
   implicit none
   private
 
@@ -125,7 +126,7 @@ contains
       if (t_new >= self%t_end - self%slack) t_new = self%t_end
       err = 0.0_wp
       event = .false.
-      call sim_advance(sim, inp, self%evs(self%i_cur), h, stat, m2, kick=kick(self, h))
+      call leapfrog_advance(sim, inp, self%evs(self%i_cur), h, stat, m2, kick=kick(self, h))
       ok = stat == 0
       if (ok) ok = body_is_finite(sim%model%body)
       if (ok) then

@@ -12,12 +12,11 @@
 !!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
 !!   4. gear step with the direct constraint-violation correction.
 module landyn_sim_core
-  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, g_earth, rad2deg
+  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q, g_earth, rad2deg
   use landyn_config, only: landyn_input_t
   use landyn_kinematics, only: cross3, mv3, mtv3
-  use landyn_body, only: body_t, body_accelerations, body_step, body_point_position, body_point_velocity, &
+  use landyn_body, only: body_t, body_accelerations, body_point_position, body_point_velocity, &
                          body_point_acceleration, body_kinetic_energy
-  use landyn_impact, only: system_velocity_projection
   use landyn_gear_base, only: gear_slot_t
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
@@ -26,13 +25,14 @@ module landyn_sim_core
   use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
                               sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
                               max_primary_stroke
+  use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_sim_result, only: sim_result_t, allocate_result, record, finish, n_energy, energy_names
   implicit none
   private
 
   public :: sim_result_t
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
-  public :: sim_evaluate, sim_book, sim_advance, sim_accept, finish, body_is_finite
+  public :: sim_evaluate, sim_book, sim_accept, finish, body_is_finite
   public :: n_energy, energy_names
   public :: SIM_NON_FINITE
 
@@ -102,7 +102,7 @@ contains
       done = .true.
       return
     end if
-    call sim_advance(sim, inp, ev, dt, stat, errmsg)
+    call leapfrog_advance(sim, inp, ev, dt, stat, errmsg)
     if (stat /= 0) then
       call finish(sim%model, res, t + dt)
       done = .true.
@@ -117,7 +117,7 @@ contains
   !! states, each gear's crush logic and DAE (dt enters only the velocity-level lock decisions),
   !! the loads on the body and its accelerations. The simulation is not changed (intent(in)):
   !! the accelerations, strut forces, lock decisions and footpad states are the evaluation's, and
-  !! sim_advance commits the evaluation the step is taken with.
+  !! the step (landyn_scheme_leapfrog) commits the evaluation it is taken with.
   subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field, v_lead)
     type(sim_t), intent(in) :: sim              !! simulation (unchanged)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
@@ -139,6 +139,7 @@ contains
     integer :: ng, i, ns, nq
     type(body_t) :: body
     logical :: thrusting, locked(max_struts)
+    real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
     real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
@@ -158,13 +159,20 @@ contains
       ! ---- Step 2: footpads and ground forces
       do i = 1, ng
         rg = model%rot(:, :, i)
-        call model%gear(i)%g%footpad(pos_g, vel_g, v_lead)
+        if (present(v_lead)) then
+          nq = model%n_q(i)
+          call model%gear(i)%g%rates(qd_led(1:nq))
+          call model%gear(i)%g%accelerations(qdd_c(1:nq))
+          call model%gear(i)%g%footpad(pos_g, vel_g, qd_led(1:nq) + v_lead*qdd_c(1:nq))
+        else
+          call model%gear(i)%g%footpad(pos_g, vel_g)
+        end if
         d_l = mv3(rg, pos_g)
         ev%xd(:, i) = body_point_position(body, d_l)
         ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(rg, vel_g))
         ev%delta(i) = penetration(model%plane(i), ev%xd(:, i))
         delta_dot(i) = penetration_rate(model%plane(i), ev%vd(:, i))
-        ! trial footpad state of this step: committed with the step (sim_advance)
+        ! trial footpad state of this step: committed with the step (sim_commit_discrete)
         ev%trial(i) = model%footpad(i)
         if (model%contact%has_history) call advance_contact_state(ev%trial(i)%contact, ev%delta(i), delta_dot(i))
         if (ev%delta(i) > 0.0_wp) then
@@ -324,62 +332,6 @@ contains
                 inp%simulation%gravity)
     call restore_velocities(sim%model, kept)
   end subroutine record_sample
-
-  !> Steps 4 and 6: semi-implicit Euler over dt for the body and the gears with the accelerations
-  !! of the evaluation `ev`, the gears' constraint-violation correction, the velocity projection of
-  !! the whole system (plastic impacts, booked in w_impact), then the commit: footpad histories and
-  !! stick states from the evaluation's trial copy, rigid gears settled. stat /= 0 (drift, no
-  !! convergence, projection failure) leaves the simulation in an unusable state: restore a
-  !! snapshot or stop.
-  subroutine sim_advance(sim, inp, ev, dt, stat, errmsg, kick)
-    type(sim_t), intent(inout) :: sim           !! simulation, advanced to t + dt
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
-    type(sim_eval_t), intent(in) :: ev          !! evaluation of the state at t (sim_evaluate)
-    real(wp), intent(in) :: dt                  !! step [s]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-    real(wp), intent(in), optional :: kick      !! velocity update length (variable-step leapfrog, the
-                                                !! step the evaluation was made for); default dt [s]
-    integer :: ng, i
-    real(wp) :: e_imp
-    character(len=msg_len) :: m2
-
-    ng = sim%model%n_gears
-    associate (model => sim%model)
-      ! ---- commit the evaluation the step is taken with: accelerations, strut forces and modes
-      model%body%acc = ev%acc
-      model%body%alpha = ev%alpha
-      do i = 1, ng
-        call model%gear(i)%g%commit(ev%gear(i))
-      end do
-      call body_step(model%body, dt, kick)
-      do i = 1, ng
-        call model%gear(i)%g%integrate(dt, inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
-                                       inp%simulation%max_constraint_drift, stat, m2, kick=kick)
-        if (stat /= 0) then
-          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', ev%t + dt, ' s: ', trim(m2)
-          return
-        end if
-      end do
-      call system_velocity_projection(model%body, model%gear, ng, inp%simulation%constraint_tol, e_imp, stat, m2)
-      if (stat /= 0) then
-        write (errmsg, '(a,es12.5,a,a)') 'velocity projection at t = ', ev%t + dt, ' s: ', trim(m2)
-        return
-      end if
-      sim%loop%w_impact = sim%loop%w_impact + e_imp
-      ! ---- commit: footpad histories and stick states, strut modes
-      model%footpad(1:ng) = ev%trial(1:ng)
-      do i = 1, ng
-        call model%gear(i)%g%settle()
-        call model%gear(i)%g%prepare(stat, m2)
-        if (stat /= 0) then
-          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', ev%t + dt, ' s: ', trim(m2)
-          return
-        end if
-      end do
-      sim%loop%n = sim%loop%n + 1
-    end associate
-  end subroutine sim_advance
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
   !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = SIM_NON_FINITE = 4).

@@ -92,7 +92,7 @@ module landyn_sim_model
     real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
     real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]
     type(gear_eval_t) :: gear(max_gears)               !! each gear's evaluation: accelerations, buffer
-                                                       !! forces, lock decisions (committed by sim_advance)
+                                                       !! forces, lock decisions (committed by the step)
     real(wp) :: qdd(max_gear_q, max_gears) = 0.0_wp    !! gear accelerations [m/s^2, rad/s^2]
     real(wp) :: q_weight(max_gear_q, max_gears) = 0.0_wp  !! error weights of the gear accelerations (the
                                                        !! gear's coordinate_weights) [-, m]

@@ -14,7 +14,7 @@ module landyn_body
   implicit none
   private
 
-  public :: body_t, body_init, body_accelerations, body_step
+  public :: body_t, body_init, body_accelerations, body_increment
   public :: body_point_position, body_point_velocity, body_point_acceleration
   public :: body_kinetic_energy, inertia_tensor
 
@@ -95,21 +95,18 @@ contains
     body%alpha = mv3(body%inv_inertia, moment - cross3(body%omega, h))
   end subroutine body_accelerations
 
-  !> One semi-implicit Euler step with the accelerations already set.
-  pure subroutine body_step(body, dt, kick)
+  !> Moves the body along its stored velocities for h: x <- x + v h, Euler angles by their rates
+  !! at the present attitude (E(theta) omega h), the rotation matrix with them. The update formula
+  !! of a step is the integrator's (numerics/); this is the position increment it asks for.
+  pure subroutine body_increment(body, h)
     type(body_t), intent(inout) :: body   !! body
-    real(wp), intent(in) :: dt            !! time step [s]
-    real(wp), intent(in), optional :: kick  !! velocity update length (variable-step leapfrog); default dt [s]
-    real(wp) :: e(3, 3), hk
-    hk = dt
-    if (present(kick)) hk = kick
-    body%v = body%v + body%acc*hk
-    body%x = body%x + body%v*dt
-    body%omega = body%omega + body%alpha*hk
+    real(wp), intent(in) :: h             !! duration of the move [s]
+    real(wp) :: e(3, 3)
+    body%x = body%x + body%v*h
     e = euler_rate_matrix(body%euler(2), body%euler(3))
-    body%euler = body%euler + mv3(e, body%omega)*dt
+    body%euler = body%euler + mv3(e, body%omega)*h
     body%r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))
-  end subroutine body_step
+  end subroutine body_increment
 
   !> Global position of a point given in the lander frame.
   pure function body_point_position(body, p) result(x)

@@ -36,7 +36,7 @@ module landyn_gear
 
   public :: gear_t, gear_state_t, gear_eval_t, strut_mass_t, strut_t
   public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy, gear_law_segments
-  public :: gear_strokes, gear_strut_lengths, gear_rotation, gear_rates, gear_set_rates, gear_led_rates
+  public :: gear_strokes, gear_strut_lengths, gear_rotation, gear_rates, gear_set_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
   public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
@@ -45,7 +45,7 @@ module landyn_gear
   public :: gear_strut, gear_nominal_lengths
   public :: gear_generalized_forces, gear_relative_momenta, gear_leg_momentum, gear_momentum_maps
   public :: gear_evaluate, gear_commit, gear_prepare, gear_dynamics
-  public :: gear_integrate, gear_settle, gear_velocity_rows
+  public :: gear_arrest, gear_increment, gear_correct_positions, gear_project_alone, gear_settle, gear_velocity_rows
   public :: n_struts, strut_names, n_q, n_phi, max_rows, idx_len
 
   integer, parameter :: n_struts = 3                      !! struts per gear (primary, left, right) [-]
@@ -99,7 +99,7 @@ module landyn_gear
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.
-    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_integrate;
+    logical :: rigid = .false.                    !! all struts locked and qd = 0 (set by gear_settle;
                                                   !! changing locked or qd from outside requires rigid = .false.)
     logical :: rigid_cache = .false.              !! the caches below are valid
     type(strut_kin_t) :: sk_c(n_struts)                  !! cached strut kinematics
@@ -110,7 +110,7 @@ module landyn_gear
     real(wp) :: phq(n_phi, n_q) = 0.0_wp          !! cached Phi_q [-, m]
     real(wp) :: phq_q(n_q) = 0.0_wp               !! its q [m, rad]
     ! The strut kinematics and mass functions at the current coordinates (strut_kinematics),
-    ! computed once per step (gear_integrate) and reused by every evaluation at the same q (the
+    ! computed once per step (gear_correct_positions) and reused by every evaluation at the same q (the
     ! dynamics, the velocity projection's momentum maps and mass matrix, the energy audit).
     logical :: kin_ok = .false.                   !! kin is valid for the coordinates kin_q [-]
     real(wp) :: kin_q(n_q) = 0.0_wp               !! coordinates of the cached kinematics [m, rad]
@@ -252,13 +252,6 @@ module landyn_gear
       type(gear_t), intent(inout) :: gear     !! gear
       real(wp), intent(in) :: qd(n_q)         !! [m/s, rad/s]
     end subroutine gear_set_rates
-
-    !> The generalized velocities led by `lead` times the committed accelerations, qd + lead qdd.
-    module pure function gear_led_rates(gear, lead) result(qd)
-      type(gear_t), intent(in) :: gear        !! gear
-      real(wp), intent(in) :: lead            !! [s]
-      real(wp) :: qd(n_q)                     !! [m/s, rad/s]
-    end function gear_led_rates
 
     !> Which struts are locked (committed state).
     module pure function gear_locks(gear) result(locked)
@@ -620,25 +613,47 @@ module landyn_gear
       real(wp), intent(out) :: f_interface(3)      !! the gear's total physical force on the body [N]
     end subroutine joint_loads
 
-    ! ---- the step and the constraint correction (landyn_gear_constraints)
+    ! ---- what a time integrator needs of the gear besides its evaluation (landyn_gear_constraints):
+    ! the discrete decision at the end of a step, a position increment, the position projection.
+    ! The update formula itself is the integrator's (numerics/).
 
-    !> Advances the gear one step (semi-implicit Euler), decides the crush modes at the end of the
-    !! step, applies the direct position correction of Step 4 and updates the crush history and the
-    !! absorbed work. The velocity correction (Step 4's second half) is a plastic impact of the whole
-    !! system and is done by the caller for all gears and the body together (landyn_impact); for a
-    !! gear alone, with the body held fixed, `velocity = .true.` projects here in the gear's own
-    !! kinetic metric (used by the unit tests of a free gear).
-    module subroutine gear_integrate(gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity, kick)
+    !> The rigid-plastic crush law's decision over a step: a crushing strut whose stroke rate would
+    !! reverse between the committed rates and the end-of-step rates `qd_end` (the integrator's
+    !! candidate) while its buffer resists in its direction of motion locks at its present stroke.
+    !! Leaves the rigid state (a gear that moves is not rigid).
+    module pure subroutine gear_arrest(gear, qd_end)
+      type(gear_t), intent(inout) :: gear          !! gear (committed state of the step's start)
+      real(wp), intent(in) :: qd_end(n_q)          !! end-of-step generalized velocities [m/s, rad/s]
+    end subroutine gear_arrest
+
+    !> Moves the coordinates by qd h (q <- q + qd h) and books the crush work of the committed
+    !! buffer forces over the stroke increment of every strut that is not locked.
+    module pure subroutine gear_increment(gear, qd, h)
       type(gear_t), intent(inout) :: gear          !! gear
-      real(wp), intent(in) :: dt                   !! time step [s]
-      real(wp), intent(in) :: tol                  !! correction tolerance [m, m/s]
-      integer, intent(in) :: max_iter              !! iteration cap of the position correction
-      real(wp), intent(in) :: max_drift            !! violation before correction that means dt is too large [m]
+      real(wp), intent(in) :: qd(n_q)              !! velocity the coordinates move with [m/s, rad/s]
+      real(wp), intent(in) :: h                    !! duration of the move [s]
+    end subroutine gear_increment
+
+    !> Step 4's position half: the direct correction dq = -A^+ Phi (A^+ = A^T (A A^T)^-1) of the
+    !! holonomic constraints and the locked strokes, iterated to `tol`; then the crush history.
+    !! The velocity half is a plastic impact of the whole system (landyn_impact), or, for a gear
+    !! alone with the body held fixed, gear_project_alone.
+    module subroutine gear_correct_positions(gear, tol, max_iter, max_drift, stat, errmsg)
+      type(gear_t), intent(inout) :: gear          !! gear
+      real(wp), intent(in) :: tol                  !! correction tolerance [m]
+      integer, intent(in) :: max_iter              !! iteration cap of the position correction [-]
+      real(wp), intent(in) :: max_drift            !! violation before correction that means the step is too large [m]
+      integer, intent(out) :: stat                 !! STAT_OK on success, STAT_DIVERGED on drift or no convergence
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    end subroutine gear_correct_positions
+
+    !> The velocity projection of a gear alone, the body held fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd
+    !! in the gear's kinetic metric, then gear_settle (the unit tests of a free gear).
+    module subroutine gear_project_alone(gear, stat, errmsg)
+      type(gear_t), intent(inout) :: gear          !! gear
       integer, intent(out) :: stat                 !! STAT_OK on success
       character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
-      logical, intent(in), optional :: velocity    !! also project the velocities (gear alone) [-]; default .false.
-      real(wp), intent(in), optional :: kick       !! velocity update length (variable-step leapfrog); default dt [s]
-    end subroutine gear_integrate
+    end subroutine gear_project_alone
 
     !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
     !! three lock rows) square and regular, so A qd = 0 means qd = 0; it becomes rigid.

@@ -52,7 +52,9 @@ module landyn_gear_base
     procedure(evaluate_iface), deferred :: evaluate                    !! crush logic and accelerations into a gear_eval_t
     procedure(commit_iface), deferred :: commit                        !! makes an evaluation the committed state
     procedure(dynamics_iface), deferred :: dynamics                    !! evaluate and commit in one call
-    procedure(integrate_iface), deferred :: integrate                  !! one step with the constraint correction
+    procedure(arrest_iface), deferred :: arrest                        !! crush modes at the end of a step
+    procedure(increment_iface), deferred :: increment                  !! q <- q + qd h, with the crush work
+    procedure(correct_iface), deferred :: correct_positions            !! position projection onto the constraints
     procedure(settle_iface), deferred :: settle                        !! all struts locked: the gear becomes rigid
     procedure(prepare_iface), deferred :: prepare                      !! caches for the next evaluation of a rigid gear
     procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
@@ -66,7 +68,9 @@ module landyn_gear_base
     procedure(capacity_iface), deferred :: buffer_capacity             !! stroke capacity of strut k's buffer [m]
     procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
     procedure(vector_iface), deferred :: coordinate_weights            !! error-norm weights of the coordinates [-]
+    procedure(vector_iface), deferred :: coordinates                   !! generalized coordinates [m, rad]
     procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
+    procedure(vector_iface), deferred :: accelerations                 !! committed generalized accelerations [m/s^2, rad/s^2]
     procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
     procedure(rigid_iface), deferred :: is_rigid                       !! all struts locked and at rest
     procedure(rows_iface), deferred :: velocity_rows                   !! velocity constraint rows (A qd = 0)
@@ -118,13 +122,13 @@ module landyn_gear_base
     end function rotation_iface
 
     !> Footpad joint position and its velocity relative to the body, gear frame.
-    pure subroutine footpad_iface(self, pos, vel, lead)
+    pure subroutine footpad_iface(self, pos, vel, rates)
       import :: gear_base_t, wp
       class(gear_base_t), intent(in) :: self      !! gear
       real(wp), intent(out) :: pos(3)             !! position [m]
       real(wp), intent(out) :: vel(3)             !! velocity [m/s]
-      real(wp), intent(in), optional :: lead      !! the velocity with the stored rates led by lead times the
-                                                  !! committed accelerations; default 0 [s]
+      real(wp), intent(in), optional :: rates(:)  !! generalized velocities to take it with; default the
+                                                  !! stored ones [m/s, rad/s]
     end subroutine footpad_iface
 
     !> Crush logic and accelerations of the committed state for a footpad force and the uniform
@@ -163,21 +167,35 @@ module landyn_gear_base
       real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
     end subroutine dynamics_iface
 
-    !> One semi-implicit Euler step of the gear with its constraint correction, crush history and
-    !! absorbed work. The velocity projection is the system's (landyn_impact); alone = .true.
-    !! projects the gear's velocities in its own metric instead (body held fixed).
-    subroutine integrate_iface(self, dt, tol, max_iter, max_drift, stat, errmsg, kick, alone)
+    !> The crush law's decision over a step: a crushing strut whose stroke rate would reverse between
+    !! the committed rates and the integrator's end-of-step rates locks at its present stroke. A gear
+    !! that moves leaves the rigid state.
+    pure subroutine arrest_iface(self, qd_end)
       import :: gear_base_t, wp
       class(gear_base_t), intent(inout) :: self   !! gear
-      real(wp), intent(in) :: dt                  !! time step [s]
-      real(wp), intent(in) :: tol                 !! correction tolerance [m, m/s]
+      real(wp), intent(in) :: qd_end(:)           !! end-of-step generalized velocities [m/s, rad/s]
+    end subroutine arrest_iface
+
+    !> Moves the coordinates by qd h and books the crush work of the committed buffer forces over
+    !! the stroke increment of every strut that is not locked.
+    pure subroutine increment_iface(self, qd, h)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(inout) :: self   !! gear
+      real(wp), intent(in) :: qd(:)               !! velocity the coordinates move with [m/s, rad/s]
+      real(wp), intent(in) :: h                   !! duration of the move [s]
+    end subroutine increment_iface
+
+    !> Projects the coordinates onto the position constraints (holonomic ones and locked strokes)
+    !! and updates the crush history.
+    subroutine correct_iface(self, tol, max_iter, max_drift, stat, errmsg)
+      import :: gear_base_t, wp
+      class(gear_base_t), intent(inout) :: self   !! gear
+      real(wp), intent(in) :: tol                 !! correction tolerance [m]
       integer, intent(in) :: max_iter             !! iteration cap of the correction [-]
-      real(wp), intent(in) :: max_drift           !! violation before correction that means dt is too large [m]
+      real(wp), intent(in) :: max_drift           !! violation before correction that means the step is too large [m]
       integer, intent(out) :: stat                !! STAT_OK on success
       character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-      real(wp), intent(in), optional :: kick      !! velocity update length (variable-step leapfrog); default dt [s]
-      logical, intent(in), optional :: alone      !! project the gear's own velocities; default .false. [-]
-    end subroutine integrate_iface
+    end subroutine correct_iface
 
     !> After the system's velocity projection: a gear with all struts locked becomes rigid.
     pure subroutine settle_iface(self)

@@ -1,7 +1,9 @@
-!> The gear's step and constraint correction (Step 4 of section 3.1): semi-implicit Euler, crush
-!! modes at the end of the step, the direct position correction dq = -A^+ Phi iterated to the
-!! tolerance (A^+ = A^T (A A^T)^-1), the crush history and work; the velocity rows A of the system
-!! velocity projection (landyn_impact).
+!> What a time integrator needs of the gear besides its evaluation (Step 4 of section 3.1): the
+!! crush modes at the end of a step (gear_arrest), a position increment with its crush work
+!! (gear_increment), the direct position correction dq = -A^+ Phi iterated to the tolerance
+!! (A^+ = A^T (A A^T)^-1) with the crush history, the velocity rows A of the system velocity
+!! projection (landyn_impact) and the projection of a gear alone. No update formula: that is the
+!! integrator's (numerics/).
 submodule (landyn_gear) landyn_gear_constraints
   use landyn_kinds, only: msg_len
   use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
@@ -13,20 +15,12 @@ submodule (landyn_gear) landyn_gear_constraints
 
 contains
 
-  module procedure gear_integrate
-    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), qd_new(n_q), hk
-    real(wp) :: a(max_rows, n_q), r(max_rows), viol, fpos, fneg, mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
-    integer :: k, iter, nrow, i, j
-    character(len=msg_len) :: buf
-
-    stat = STAT_OK
-    if (gear%st%rigid .and. all(gear%st%locked)) return   ! no degree of freedom: nothing moves
+  module procedure gear_arrest
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3), fpos, fneg
+    integer :: k
     gear%st%rigid = .false.
     call strokes(gear, gear%st%q, gear%st%qd, s0, sd0)
-    hk = dt
-    if (present(kick)) hk = kick
-    qd_new = gear%st%qd + gear%st%qdd*hk
-    call strokes(gear, gear%st%q, qd_new, s1, sd1)
+    call strokes(gear, gear%st%q, qd_end, s1, sd1)
     ! A crushing strut whose sliding speed reaches zero locks (it cannot be driven back by its own
     ! buffer force); a free strut (bound 0 in its direction of motion) keeps moving.
     do k = 1, 3
@@ -37,19 +31,31 @@ contains
       if (gear%st%dir(k) < 0 .and. sd1(k) >= 0.0_wp .and. fneg > 0.0_wp) gear%st%locked(k) = .true.
       if (gear%st%locked(k)) gear%st%s_lock(k) = s0(k)
     end do
-    gear%st%qd = qd_new
-    ! Crush work during this step: the buffer force times the stroke increment, for sliding struts.
-    gear%st%q = gear%st%q + gear%st%qd*dt
+  end procedure gear_arrest
+
+  module procedure gear_increment
+    real(wp) :: s0(3), sd0(3), s1(3), sd1(3)
+    integer :: k
+    call strokes(gear, gear%st%q, gear%st%qd, s0, sd0)
+    gear%st%q = gear%st%q + qd*h
     gear%st%phq_ok = .false.
     call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
+    ! crush work of the committed buffer force over the stroke increment, for sliding struts
     do k = 1, 3
       if (.not. gear%st%locked(k)) then
         gear%st%work_crush(k) = gear%st%work_crush(k) + gear%sigma(k)*gear%st%axial(k)*(s0(k) - s1(k))
       end if
     end do
+  end procedure gear_increment
 
-    ! Position correction: Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A
-    ! are built only when a correction is needed (a locked gear at rest needs none).
+  module procedure gear_correct_positions
+    real(wp) :: s1(3), sd1(3), a(max_rows, n_q), r(max_rows), viol
+    integer :: iter, nrow
+    character(len=msg_len) :: buf
+
+    stat = STAT_OK
+    ! Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A are built only when a
+    ! correction is needed (a locked gear at rest needs none).
     nrow = n_phi + count(gear%st%locked)
     call position_residual(gear, gear%st%q, nrow, r)
     viol = maxval(abs(r(1:n_phi)))
@@ -83,73 +89,60 @@ contains
     call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
     gear%st%s_hismax = max(gear%st%s_hismax, s1)
     gear%st%s_hismin = min(gear%st%s_hismin, s1)
+  end procedure gear_correct_positions
 
-    if (present(velocity)) then
-      if (velocity) then
-        ! Gear alone, body fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd (kinetic metric).
-        call build_rows(gear, gear%st%q, a, nrow)
-        call row_products(nrow, a, gear%st%qd, r)
-        if (maxval(abs(r(1:nrow))) > 0.0_wp) then
-          mdiag = gear_mass_matrix(gear, gear%st%q)
-          do j = 1, nrow
-            do i = 1, j
-              w(i, j) = sum(a(i, :)*a(j, :)/mdiag)
-            end do
-          end do
-          lam(1:nrow) = r(1:nrow)
-          call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
-          if (stat /= STAT_OK) return
-          do i = 1, nrow
-            gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
-          end do
-        end if
-        call gear_settle(gear)
-      end if
-    end if
-
-  contains
-
-    !> r = A x for the first nrow rows.
-    pure subroutine row_products(nrow, a, x, r)
-      integer, intent(in) :: nrow                  !! rows
-      real(wp), intent(in) :: a(max_rows, n_q)     !! rows
-      real(wp), intent(in) :: x(n_q)               !! vector
-      real(wp), intent(out) :: r(max_rows)         !! products
-      integer :: i
-      do i = 1, nrow
-        r(i) = dot_product(a(i, :), x)
-      end do
-    end subroutine row_products
-
-    !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
-    subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
-      integer, intent(in) :: nrow                  !! rows
-      real(wp), intent(in) :: a(:, :)              !! Jacobian rows
-      real(wp), intent(in) :: r(:)                 !! residual
-      real(wp), intent(inout) :: x(n_q)            !! vector to correct
-      integer, intent(out) :: stat                 !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg    !! message
-      real(wp) :: s(max_rows, max_rows), y(max_rows)
-      integer :: i, j
+  module procedure gear_project_alone
+    real(wp) :: a(max_rows, n_q), r(max_rows), mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
+    integer :: nrow, i, j
+    stat = STAT_OK
+    call build_rows(gear, gear%st%q, a, nrow)
+    do i = 1, nrow
+      r(i) = dot_product(a(i, :), gear%st%qd)
+    end do
+    if (maxval(abs(r(1:nrow))) > 0.0_wp) then
+      mdiag = gear_mass_matrix(gear, gear%st%q)
       do j = 1, nrow
         do i = 1, j
-          s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+          w(i, j) = sum(a(i, :)*a(j, :)/mdiag)
         end do
       end do
-      y(1:nrow) = r(1:nrow)
-      call small_spd_solve(nrow, s, max_rows, y, stat)
-      if (stat /= STAT_OK) then
-        write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
-          '): redundant constraints or a singular configuration'
-        stat = STAT_DIVERGED
-        return
-      end if
+      lam(1:nrow) = r(1:nrow)
+      call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
+      if (stat /= STAT_OK) return
       do i = 1, nrow
-        x = x - y(i)*a(i, 1:n_q)
+        gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
       end do
-    end subroutine min_norm_correction
+    end if
+    call gear_settle(gear)
+  end procedure gear_project_alone
 
-  end procedure gear_integrate
+  !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
+  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+    integer, intent(in) :: nrow                  !! rows [-]
+    real(wp), intent(in) :: a(:, :)              !! Jacobian rows [m/m, m/rad]
+    real(wp), intent(in) :: r(:)                 !! residual [m]
+    real(wp), intent(inout) :: x(n_q)            !! vector to correct [m, rad]
+    integer, intent(out) :: stat                 !! STAT_OK on success
+    character(len=*), intent(inout) :: errmsg    !! message
+    real(wp) :: s(max_rows, max_rows), y(max_rows)
+    integer :: i, j
+    do j = 1, nrow
+      do i = 1, j
+        s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
+      end do
+    end do
+    y(1:nrow) = r(1:nrow)
+    call small_spd_solve(nrow, s, max_rows, y, stat)
+    if (stat /= STAT_OK) then
+      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
+        '): redundant constraints or a singular configuration'
+      stat = STAT_DIVERGED
+      return
+    end if
+    do i = 1, nrow
+      x = x - y(i)*a(i, 1:n_q)
+    end do
+  end subroutine min_norm_correction
 
   module procedure gear_settle
     if (all(gear%st%locked) .and. .not. gear%st%rigid) then

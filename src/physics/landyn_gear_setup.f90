@@ -33,7 +33,7 @@ contains
     gear%st%qdd = 0.0_wp
     gear%st%locked = .true.
     gear%st%phq_ok = .false.
-    gear%st%rigid = .false.          ! entered by gear_integrate once all struts are locked
+    gear%st%rigid = .false.          ! entered by gear_settle once all struts are locked
     gear%st%rigid_cache = .false.
     gear%st%dir = 0
     gear%st%s_lock = 0.0_wp
@@ -199,10 +199,6 @@ contains
   module procedure gear_set_rates
     gear%st%qd = qd
   end procedure gear_set_rates
-
-  module procedure gear_led_rates
-    qd = gear%st%qd + lead*gear%st%qdd
-  end procedure gear_led_rates
 
   module procedure gear_locks
     locked = gear%st%locked

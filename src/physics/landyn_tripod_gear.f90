@@ -9,10 +9,12 @@ module landyn_tripod_gear
   use landyn_buffer, only: buffer_law_t
   use landyn_tube_friction, only: tube_friction_t
   use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, gear_set_buffer, gear_footpad, gear_evaluate, &
-                         gear_commit, gear_dynamics, gear_integrate, gear_settle, gear_prepare, gear_strokes, &
+                         gear_commit, gear_dynamics, gear_arrest, gear_increment, gear_correct_positions, &
+                         gear_settle, gear_prepare, gear_strokes, &
                          gear_crush_history, gear_axial_forces, gear_crush_work, gear_strut_lengths, gear_law_segments, &
                          gear_locks, gear_strut_modes, strut_modes, gear_buffer_capacity, gear_violations, gear_rates, &
-                         gear_set_rates, gear_led_rates, gear_is_rigid, gear_velocity_rows, gear_cache_jacobian, &
+                         gear_set_rates, gear_coordinates, gear_accelerations, gear_is_rigid, gear_velocity_rows, &
+                         gear_cache_jacobian, &
                          gear_mass_diagonal, gear_momentum_maps, gear_relative_momenta, gear_leg_momentum, &
                          gear_body_load, gear_relative_kinetic_energy, gear_rotation, gear_save_state, &
                          gear_restore_state, n_struts, n_q, n_phi, strut_names, idx_len
@@ -33,7 +35,9 @@ module landyn_tripod_gear
     procedure :: evaluate => tripod_evaluate                           !! crush logic and accelerations into a gear_eval_t
     procedure :: commit => tripod_commit                               !! makes an evaluation the committed state
     procedure :: dynamics => tripod_dynamics                           !! evaluate and commit in one call
-    procedure :: integrate => tripod_integrate                         !! one step with the constraint correction
+    procedure :: arrest => tripod_arrest                               !! crush modes at the end of a step
+    procedure :: increment => tripod_increment                         !! q <- q + qd h, with the crush work
+    procedure :: correct_positions => tripod_correct_positions         !! position projection onto the constraints
     procedure :: settle => tripod_settle                               !! all struts locked: the gear becomes rigid
     procedure :: prepare => tripod_prepare                             !! caches for the next evaluation of a rigid gear
     procedure :: strokes => tripod_strokes                             !! strokes and stroke rates [m, m/s]
@@ -47,7 +51,9 @@ module landyn_tripod_gear
     procedure :: buffer_capacity => tripod_buffer_capacity             !! stroke capacity of strut k's buffer [m]
     procedure :: violations => tripod_violations                       !! largest constraint violations [m]
     procedure :: coordinate_weights => tripod_coordinate_weights       !! error-norm weights of the coordinates [-]
+    procedure :: coordinates => tripod_coordinates                     !! generalized coordinates [m, rad]
     procedure :: rates => tripod_rates                                 !! generalized velocities [m/s, rad/s]
+    procedure :: accelerations => tripod_accelerations                 !! committed accelerations [m/s^2, rad/s^2]
     procedure :: set_rates => tripod_set_rates                         !! replaces the generalized velocities
     procedure :: is_rigid => tripod_is_rigid                           !! all struts locked and at rest
     procedure :: velocity_rows => tripod_velocity_rows                 !! velocity constraint rows (A qd = 0)
@@ -115,14 +121,14 @@ contains
     rot = gear_rotation(self%gear)
   end function tripod_rotation
 
-  !> Footpad position and velocity, gear frame (gear_footpad, with gear_led_rates when led).
-  pure subroutine tripod_footpad(self, pos, vel, lead)
+  !> Footpad position and velocity, gear frame (gear_footpad, with the given rates when given).
+  pure subroutine tripod_footpad(self, pos, vel, rates)
     class(tripod_gear_t), intent(in) :: self        !! gear
     real(wp), intent(out) :: pos(3)                 !! [m]
     real(wp), intent(out) :: vel(3)                 !! [m/s]
-    real(wp), intent(in), optional :: lead          !! lead of the rates [s]
-    if (present(lead)) then
-      call gear_footpad(self%gear, pos, vel, gear_led_rates(self%gear, lead))
+    real(wp), intent(in), optional :: rates(:)      !! generalized velocities to use [m/s, rad/s]
+    if (present(rates)) then
+      call gear_footpad(self%gear, pos, vel, rates(1:n_q))
     else
       call gear_footpad(self%gear, pos, vel)
     end if
@@ -160,19 +166,31 @@ contains
     call gear_dynamics(self%gear, f_foot, f_field, stat, errmsg, dt)
   end subroutine tripod_dynamics
 
-  !> gear_integrate (its own velocity projection when alone).
-  subroutine tripod_integrate(self, dt, tol, max_iter, max_drift, stat, errmsg, kick, alone)
+  !> gear_arrest.
+  pure subroutine tripod_arrest(self, qd_end)
     class(tripod_gear_t), intent(inout) :: self     !! gear
-    real(wp), intent(in) :: dt                      !! time step [s]
-    real(wp), intent(in) :: tol                     !! correction tolerance [m, m/s]
+    real(wp), intent(in) :: qd_end(:)               !! end-of-step generalized velocities [m/s, rad/s]
+    call gear_arrest(self%gear, qd_end(1:n_q))
+  end subroutine tripod_arrest
+
+  !> gear_increment.
+  pure subroutine tripod_increment(self, qd, h)
+    class(tripod_gear_t), intent(inout) :: self     !! gear
+    real(wp), intent(in) :: qd(:)                   !! velocity the coordinates move with [m/s, rad/s]
+    real(wp), intent(in) :: h                       !! duration [s]
+    call gear_increment(self%gear, qd(1:n_q), h)
+  end subroutine tripod_increment
+
+  !> gear_correct_positions.
+  subroutine tripod_correct_positions(self, tol, max_iter, max_drift, stat, errmsg)
+    class(tripod_gear_t), intent(inout) :: self     !! gear
+    real(wp), intent(in) :: tol                     !! correction tolerance [m]
     integer, intent(in) :: max_iter                 !! iteration cap [-]
     real(wp), intent(in) :: max_drift               !! largest violation before correction [m]
     integer, intent(out) :: stat                    !! STAT_OK on success
     character(len=*), intent(inout) :: errmsg       !! diagnosis on failure
-    real(wp), intent(in), optional :: kick          !! velocity update length [s]
-    logical, intent(in), optional :: alone          !! project the gear's own velocities [-]
-    call gear_integrate(self%gear, dt, tol, max_iter, max_drift, stat, errmsg, velocity=alone, kick=kick)
-  end subroutine tripod_integrate
+    call gear_correct_positions(self%gear, tol, max_iter, max_drift, stat, errmsg)
+  end subroutine tripod_correct_positions
 
   !> gear_settle.
   pure subroutine tripod_settle(self)
@@ -293,6 +311,20 @@ contains
     real(wp), intent(out) :: v(:)                   !! [m/s, rad/s]
     v(1:n_q) = gear_rates(self%gear)
   end subroutine tripod_rates
+
+  !> gear_coordinates.
+  pure subroutine tripod_coordinates(self, v)
+    class(tripod_gear_t), intent(in) :: self        !! gear
+    real(wp), intent(out) :: v(:)                   !! [m, rad]
+    v(1:n_q) = gear_coordinates(self%gear)
+  end subroutine tripod_coordinates
+
+  !> gear_accelerations.
+  pure subroutine tripod_accelerations(self, v)
+    class(tripod_gear_t), intent(in) :: self        !! gear
+    real(wp), intent(out) :: v(:)                   !! [m/s^2, rad/s^2]
+    v(1:n_q) = gear_accelerations(self%gear)
+  end subroutine tripod_accelerations
 
   !> gear_set_rates.
   pure subroutine tripod_set_rates(self, v)

@@ -1,0 +1,57 @@
+!> The leapfrog (semi-implicit Euler) update of the paper's scheme, Fig. 6 Steps 4 and 6, written
+!! on the model's integrator operations (landyn_sim_state): the scheme of the 'fixed' and
+!! 'adaptive' integrators. With positions at t and the stored velocities half a step behind:
+!!
+!!   v <- v + kick a(t)             (kick = h for the fixed scheme, (h_last + h)/2 for variable steps)
+!!   crush decisions over the step  (a crushing strut whose rate reverses locks: sim_arrest)
+!!   x <- x + h v                   (rotations through the Euler-angle rates)
+!!   x projected onto the gears' constraints, v onto the system's (a plastic impact)
+!!   discrete state committed (footpad histories, rigid gears)
+module landyn_scheme_leapfrog
+  use landyn_kinds, only: wp, max_gears
+  use landyn_config, only: landyn_input_t
+  use landyn_sim_model, only: sim_t, sim_eval_t
+  use landyn_sim_state, only: max_nv, sim_commit_evaluation, sim_moving, sim_gather_velocities, &
+                              sim_scatter_velocities, sim_gather_accelerations, sim_arrest, sim_increment_positions, &
+                              sim_project_positions, sim_project_velocities, sim_commit_discrete
+  implicit none
+  private
+
+  public :: leapfrog_advance
+
+contains
+
+  !> One leapfrog step of length h from the state evaluated in `ev`. stat /= 0 (drift, no
+  !! convergence, projection failure) leaves the simulation in an unusable state: restore a
+  !! snapshot or stop.
+  subroutine leapfrog_advance(sim, inp, ev, h, stat, errmsg, kick)
+    type(sim_t), intent(inout) :: sim           !! simulation, advanced to ev%t + h
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_eval_t), intent(in) :: ev          !! evaluation of the state at t (sim_evaluate)
+    real(wp), intent(in) :: h                   !! step [s]
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    real(wp), intent(in), optional :: kick      !! velocity update length (variable-step leapfrog, the
+                                                !! step the evaluation was made for); default h [s]
+    real(wp) :: v(max_nv), a(max_nv), hk
+    logical :: moving(max_gears)
+    integer :: nv
+
+    hk = h
+    if (present(kick)) hk = kick
+    call sim_commit_evaluation(sim, ev)
+    call sim_moving(sim, moving)
+    call sim_gather_velocities(sim, v, nv)
+    call sim_gather_accelerations(sim, ev, moving, a)
+    v(1:nv) = v(1:nv) + a(1:nv)*hk
+    call sim_arrest(sim, moving, v)
+    call sim_scatter_velocities(sim, moving, v)
+    call sim_increment_positions(sim, moving, v, h)
+    call sim_project_positions(sim, inp, moving, ev%t + h, stat, errmsg)
+    if (stat /= 0) return
+    call sim_project_velocities(sim, inp, ev%t + h, stat, errmsg)
+    if (stat /= 0) return
+    call sim_commit_discrete(sim, ev, ev%t + h, stat, errmsg)
+  end subroutine leapfrog_advance
+
+end module landyn_scheme_leapfrog
