@@ -6,7 +6,7 @@
 !!
 !! Library code: every procedure is pure.
 module landyn_input_docs
-  use landyn_config, only: landyn_input_t, default_input
+  use landyn_config, only: landyn_input_t, default_input, integrator_names
   use landyn_strings, only: fmt_int => int_text
   use landyn_input_registry, only: input_var_t, input_vars, range_text, k_int, k_logical, k_string
   use landyn_input_access, only: input_value_t, access_var
@@ -61,7 +61,9 @@ contains
       if (len(default) == 0) default = '`'//entry_text(iv, v)//'`'
       valid = trim(e%doc_valid)
       if (len(valid) == 0) then
-        if (len_trim(e%hi_op) > 0) then
+        if (trim(e%choices) == 'integrator') then
+          valid = quoted_list(integrator_names)   ! generated from the integrators in src/numerics/
+        else if (len_trim(e%hi_op) > 0) then
           valid = '`'//range_text(iv, .false.)//'`'
         else if (len_trim(e%lo_op) > 0) then
           valid = '`'//trim(e%lo_op)//' '//trim(e%lo)//'`'
@@ -73,6 +75,26 @@ contains
            either(e%doc, e%meaning)//' |'//lf
     end do
   contains
+    !> 'a, b, c' as '`'a'`, `'b'`, `'c'`'.
+    pure function quoted_list(names) result(t)
+      character(len=*), intent(in) :: names  !! comma-separated names [-]
+      character(len=:), allocatable :: t     !! the names quoted for Markdown [-]
+      integer :: a, b
+      t = ''
+      a = 1
+      do while (a <= len(names))
+        b = index(names(a:), ',')
+        if (b == 0) then
+          b = len(names) + 1
+        else
+          b = a + b - 1
+        end if
+        if (len(t) > 0) t = t//', '
+        t = t//"`'"//trim(adjustl(names(a:b - 1)))//"'`"
+        a = b + 1
+      end do
+    end function quoted_list
+
     !> a trimmed, or b trimmed when a is blank.
     pure function either(a, b) result(t)
       character(len=*), intent(in) :: a, b   !! texts [-]

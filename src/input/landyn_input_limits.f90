@@ -1,9 +1,11 @@
 !> The sizes and markers of the run-deck types that the input registry, the generated group types
 !! (landyn_input_groups) and their users share: the unset marker of reals, the largest number of
-!! primary stages, the lengths of law names and file names, and the integrator names. Hand-written,
-!! used by the registry (so the registry does not depend on the types generated from it).
+!! primary stages, the lengths of law names and file names, and the integrator names (re-exported
+!! from landyn_integrator_names, which CMake generates from the integrators in src/numerics/).
+!! Hand-written, used by the registry (so the registry does not depend on the types generated from it).
 module landyn_input_limits
   use landyn_kinds, only: wp
+  use landyn_integrator_names, only: integrator_names
   implicit none
   private
 
@@ -12,7 +14,6 @@ module landyn_input_limits
   real(wp), parameter :: unset_real = -huge(1.0_wp)   !! marks a real input the deck did not give [-]
   integer, parameter :: max_stages = 5                !! largest number of primary honeycomb stages [-]
   integer, parameter :: name_len = 32                 !! length of law names [-]
-  character(len=*), parameter :: integrator_names = 'fixed, adaptive'  !! values of &simulation integrator [-]
   integer, parameter :: path_len = 1024               !! length of file names [-]
 
 contains

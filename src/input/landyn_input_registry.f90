@@ -85,10 +85,9 @@ module landyn_input_registry
       doc='run title, stored in the result file'), &
     input_var_t(g_simulation, 'integrator', k_string, default="'adaptive'", &
       length='name_len', takes='a quoted character string', &
-      meaning="time integrator: 'adaptive' or 'fixed'", choices='integrator', &
+      meaning="time integrator, one of those built in (the default 'adaptive', 'fixed')", choices='integrator', &
       doc='time integrator ([theory](../theory.md#time-integrators)): `''adaptive''` chooses its steps from `toler'// &
-      'ance`, locates events and ends steps on the output times; `''fixed''` is the paper''s scheme with step `dt`', &
-      doc_valid='`''adaptive''` or `''fixed''`'), &
+      'ance`, locates events and ends steps on the output times; `''fixed''` is the paper''s scheme with step `dt`'), &
     input_var_t(g_simulation, 'dt', k_real, default="5.0e-6_wp", unit='s', takes='a real number', &
       meaning='fixed: the time step; adaptive: the first step tried', lo_op='>', lo='0', &
       doc='`''fixed''`: the integration time step (the paper used 5e-6 s); `''adaptive''`: the first step tried', &

@@ -1,16 +1,14 @@
 !> One touchdown simulation: builds the model (landyn_sim_core), makes the integrator chosen in
-!! &simulation (landyn_integrator_fixed or landyn_integrator_adaptive) and steps it to the end of
-!! the run. Re-exports the model and result types the callers use.
+!! &simulation (make_integrator of the generated registry landyn_integrators: every
+!! src/numerics/landyn_integrator_<name>.f90) and steps it to the end of the run. Re-exports the model and result types the callers use.
 module landyn_simulation
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
-  use landyn_status, only: STAT_INPUT, STAT_OK
-  use landyn_config, only: landyn_input_t, integrator_names
+  use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_result_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
                              sim_save, sim_restore, n_energy, energy_names
   use landyn_integrator, only: integrator_t
-  use landyn_integrator_fixed, only: fixed_integrator_t
-  use landyn_integrator_adaptive, only: adaptive_integrator_t
+  use landyn_integrators, only: make_integrator
   implicit none
   private
 
@@ -19,24 +17,6 @@ module landyn_simulation
   public :: n_energy, energy_names
 
 contains
-
-  !> The integrator named by &simulation integrator ('fixed' or 'adaptive').
-  subroutine make_integrator(inp, integ, stat, errmsg)
-    type(landyn_input_t), intent(in) :: inp                    !! resolved, validated input
-    class(integrator_t), allocatable, intent(out) :: integ     !! the integrator
-    integer, intent(out) :: stat                               !! 0 on success, 2 for an unknown name
-    character(len=*), intent(inout) :: errmsg                  !! message on failure
-    stat = STAT_OK
-    select case (trim(inp%simulation%integrator))
-    case ('fixed')
-      allocate (fixed_integrator_t :: integ)
-    case ('adaptive')
-      allocate (adaptive_integrator_t :: integ)
-    case default
-      stat = STAT_INPUT
-      errmsg = "&simulation: integrator = '"//trim(inp%simulation%integrator)//"' is not one of: "//integrator_names
-    end select
-  end subroutine make_integrator
 
   !> Runs one landing. `progress_unit` < 0 silences progress reports.
   subroutine run_simulation(inp, res, stat, errmsg, progress_unit, loads)

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Campaign accuracy against cost (issue "Integrators that own the time step").
+
+Runs cases 1..N of the campaign example examples/campaign/dispersion.nml (2 s per case) on one
+rank (`landyn_batch DECK --case 1:N`) with each scheme to compare, the schemes interleaved round by
+round (the machine is noisy: every scheme sees the same load), and a converged reference: the
+fixed scheme at --ref-dt (default 1.25e-6 s), checked against the same scheme at half that step on
+the first --check-cases cases. For each scheme it prints cases per core-hour (cases * 3600 / wall
+time of the best round, one rank), the largest crush-length error over all struts and cases, the
+share of cases within 0.1 mm in every crush length and the number beyond 0.5 mm, and the largest
+|energy residual|.
+
+  campaign_accuracy.py --batch build/release/landyn_batch --src . [--cases 200] [--rounds 2]
+                       [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
+                       [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR]
+
+A scheme is NAME[:var=value,...]: &simulation integrator = NAME with those &simulation variables.
+The reference is expensive (about 7 s per case); --ref-cache keeps it between runs (keyed by the
+case count, the reference step and the base deck's text).
+"""
+import argparse
+import hashlib
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+import time
+
+import h5py
+import numpy as np
+
+
+def scheme_text(spec):
+    name, _, rest = spec.partition(":")
+    items = ["integrator = '%s'" % name]
+    for kv in filter(None, rest.split(",")):
+        k, v = kv.split("=")
+        items.append("%s = %s" % (k.strip(), v.strip()))
+    return ", ".join(items)
+
+
+def make_dir(src, workdir, tag, spec, cases):
+    """A copy of the campaign example whose base deck runs `spec`, summary file <tag>.h5."""
+    d = os.path.join(workdir, tag)
+    os.makedirs(d)
+    ex = os.path.join(src, "examples", "campaign")
+    base = open(os.path.join(ex, "lander.nml")).read()
+    # the scheme replaces the deck's integrator, dt and tolerance settings
+    base = re.sub(r"(?m)^\s*(integrator|dt|tolerance)\s*=.*$", "", base)
+    base, n = re.subn(r"(?mi)^&simulation\b", "&simulation " + scheme_text(spec) + ",", base)
+    assert n == 1, "lander.nml must have one &simulation group"
+    open(os.path.join(d, "lander.nml"), "w").write(base)
+    deck = open(os.path.join(ex, "dispersion.nml")).read()
+    deck = re.sub(r"(?m)^(\s*summary_file\s*=\s*).*$", r"\1'%s.h5'" % tag, deck)
+    deck = re.sub(r"(?m)^\s*save_histories\s*=.*$", "", deck)
+    open(os.path.join(d, "dispersion.nml"), "w").write(deck)
+    return d
+
+
+def run(batch, d, tag, cases):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    out = os.path.join(d, tag + ".h5")
+    if os.path.exists(out):
+        os.remove(out)
+    t0 = time.perf_counter()
+    p = subprocess.run([batch, "dispersion.nml", "--case", "1:%d" % cases, "-q"], cwd=d, env=env,
+                       capture_output=True, text=True)
+    wall = time.perf_counter() - t0
+    if p.returncode not in (0, 5):   # 5: some case failed its criteria (a result, not an error)
+        raise SystemExit("%s: landyn_batch exit %d\n%s%s" % (tag, p.returncode, p.stdout, p.stderr))
+    with h5py.File(out, "r") as f:
+        crush = f["cases/crush_length"][()]
+        ids = f["cases/case_id"][()] if "cases/case_id" in f else np.arange(1, crush.shape[0] + 1)
+        res = f["cases/energy_residual"][()] if "cases/energy_residual" in f else np.full(crush.shape[0], np.nan)
+    order = np.argsort(ids)
+    return wall, crush[order], res[order]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--batch", required=True, help="landyn_batch executable")
+    ap.add_argument("--src", required=True, help="source tree")
+    ap.add_argument("--cases", type=int, default=200)
+    ap.add_argument("--rounds", type=int, default=2)
+    ap.add_argument("--schemes", nargs="+", default=["fixed:dt=4e-5", "adaptive"])
+    ap.add_argument("--ref-dt", type=float, default=1.25e-6)
+    ap.add_argument("--check-cases", type=int, default=5)
+    ap.add_argument("--ref-cache", help="folder keeping the reference between runs")
+    a = ap.parse_args()
+    batch = os.path.abspath(a.batch)
+    src = os.path.abspath(a.src)
+    with tempfile.TemporaryDirectory(prefix="landyn_campaign_accuracy_") as w:
+        key = hashlib.sha1((open(os.path.join(src, "examples/campaign/lander.nml")).read()
+                            + open(os.path.join(src, "examples/campaign/dispersion.nml")).read()
+                            + "%d %r" % (a.cases, a.ref_dt)).encode()).hexdigest()[:12]
+        cached = os.path.join(a.ref_cache, "ref_%s.npz" % key) if a.ref_cache else None
+        if cached and os.path.exists(cached):
+            z = np.load(cached)
+            ref, ref_check = z["ref"], z["check"]
+        else:
+            d = make_dir(src, w, "ref", "fixed:dt=%r" % a.ref_dt, a.cases)
+            _, ref, _ = run(batch, d, "ref", a.cases)
+            d = make_dir(src, w, "check", "fixed:dt=%r" % (a.ref_dt / 2), a.check_cases)
+            _, ref_check, _ = run(batch, d, "check", a.check_cases)
+            if cached:
+                os.makedirs(a.ref_cache, exist_ok=True)
+                np.savez(cached, ref=ref, check=ref_check)
+        conv = 1e3 * np.max(np.abs(ref_check - ref[:a.check_cases]))
+        print("reference: fixed dt = %.3g s; against dt/2 on cases 1..%d: largest crush-length difference %.4f mm"
+              % (a.ref_dt, a.check_cases, conv))
+        dirs = {s: make_dir(src, w, "s%d" % i, s, a.cases) for i, s in enumerate(a.schemes)}
+        best, results = {}, {}
+        for r in range(a.rounds):
+            for i, s in enumerate(a.schemes):
+                wall, crush, res = run(batch, dirs[s], "s%d" % i, a.cases)
+                best[s] = min(best.get(s, wall), wall)
+                results[s] = (crush, res)
+        print("%-34s %10s %10s %12s %10s %12s" % ("scheme", "cases/c-h", "largest", "<=0.1 mm", ">0.5 mm", "|residual|"))
+        for s in a.schemes:
+            crush, res = results[s]
+            err = 1e3 * np.max(np.abs(crush - ref).reshape(a.cases, -1), axis=1)
+            print("%-34s %10.0f %8.3f mm %7d of %d %10d %10.4f %%" % (
+                s, a.cases * 3600.0 / best[s], err.max(), np.sum(err <= 0.1), a.cases, np.sum(err > 0.5),
+                100 * np.nanmax(np.abs(res))))
+
+
+if __name__ == "__main__":
+    main()
