@@ -102,7 +102,7 @@ def _summary_page(pdf, plt, res: Result, ref_path: str, rows, stats, checks, al,
             lines.append(f"  ... and {len(checks.failures) - 25} more (see the console report)")
         lines.append("")
     lines += ["Treatment of both signals:",
-              f"  alignment: {textwrap.shorten(al.detail, 100)}",
+              *textwrap.wrap(f"alignment: {al.detail}", 112, initial_indent="  ", subsequent_indent="    "),
               f"  shift added to the reference's time: {al.shift:+.6f} s",
               f"  filter: {'CFC %d (SAE J211-1, phaseless 4-pole Butterworth), both signals' % opts.cfc if opts.cfc else 'none'}",
               "  resampling: linear interpolation onto one uniform time base over the common range",
@@ -133,10 +133,11 @@ def _channel_page(pdf, plt, st, res_label: str, ref_label: str, shift: float) ->
     if st.allowed is not None:
         ax.fill_between(st.t, (st.y_ref - st.allowed) * f, (st.y_ref + st.allowed) * f, color="0.88",
                         label=f"reference ± allowed rms {st.allowed * f:.3g} {u}")
-    ax.plot(st.t, st.y_ref * f, color="#c44e52", lw=1.2, ls="--", label=f"reference: {ref_label}")
-    ax.plot(st.t, st.y * f, color="#4c72b0", lw=1.2, label=f"LANDYN: {res_label}")
-    ax.plot([m.t_peak_ref], [m.peak_ref * f], "o", color="#c44e52", ms=5, mfc="none", label="peaks")
-    ax.plot([m.t_peak], [m.peak * f], "o", color="#4c72b0", ms=5, mfc="none")
+    # LANDYN wide and light underneath, the reference dashed on top: both stay visible where they agree
+    ax.plot(st.t, st.y * f, color="#4c72b0", lw=2.6, alpha=0.55, label=f"LANDYN: {res_label}", zorder=2)
+    ax.plot(st.t, st.y_ref * f, color="#c44e52", lw=1.1, ls="--", label=f"reference: {ref_label}", zorder=3)
+    ax.plot([m.t_peak], [m.peak * f], "o", color="#4c72b0", ms=7, mfc="none", zorder=4, label="peak LANDYN")
+    ax.plot([m.t_peak_ref], [m.peak_ref * f], "x", color="#c44e52", ms=6, zorder=5, label="peak reference")
     ax.set_ylabel(f"{s.label.split(' -> ')[-1]} [{u}]", fontsize=8)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=7, loc="best")
