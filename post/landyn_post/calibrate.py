@@ -177,13 +177,13 @@ def resolve_deck(exe: str, deck: str, overrides: list[tuple[Variable, float]]) -
 
 
 def load_reference(case: Case, column: str | None, timeseries: bool) -> None:
-    from .compare import read_strut_csv
+    from .compare import is_mat, read_strut_csv
     if is_hdf5(case.reference):
         ref = load(case.reference)
         case.kind = "h5"
         case.ref_mm = {g * ref.n_struts + k + 1: float(ref.crush_length[g, k]) * MM
                        for g in range(ref.n_gears) for k in range(ref.n_struts)}
-    elif timeseries:
+    elif timeseries or is_mat(case.reference):
         case.kind = "timeseries"
     else:
         sref = read_strut_csv(case.reference, 4, case.load_case, column)

@@ -314,15 +314,56 @@ class SeriesSet:
     notes: list[str] = field(default_factory=list)
 
 
+def is_mat(path: str) -> bool:
+    """A MATLAB level-5 MAT file (by its header)."""
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(10) == b"MATLAB 5.0"
+    except OSError:
+        return False
+
+
+def read_mat_table(path: str) -> tuple[list[str], np.ndarray]:
+    """The numeric vectors of a flat MAT file (a heritage export: one variable per channel, all of
+    one length) as (names, samples x channels). LandynPostError for anything else."""
+    from scipy.io import loadmat
+    try:
+        mat = loadmat(path, squeeze_me=True)
+    except Exception as exc:          # scipy raises several types for a malformed file
+        raise LandynPostError(f"{path}: cannot be read as a MAT file ({exc})") from None
+    names, cols, skipped = [], [], []
+    for k, v in mat.items():
+        if k.startswith("__"):
+            continue
+        a = np.asarray(v)
+        if a.dtype.kind in "iuf" and a.ndim == 1:
+            names.append(k)
+            cols.append(a.astype(float))
+        else:
+            skipped.append(k)
+    if not cols:
+        raise LandynPostError(f"{path}: no numeric vector variables (a flat MAT file of one vector per channel "
+                              f"is expected; found {', '.join(skipped) or 'nothing'})")
+    n = {len(c) for c in cols}
+    if len(n) != 1:
+        raise LandynPostError(f"{path}: the vectors differ in length ({', '.join(f'{a}: {len(c)}' for a, c in zip(names, cols))})")
+    if skipped:
+        raise LandynPostError(f"{path}: variables that are not numeric vectors cannot be compared: {', '.join(skipped)}")
+    return names, np.stack(cols, axis=1)
+
+
 def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_column: str | None,
                         time_factor: float) -> SeriesSet:
-    """Reads a time-history CSV and pairs its channels with LANDYN channels; every other column is
-    returned as unmatched."""
-    header, rows = _read_csv_rows(path)
-    data = np.empty((len(rows), len(header)))
-    for k, (ln, r) in enumerate(rows):
-        for j, (c, v) in enumerate(zip(header, r)):
-            data[k, j] = _number(path, ln, c, v) if v != "" else np.nan
+    """Reads a time-history CSV (or a flat MAT file) and pairs its channels with LANDYN channels;
+    every other column is returned as unmatched."""
+    if is_mat(path):
+        header, data = read_mat_table(path)
+    else:
+        header, rows = _read_csv_rows(path)
+        data = np.empty((len(rows), len(header)))
+        for k, (ln, r) in enumerate(rows):
+            for j, (c, v) in enumerate(zip(header, r)):
+                data[k, j] = _number(path, ln, c, v) if v != "" else np.nan
     time_entry, entries = (None, None)
     if map_path:
         time_entry, entries = read_map(map_path)
@@ -907,7 +948,8 @@ def _main(argv=None) -> int:
     p.add_argument("reference", metavar="REFERENCE", help="LANDYN result (.h5) or CSV")
     p.add_argument("--load-case", metavar="NAME", help="rows of this load_case (per-strut CSV), e.g. LC-1")
     p.add_argument("--column", metavar="NAME", help="value column of a per-strut CSV, e.g. theory (-> theory_mm)")
-    p.add_argument("--timeseries", action="store_true", help="REFERENCE is a time-history CSV")
+    p.add_argument("--timeseries", action="store_true",
+                   help="REFERENCE is a time-history CSV (a MAT file is always one: one vector per channel)")
     p.add_argument("--map", metavar="MAPFILE", help="channel map for --timeseries (format below)")
     p.add_argument("--time-column", metavar="NAME", help="time column of a time-history CSV (default: see map/first)")
     p.add_argument("--time-factor", type=float, default=1.0, metavar="F", help="time column * F = seconds (default 1)")
@@ -984,7 +1026,8 @@ def _main(argv=None) -> int:
         warnings += _load_case_warnings(res, None, ref=ref)
     elif a.channels:
         p.error("--channels applies to .h5 references (a CSV's channels come from its columns or --map)")
-    elif a.timeseries:
+    elif a.timeseries or is_mat(ref_path):
+        a.timeseries = True
         if a.column or a.load_case:
             p.error("--column and --load-case apply to per-strut crush-length CSVs, not to --timeseries")
         sset = read_timeseries_csv(ref_path, res, a.map, a.time_column, a.time_factor)

@@ -125,3 +125,23 @@ def test_report_pages(lc1_short, heritage, run_tool, tmp_path):
     before = ref.read_bytes()
     r = run_tool("compare", lc1_short, ref, "--timeseries", "--map", d / "drop.map", "--report", ref)
     assert r.returncode != 0 and ref.read_bytes() == before, r
+
+
+def test_mat_reference_is_strict_too(lc1_short, heritage, run_tool, tmp_path):
+    """A flat MAT file (one vector per channel) is a time-history reference: compared through the
+    map, an extra variable fails by default and is listed with --allow-unmatched."""
+    from scipy.io import savemat
+    d, res = heritage
+    mat = tmp_path / "drop.mat"
+    data = {"t_ms": res.time * 1e3, "LG1_P_mm": res.stroke[:, 0, 0] * 1e3, "LG1_FN_kN": res.normal_force[:, 0] / 1e3}
+    savemat(mat, data, oned_as="column")
+    r = run_tool("compare", lc1_short, mat, "--map", d / "drop.map")
+    assert r.returncode == 0 and "all 2 checks passed" in r.stdout, r
+    savemat(mat, dict(data, LG2_P_mm=res.stroke[:, 1, 0] * 1e3), oned_as="column")
+    r = run_tool("compare", lc1_short, mat, "--map", d / "drop.map")
+    assert r.returncode == 3 and "FAILED: reference channel 'LG2_P_mm' not compared" in r.stdout, r
+    r = run_tool("compare", lc1_short, mat, "--map", d / "drop.map", "--allow-unmatched")
+    assert r.returncode == 0 and "NOT compared (1): LG2_P_mm" in r.stdout, r
+    savemat(mat, dict(data, bad=np.ones(3)), oned_as="column")
+    r = run_tool("compare", lc1_short, mat, "--map", d / "drop.map")
+    assert r.returncode == 2 and "differ in length" in r.stderr, r
