@@ -470,6 +470,8 @@ class SeriesStats:
     cov_run: float | None = None           # share (0..1) of the run the reference covers
     cov_td: float | None = None            # share of the touchdown phase
     metric_checks: list[tuple[str, float, float, bool]] = field(default_factory=list)  # name, value, limit, ok
+    shift: float = 0.0                     # added to the reference's time [s]
+    cfc: int | None = None                 # filter class applied to both signals
 
 
 def resample(s: Series, shift: float = 0.0, cfc: int | None = None, iso: bool = False) -> SeriesStats:
@@ -489,7 +491,7 @@ def resample(s: Series, shift: float = 0.0, cfc: int | None = None, iso: bool = 
     d = y - yr
     k = int(np.argmax(np.abs(d)))
     return SeriesStats(s, t, y, yr, float(np.sqrt(np.mean(d * d))), float(abs(d[k])), float(t[k]),
-                       float(np.ptp(s.y_ref)), metrics=metrics(t, y, yr, iso=iso))
+                       float(np.ptp(s.y_ref)), metrics=metrics(t, y, yr, iso=iso), shift=shift, cfc=cfc)
 
 
 @dataclass
@@ -772,7 +774,8 @@ def write_series_csv(path: str, stats: list[SeriesStats]) -> str:
                     "allowed_rms", "result", "samples", "peak", "time_of_peak_s", "reference_peak",
                     "reference_time_of_peak_s", "peak_error_pct", "sprague_geers_m", "sprague_geers_p",
                     "sprague_geers_c", "iso18571_corridor", "iso18571_phase", "iso18571_magnitude", "iso18571_slope",
-                    "iso18571_rating", "iso18571_grade", "coverage_run_pct", "coverage_touchdown_pct"])
+                    "iso18571_rating", "iso18571_grade", "coverage_run_pct", "coverage_touchdown_pct",
+                    "reference_shift_s", "cfc"])
         for s in stats:
             m = s.metrics
             iso = [m.iso.corridor, m.iso.phase, m.iso.magnitude, m.iso.slope, m.iso.overall] if m.iso else [None] * 5
@@ -784,7 +787,7 @@ def write_series_csv(path: str, stats: list[SeriesStats]) -> str:
                         _verdict(s.passed), len(s.t), g(m.peak), g(m.t_peak), g(m.peak_ref), g(m.t_peak_ref),
                         g(m.peak_error_pct), g(m.sg_m), g(m.sg_p), g(m.sg_c), *[g(v) for v in iso],
                         m.iso.grade if m.iso else "", g(None if s.cov_run is None else 100 * s.cov_run),
-                        g(None if s.cov_td is None else 100 * s.cov_td)])
+                        g(None if s.cov_td is None else 100 * s.cov_td), f"{s.shift:.9g}", s.cfc or ""])
     return path
 
 

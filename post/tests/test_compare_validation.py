@@ -100,7 +100,8 @@ def test_metric_limits_and_filter(lc1_short, heritage, run_tool, tmp_path):
     assert r.returncode == 0 and "filter: CFC 60" in r.stdout, r
     rows = list(csv.DictReader(open(tmp_path / "t.csv")))
     assert {row["iso18571_grade"] for row in rows} == {"excellent"}
-    assert all(float(row["coverage_run_pct"]) > 99 for row in rows)
+    assert all(float(row["coverage_run_pct"]) > 99 and row["cfc"] == "60" and float(row["reference_shift_s"]) == 0
+               for row in rows)
 
 
 def test_report_pages(lc1_short, heritage, run_tool, tmp_path):
