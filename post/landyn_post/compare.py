@@ -832,13 +832,15 @@ def write_plots(outdir: str, rows: list[CrushRow], stats: list[SeriesStats], res
         plt.close(fig)
     for i, st in enumerate(stats, 1):
         s = st.series
-        eu, f = engineering(s.units)
+        eu, f = s.display()
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
         if st.allowed is not None:
             ax.fill_between(st.t, (st.y_ref - st.allowed) * f, (st.y_ref + st.allowed) * f, color="0.85",
                             label=f"reference ± allowed rms {st.allowed * f:.3g} {eu}")
-        ax.plot(s.t_ref, s.y_ref * f, color="#c44e52", lw=1.0, ls="--", label=ref_label)
-        ax.plot(s.t, s.y * f, color="#4c72b0", lw=1.2, label=res_label)
+        # the compared signals: the reference shifted and both filtered as stated, on the common time base
+        ax.plot(st.t, st.y * f, color="#4c72b0", lw=2.4, alpha=0.55, label=res_label, zorder=2)
+        shift = f" (shifted {st.shift:+.4g} s)" if st.shift else ""
+        ax.plot(st.t, st.y_ref * f, color="#c44e52", lw=1.0, ls="--", label=ref_label + shift, zorder=3)
         ax.set_xlim(st.t[0], st.t[-1])
         ax.set_ylabel(f"[{eu}]")
         ax.legend(fontsize=7, loc="best")
