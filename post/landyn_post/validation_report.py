@@ -88,26 +88,25 @@ def _summary_page(pdf, plt, res: Result, ref_path: str, rows, stats, checks, al,
         for (r, c), cell in tab.get_celld().items():
             if r > 0 and c == 9:
                 cell.set_text_props(color="tab:red" if cell.get_text().get_text() == "FAIL" else "k", weight="bold")
-        y -= 0.05 + 0.022 * (len(stats) + 1)
+        y -= 0.035 + 0.022 * (len(stats) + 1)
     lines = []
     if rows:
-        dev = np.array([r.dev for r in rows]) * MM
-        worst = int(np.argmax(np.abs(dev)))
-        lines += [f"crush lengths: {len(rows)} struts compared, rms deviation {np.sqrt(np.mean(dev ** 2)):.2f} mm, "
-                  f"largest {dev[worst]:+.2f} mm (No. {rows[worst].measure}); "
-                  f"{sum(r.passed is False for r in rows)} outside the tolerance", ""]
+        from .compare import crush_table
+        lines += crush_table(rows, "Crush lengths (Table 3 layout; primary shortening, secondary lengthening +)"
+                             ).splitlines() + [""]
     if checks.failures:
         lines += ["Failures:"] + ["  " + textwrap.shorten(f, 116) for f in checks.failures[:25]]
         if len(checks.failures) > 25:
             lines.append(f"  ... and {len(checks.failures) - 25} more (see the console report)")
         lines.append("")
-    lines += ["Treatment of both signals:",
-              *textwrap.wrap(f"alignment: {al.detail}", 112, initial_indent="  ", subsequent_indent="    "),
-              f"  shift added to the reference's time: {al.shift:+.6f} s",
-              f"  filter: {'CFC %d (SAE J211-1, phaseless 4-pole Butterworth), both signals' % opts.cfc if opts.cfc else 'none'}",
-              "  resampling: linear interpolation onto one uniform time base over the common range",
-              "  metrics: Sprague & Geers (2004) M, P, C; ISO/TS 18571:2014 at 10 kHz (corridor, phase, "
-              "magnitude, slope)"]
+    if stats:
+        lines += ["Treatment of both signals:",
+                  *textwrap.wrap(f"alignment: {al.detail}", 112, initial_indent="  ", subsequent_indent="    "),
+                  f"  shift added to the reference's time: {al.shift:+.6f} s",
+                  f"  filter: {'CFC %d (SAE J211-1, phaseless 4-pole Butterworth), both signals' % opts.cfc if opts.cfc else 'none'}",
+                  "  resampling: linear interpolation onto one uniform time base over the common range",
+                  "  metrics: Sprague & Geers (2004) M, P, C; ISO/TS 18571:2014 at 10 kHz (corridor, phase, "
+                  "magnitude, slope)"]
     if td_phase:
         lines.append(f"  touchdown phase of the result: {td_phase[0]:.4f} .. {td_phase[1]:.4f} s; minimum coverage "
                      f"{opts.min_coverage:g} % of the run, {opts.min_touchdown_coverage:g} % of the touchdown phase")
@@ -118,7 +117,7 @@ def _summary_page(pdf, plt, res: Result, ref_path: str, rows, stats, checks, al,
     cmd = "landyn-compare " + " ".join(shlex.quote(str(x)) for x in (argv if argv is not None else []))
     lines += ["", "Options:"] + ["  " + ln for ln in textwrap.wrap(cmd, 112)]
     lines += ["", f"written {datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d %H:%M UTC} by landyn-compare"]
-    ax = fig.add_axes([0.06, 0.03, 0.9, y - 0.05])
+    ax = fig.add_axes([0.06, 0.03, 0.9, y - 0.03])
     _text_block(ax, lines, 6.6)
     pdf.savefig(fig)
     plt.close(fig)

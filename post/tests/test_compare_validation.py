@@ -146,3 +146,13 @@ def test_mat_reference_is_strict_too(lc1_short, heritage, run_tool, tmp_path):
     savemat(mat, dict(data, bad=np.ones(3)), oned_as="column")
     r = run_tool("compare", lc1_short, mat, "--map", d / "drop.map")
     assert r.returncode == 2 and "differ in length" in r.stderr, r
+
+
+def test_report_of_a_crush_length_comparison(lc1_short, table3_csv, run_tool, tmp_path):
+    """Against Table 3: the summary page carries the crush table, then the crush-length page."""
+    pdf = tmp_path / "crush.pdf"
+    r = run_tool("compare", lc1_short, table3_csv, "--load-case", "LC-1", "--column", "theory", "--tol-pct", "5",
+                 "--report", pdf)
+    assert r.returncode == 0, r
+    data = pdf.read_bytes()
+    assert len(re.findall(rb"/Type\s*/Page\b", data)) == 2
