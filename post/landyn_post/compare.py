@@ -469,7 +469,7 @@ class SeriesStats:
     metrics: Metrics | None = None
     cov_run: float | None = None           # share (0..1) of the run the reference covers
     cov_td: float | None = None            # share of the touchdown phase
-    metric_checks: list[tuple[str, float, float, bool]] = field(default_factory=list)  # name, value, limit, ok
+    metric_checks: list[tuple[str, float, float, bool, str]] = field(default_factory=list)  # name, value, limit, ok, op
     shift: float = 0.0                     # added to the reference's time [s]
     cfc: int | None = None                 # filter class applied to both signals
 
@@ -584,6 +584,22 @@ class Checks:
                                      f"> allowed {st.allowed:.4g} {st.series.units}")
 
 
+#: metrics that --limit can bound: name -> (description); errors are compared by their magnitude
+METRIC_NAMES = ("rms", "peak_error_pct", "peak_time_error", "sg_m", "sg_p", "sg_c", "iso_corridor", "iso_phase",
+                "iso_magnitude", "iso_slope", "iso_rating")
+
+
+def metric_value(m: Metrics, name: str) -> float:
+    """The value of a METRIC_NAMES metric (|.| of the signed errors; NaN when not computed)."""
+    if name.startswith("iso_"):
+        if m.iso is None:
+            return math.nan
+        return {"iso_corridor": m.iso.corridor, "iso_phase": m.iso.phase, "iso_magnitude": m.iso.magnitude,
+                "iso_slope": m.iso.slope, "iso_rating": m.iso.overall}[name]
+    return abs({"rms": m.rms, "peak_error_pct": m.peak_error_pct, "peak_time_error": m.peak_time_error,
+                "sg_m": m.sg_m, "sg_p": m.sg_p, "sg_c": m.sg_c}[name])
+
+
 @dataclass
 class MetricLimits:
     """Command-line limits on the correlation metrics (None: not checked)."""
@@ -591,10 +607,23 @@ class MetricLimits:
     max_peak_time_error: float | None = None   # |time-of-peak error| [s]
     max_sg_c: float | None = None              # Sprague & Geers comprehensive error [-]
     min_iso_rating: float | None = None        # ISO/TS 18571 overall rating [-]
+    extra: list[tuple[str, str, float]] = field(default_factory=list)   # --limit NAME<=X / NAME>=X
 
     @property
     def given(self) -> bool:
-        return any(v is not None for v in vars(self).values())
+        return bool(self.extra) or any(v is not None for k, v in vars(self).items() if k != "extra")
+
+    @staticmethod
+    def parse_limit(text: str) -> tuple[str, str, float]:
+        """'sg_m<=0.1' -> ('sg_m', '<=', 0.1); the names are METRIC_NAMES."""
+        m = re.match(r"^\s*([a-z_]+)\s*(<=|>=)\s*([-+0-9.eE]+)\s*$", text)
+        if not m or m.group(1) not in METRIC_NAMES:
+            raise cli.LandynUsageError(f"--limit {text!r}: expected NAME<=X or NAME>=X with NAME one of "
+                                       f"{', '.join(METRIC_NAMES)}")
+        try:
+            return m.group(1), m.group(2), float(m.group(3))
+        except ValueError:
+            raise cli.LandynUsageError(f"--limit {text!r}: {m.group(3)!r} is not a number") from None
 
     def check(self, stats: list[SeriesStats], checks: "Checks") -> None:
         """Adds one check per channel and limit to `checks` (a NaN metric fails)."""
@@ -604,11 +633,13 @@ class MetricLimits:
                      ("time-of-peak error [s]", abs(m.peak_time_error), self.max_peak_time_error, False),
                      ("Sprague-Geers C", m.sg_c, self.max_sg_c, False),
                      ("ISO 18571 rating", m.iso.overall if m.iso else math.nan, self.min_iso_rating, True)]
+            for key, op, limit in self.extra:
+                items.append((key, metric_value(m, key), limit, op == ">="))
             for name, value, limit, at_least in items:
                 if limit is None:
                     continue
                 ok = bool(value >= limit if at_least else value <= limit)    # NaN -> False
-                st.metric_checks.append((name, value, limit, ok))
+                st.metric_checks.append((name, value, limit, ok, ">=" if at_least else "<="))
                 checks.n_checked += 1
                 if not ok:
                     rel = ">=" if at_least else "<="
@@ -991,6 +1022,9 @@ def _main(argv=None) -> int:
     p.add_argument("--max-peak-time-error", type=float, metavar="S", help="limit on |time-of-peak error| [s]")
     p.add_argument("--max-sg-c", type=float, metavar="X", help="limit on the Sprague & Geers comprehensive error")
     p.add_argument("--min-iso-rating", type=float, metavar="R", help="least ISO/TS 18571 overall rating (0..1)")
+    p.add_argument("--limit", nargs="+", default=[], metavar="NAME<=X",
+                   help="limits on any metric, e.g. 'sg_m<=0.1' 'iso_slope>=0.5' (names: "
+                        + ", ".join(METRIC_NAMES) + "; errors by magnitude; rms in the channel's unit)")
     p.add_argument("--report", metavar="PDF", help="write the validation report (PDF)")
     p.add_argument("--plots", metavar="DIR", help="write overlay plots to DIR")
     p.add_argument("--table-csv", metavar="FILE",
@@ -1062,8 +1096,10 @@ def _main(argv=None) -> int:
         checks.check_crush(rows)
         print(crush_table(rows, "Crush lengths (Table 3 layout; primary shortening, secondary lengthening +)"))
     external = bool(a.timeseries)
-    limits = MetricLimits(a.max_peak_error, a.max_peak_time_error, a.max_sg_c, a.min_iso_rating)
-    want_iso = bool(a.map) or a.iso or a.min_iso_rating is not None or a.report is not None
+    limits = MetricLimits(a.max_peak_error, a.max_peak_time_error, a.max_sg_c, a.min_iso_rating,
+                          [MetricLimits.parse_limit(x) for x in a.limit])
+    want_iso = (bool(a.map) or a.iso or a.min_iso_rating is not None or a.report is not None
+                or any(k.startswith("iso_") for k, _, _ in limits.extra))
     al = align(sset.series, a.align, a.shift, a.max_shift, a.align_channel) if sset.series else Alignment("none")
     stats = [resample(s, al.shift, a.cfc, want_iso) for s in sset.series]
     td_phase = None

@@ -170,8 +170,7 @@ def _channel_page(pdf, plt, st, res_label: str, ref_label: str, shift: float) ->
     lines.append("Checks")
     if st.allowed is not None:
         lines.append(f"  rms deviation <= {st.allowed * f:.4g} {u}: {'pass' if st.passed else 'FAIL'}")
-    for name, v, lim, ok in st.metric_checks:
-        rel = ">=" if name.startswith("ISO") else "<="
+    for name, v, lim, ok, rel in st.metric_checks:
         lines.append(f"  {name} {v:.4g} {rel} {lim:.4g}: {'pass' if ok else 'FAIL'}")
     if st.allowed is None and not st.metric_checks:
         lines.append("  none (no tolerance for this channel)")

@@ -96,6 +96,14 @@ def test_metric_limits_and_filter(lc1_short, heritage, run_tool, tmp_path):
     assert len(failed) == 4 and all("LG1_FN_kN" in ln for ln in failed), r
     assert any("Sprague-Geers C 0.23" in ln for ln in failed)
     assert any("ISO 18571 rating" in ln for ln in failed) and any("peak error [%] 23.08" in ln for ln in failed)
+    r = run_tool("compare", lc1_short, big, "--timeseries", "--map", d / "drop.map", "--allow-unmatched",
+                 "--limit", "sg_m<=0.25", "sg_p<=0.01", "iso_slope>=0.99", "rms<=1e9")
+    failed = [ln for ln in r.stdout.splitlines() if ln.startswith("FAILED")]
+    assert r.returncode == 3 and len(failed) == 2, r          # the map's rms tolerance and iso_slope of the force
+    assert all("LG1_FN_kN" in ln for ln in failed) and any("iso_slope" in ln for ln in failed)
+    assert not any("sg_m" in ln or "sg_p" in ln for ln in failed)   # |M| = 0.231 <= 0.25; P = 0 for a pure scaling
+    r = run_tool(*base, "--limit", "bogus<=1")
+    assert r.returncode == 1 and "sg_c" in r.stderr, r
     r = run_tool(*base, "--cfc", "60", "--table-csv", tmp_path / "t.csv")
     assert r.returncode == 0 and "filter: CFC 60" in r.stdout, r
     rows = list(csv.DictReader(open(tmp_path / "t.csv")))
