@@ -8,14 +8,21 @@ References:
   * a time-history CSV (--timeseries): a time column and named channels, mapped to LANDYN
     quantities by their landyn-export column names or by a --map file.
 
-Nothing is dropped silently: every reference channel is compared or listed as not compared
-(--strict makes that a failure), every strut of the result without a reference value is listed,
-and a comparison in which no check ran does not pass.
+Nothing is dropped silently: every channel of a time-history reference is compared or the
+comparison fails naming it (--allow-unmatched lists it instead); the share of the run and of its
+touchdown phase that each reference channel covers is checked (--min-coverage,
+--min-touchdown-coverage); every strut of the result without a reference value is listed (--strict
+makes that a failure); and a comparison in which no check ran does not pass.
+
+Both signals are treated alike (module correlation): the reference's time shifted (--align
+touchdown | xcorr, or --shift), both CFC-filtered (--cfc), both resampled onto one uniform time
+base; then per channel the deviation, peaks, Sprague & Geers M/P/C and ISO/TS 18571 ratings, any
+of which can carry a limit. --report writes the validation report (module validation_report).
 
 Deviation = RESULT - REFERENCE. Exit status (consistent with landyn's): 0 at least one check ran
 and every check passed; 1 usage error; 2 invalid input (file missing or malformed, unknown
-channel or unit); 3 a check failed (a tolerance exceeded, or with --strict a reference channel
-not compared or a strut not checked); 4 an output file could not be written; 5 nothing was
+channel or unit); 3 a check failed (a tolerance or metric limit exceeded, a reference channel not
+compared, a coverage under its minimum, or with --strict a strut not checked); 4 an output file could not be written; 5 nothing was
 checked (no tolerance given, or no channel had one).
 """
 from __future__ import annotations
@@ -34,6 +41,9 @@ from . import cli
 from .paper import load_case_in_title, load_case_of
 from .schema import (STRUT_LABELS, STRUTS, LandynPostError, Result, is_hdf5, load, measure_gear_strut,
                      measure_number, strut_index)
+from .correlation import Metrics, common_base, coverage, metrics, touchdown_time, xcorr_shift
+from .correlation import RESAMPLING
+from .filters import cfc_filter, cfc_label
 from .units import engineering, known_units, parse_quantity, unit_factor
 
 MM = 1.0e3
@@ -58,8 +68,9 @@ example (drop-test channels in mm and kN, time in ms):
   LG1_P_mm  = stroke[gear=1,strut=primary] unit=mm  tol=2mm
   LG1_FN_kN = normal_force[gear=1] unit=kN  tol=5kN rtol=2%
 Without --map, reference columns named like landyn-export columns (gear1_primary_stroke_m ...)
-are compared directly. Reference columns that are neither mapped nor named like a channel are
-listed as not compared; with --strict that fails the comparison."""
+are compared directly. A reference column that is neither mapped nor named like a channel fails
+the comparison (--allow-unmatched lists it as not compared instead). Tables show each channel in
+its map unit= (else mm, kN, g, deg, m/s); the --table-csv values are in the channel's unit."""
 
 
 # ----------------------------------------------------------------------------------------- CSV input
@@ -287,6 +298,13 @@ class Series:
     rtol_pct: float | None = None
     gear: int | None = None
     strut: int | None = None
+    display_unit: str | None = None     # unit of tables and plots (the map's unit=), else engineering
+
+    def display(self) -> tuple[str, float]:
+        """(unit, factor: value in the channel's unit * factor = value in that unit)."""
+        if self.display_unit:
+            return self.display_unit, 1.0 / unit_factor(self.display_unit, self.units)
+        return engineering(self.units)
 
 
 @dataclass
@@ -296,15 +314,56 @@ class SeriesSet:
     notes: list[str] = field(default_factory=list)
 
 
+def is_mat(path: str) -> bool:
+    """A MATLAB level-5 MAT file (by its header)."""
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(10) == b"MATLAB 5.0"
+    except OSError:
+        return False
+
+
+def read_mat_table(path: str) -> tuple[list[str], np.ndarray]:
+    """The numeric vectors of a flat MAT file (a heritage export: one variable per channel, all of
+    one length) as (names, samples x channels). LandynPostError for anything else."""
+    from scipy.io import loadmat
+    try:
+        mat = loadmat(path, squeeze_me=True)
+    except Exception as exc:          # scipy raises several types for a malformed file
+        raise LandynPostError(f"{path}: cannot be read as a MAT file ({exc})") from None
+    names, cols, skipped = [], [], []
+    for k, v in mat.items():
+        if k.startswith("__"):
+            continue
+        a = np.asarray(v)
+        if a.dtype.kind in "iuf" and a.ndim == 1:
+            names.append(k)
+            cols.append(a.astype(float))
+        else:
+            skipped.append(k)
+    if not cols:
+        raise LandynPostError(f"{path}: no numeric vector variables (a flat MAT file of one vector per channel "
+                              f"is expected; found {', '.join(skipped) or 'nothing'})")
+    n = {len(c) for c in cols}
+    if len(n) != 1:
+        raise LandynPostError(f"{path}: the vectors differ in length ({', '.join(f'{a}: {len(c)}' for a, c in zip(names, cols))})")
+    if skipped:
+        raise LandynPostError(f"{path}: variables that are not numeric vectors cannot be compared: {', '.join(skipped)}")
+    return names, np.stack(cols, axis=1)
+
+
 def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_column: str | None,
                         time_factor: float) -> SeriesSet:
-    """Reads a time-history CSV and pairs its channels with LANDYN channels; every other column is
-    returned as unmatched."""
-    header, rows = _read_csv_rows(path)
-    data = np.empty((len(rows), len(header)))
-    for k, (ln, r) in enumerate(rows):
-        for j, (c, v) in enumerate(zip(header, r)):
-            data[k, j] = _number(path, ln, c, v) if v != "" else np.nan
+    """Reads a time-history CSV (or a flat MAT file) and pairs its channels with LANDYN channels;
+    every other column is returned as unmatched."""
+    if is_mat(path):
+        header, data = read_mat_table(path)
+    else:
+        header, rows = _read_csv_rows(path)
+        data = np.empty((len(rows), len(header)))
+        for k, (ln, r) in enumerate(rows):
+            for j, (c, v) in enumerate(zip(header, r)):
+                data[k, j] = _number(path, ln, c, v) if v != "" else np.nan
     time_entry, entries = (None, None)
     if map_path:
         time_entry, entries = read_map(map_path)
@@ -346,7 +405,7 @@ def read_timeseries_csv(path: str, res: Result, map_path: str | None, time_colum
             raise LandynPostError(f"{path}: column {e.ref_column!r} has fewer than two values")
         out.append(Series(f"{e.ref_column} -> {ch.label}", ch.units, res.time, ch.values, t_ref[ok], y_ref[ok],
                           tol, e.rtol_pct, ch.gear, ch.index if ch.key in ("stroke", "strut_force", "strut_length")
-                          else None))
+                          else None, e.unit))
     used = {e.ref_column for e in entries} | {time_column}
     unmatched = [c for c in header if c not in used]
     return SeriesSet(out, unmatched)
@@ -407,23 +466,32 @@ class SeriesStats:
     ref_range: float
     allowed: float | None = None
     passed: bool | None = None
+    metrics: Metrics | None = None
+    cov_run: float | None = None           # share (0..1) of the run the reference covers
+    cov_td: float | None = None            # share of the touchdown phase
+    metric_checks: list[tuple[str, float, float, bool, str]] = field(default_factory=list)  # name, value, limit, ok, op
+    shift: float = 0.0                     # added to the reference's time [s]
+    cfc: int | None = None                 # filter class applied to both signals
 
 
-def resample(s: Series) -> SeriesStats:
-    """Both signals linearly interpolated on a uniform time base over the overlap of their ranges
-    (step: the finer of the two median sample intervals)."""
-    t0, t1 = max(s.t[0], s.t_ref[0]), min(s.t[-1], s.t_ref[-1])
-    if not t1 > t0:
-        raise LandynPostError(f"{s.label}: the time ranges do not overlap "
-                              f"(result {s.t[0]:g}..{s.t[-1]:g} s, reference {s.t_ref[0]:g}..{s.t_ref[-1]:g} s)")
-    dt = min(np.median(np.diff(s.t)), np.median(np.diff(s.t_ref)))
-    n = int(round((t1 - t0) / dt)) + 1
-    t = np.linspace(t0, t1, max(n, 2))
-    y, yr = np.interp(t, s.t, s.y), np.interp(t, s.t_ref, s.y_ref)
+def resample(s: Series, shift: float = 0.0, cfc: int | None = None, iso: bool = False) -> SeriesStats:
+    """Both signals treated alike: the reference's time shifted by `shift` [s], both CFC-filtered
+    (each on its own samples) when `cfc` is given, then linearly interpolated onto one uniform time
+    base over the overlap of their ranges (step: the finer of the two median sample intervals);
+    the deviation statistics and the correlation metrics on that base."""
+    t_ref = s.t_ref + shift
+    y, y_ref = s.y, s.y_ref
+    if cfc:
+        y, y_ref = cfc_filter(s.t, y, cfc), cfc_filter(t_ref, y_ref, cfc)
+    try:
+        t = common_base(s.t, t_ref)
+    except LandynPostError as exc:
+        raise LandynPostError(f"{s.label}: {exc}") from None
+    y, yr = np.interp(t, s.t, y), np.interp(t, t_ref, y_ref)
     d = y - yr
     k = int(np.argmax(np.abs(d)))
     return SeriesStats(s, t, y, yr, float(np.sqrt(np.mean(d * d))), float(abs(d[k])), float(t[k]),
-                       float(np.ptp(s.y_ref)))
+                       float(np.ptp(s.y_ref)), metrics=metrics(t, y, yr, iso=iso), shift=shift, cfc=cfc)
 
 
 @dataclass
@@ -516,6 +584,140 @@ class Checks:
                                      f"> allowed {st.allowed:.4g} {st.series.units}")
 
 
+#: metrics that --limit can bound: name -> (description); errors are compared by their magnitude
+METRIC_NAMES = ("rms", "peak_error_pct", "peak_time_error", "sg_m", "sg_p", "sg_c", "iso_corridor", "iso_phase",
+                "iso_magnitude", "iso_slope", "iso_rating")
+
+
+def metric_value(m: Metrics, name: str) -> float:
+    """The value of a METRIC_NAMES metric (|.| of the signed errors; NaN when not computed)."""
+    if name.startswith("iso_"):
+        if m.iso is None:
+            return math.nan
+        return {"iso_corridor": m.iso.corridor, "iso_phase": m.iso.phase, "iso_magnitude": m.iso.magnitude,
+                "iso_slope": m.iso.slope, "iso_rating": m.iso.overall}[name]
+    return abs({"rms": m.rms, "peak_error_pct": m.peak_error_pct, "peak_time_error": m.peak_time_error,
+                "sg_m": m.sg_m, "sg_p": m.sg_p, "sg_c": m.sg_c}[name])
+
+
+@dataclass
+class MetricLimits:
+    """Command-line limits on the correlation metrics (None: not checked)."""
+    max_peak_error: float | None = None        # |peak error| [%]
+    max_peak_time_error: float | None = None   # |time-of-peak error| [s]
+    max_sg_c: float | None = None              # Sprague & Geers comprehensive error [-]
+    min_iso_rating: float | None = None        # ISO/TS 18571 overall rating [-]
+    extra: list[tuple[str, str, float]] = field(default_factory=list)   # --limit NAME<=X / NAME>=X
+
+    @property
+    def given(self) -> bool:
+        return bool(self.extra) or any(v is not None for k, v in vars(self).items() if k != "extra")
+
+    @staticmethod
+    def parse_limit(text: str) -> tuple[str, str, float]:
+        """'sg_m<=0.1' -> ('sg_m', '<=', 0.1); the names are METRIC_NAMES."""
+        m = re.match(r"^\s*([a-z_]+)\s*(<=|>=)\s*([-+0-9.eE]+)\s*$", text)
+        if not m or m.group(1) not in METRIC_NAMES:
+            raise cli.LandynUsageError(f"--limit {text!r}: expected NAME<=X or NAME>=X with NAME one of "
+                                       f"{', '.join(METRIC_NAMES)}")
+        try:
+            return m.group(1), m.group(2), float(m.group(3))
+        except ValueError:
+            raise cli.LandynUsageError(f"--limit {text!r}: {m.group(3)!r} is not a number") from None
+
+    def check(self, stats: list[SeriesStats], checks: "Checks") -> None:
+        """Adds one check per channel and limit to `checks` (a NaN metric fails)."""
+        for st in stats:
+            m = st.metrics
+            items = [("peak error [%]", abs(m.peak_error_pct), self.max_peak_error, False),
+                     ("time-of-peak error [s]", abs(m.peak_time_error), self.max_peak_time_error, False),
+                     ("Sprague-Geers C", m.sg_c, self.max_sg_c, False),
+                     ("ISO 18571 rating", m.iso.overall if m.iso else math.nan, self.min_iso_rating, True)]
+            for key, op, limit in self.extra:
+                items.append((key, metric_value(m, key), limit, op == ">="))
+            for name, value, limit, at_least in items:
+                if limit is None:
+                    continue
+                ok = bool(value >= limit if at_least else value <= limit)    # NaN -> False
+                st.metric_checks.append((name, value, limit, ok, ">=" if at_least else "<="))
+                checks.n_checked += 1
+                if not ok:
+                    rel = ">=" if at_least else "<="
+                    checks.failures.append(f"time history {st.series.label}: {name} {value:.4g}, required {rel} "
+                                           f"{limit:.4g}" + (f" ({m.iso_note})" if name.startswith("ISO") and
+                                                             m.iso_note else ""))
+
+
+@dataclass
+class Alignment:
+    """The shift added to the reference's time [s] and how it was found."""
+    mode: str
+    shift: float = 0.0
+    detail: str = ""
+
+
+def _alignment_series(series: list[Series], name: str | None) -> Series:
+    if not series:
+        raise LandynPostError("alignment: no channel is compared")
+    if name is None:
+        return series[0]
+    for s in series:
+        if name in (s.label, s.label.split(" -> ")[0], s.label.split(" -> ")[-1]):
+            return s
+    raise LandynPostError(f"--align-channel {name!r}: not a compared channel "
+                          f"({', '.join(s.label.split(' -> ')[0] for s in series)})")
+
+
+def align(series: list[Series], mode: str, shift: float | None, max_shift: float, channel: str | None) -> Alignment:
+    """One shift for all channels of a reference (they share its clock): given, or from the
+    touchdown instants or the cross-correlation of the alignment channel."""
+    if shift is not None:
+        return Alignment("given", shift, f"given shift {shift:+.6g} s")
+    if mode == "none":
+        return Alignment("none", 0.0, "none")
+    s = _alignment_series(series, channel)
+    if mode == "touchdown":
+        t_res, t_ref = touchdown_time(s.t, s.y), touchdown_time(s.t_ref, s.y_ref)
+        return Alignment("touchdown", t_res - t_ref,
+                         f"touchdown of {s.label}: LANDYN {t_res:.6f} s, reference {t_ref:.6f} s (first |y - y(t0)| "
+                         f">= 5 % of its largest value)")
+    sh = xcorr_shift(s.t, s.y, s.t_ref, s.y_ref, max_shift)
+    return Alignment("xcorr", sh, f"largest cross-correlation of {s.label} within +-{max_shift:g} s")
+
+
+def touchdown_phase(res: Result) -> tuple[float, float]:
+    """The result's touchdown phase [s]: from the first footpad contact (a normal force > 0) to
+    the instant the honeycomb work reaches 99 % of its final value (the end of crushing); the last
+    contact instant when nothing crushes."""
+    t = res.time
+    contact = np.any(np.asarray(res.normal_force).reshape(len(t), -1) > 0, axis=1)
+    if not contact.any():
+        return float(t[0]), float(t[-1])
+    t0 = float(t[int(np.argmax(contact))])
+    w = np.asarray(res.energy["honeycomb_work"])
+    if w[-1] > 0:
+        t1 = float(t[int(np.argmax(w >= 0.99 * w[-1]))])
+    else:
+        t1 = float(t[len(t) - 1 - int(np.argmax(contact[::-1]))])
+    return t0, max(t0, t1)
+
+
+def check_coverage(stats: list[SeriesStats], res: Result, shift: float, min_run: float, min_td: float,
+                   checks: "Checks") -> tuple[float, float]:
+    """Shares of the run and of its touchdown phase covered by each reference channel; a failure
+    under min_run / min_td [%]. Returns the touchdown phase [s]."""
+    td0, td1 = touchdown_phase(res)
+    for st in stats:
+        tr = st.series.t_ref + shift
+        st.cov_run = coverage(tr, float(res.time[0]), float(res.time[-1]))
+        st.cov_td = coverage(tr, td0, td1)
+        for what, v, lim in (("the run", st.cov_run, min_run), ("the touchdown phase", st.cov_td, min_td)):
+            if 100.0 * v < lim - 1e-9:
+                checks.failures.append(f"coverage: {st.series.label}: the reference covers {100 * v:.1f} % of "
+                                       f"{what}, required {lim:g} % (--min-coverage / --min-touchdown-coverage)")
+    return td0, td1
+
+
 # ----------------------------------------------------------------------------------------- output
 
 def _verdict(passed: bool | None) -> str:
@@ -545,15 +747,42 @@ def crush_table(rows: list[CrushRow], title: str) -> str:
 
 
 def series_table(stats: list[SeriesStats]) -> str:
+    """Deviations in each channel's display unit (the map's unit=, else mm, kN, ...)."""
     w = max([len(s.series.label) for s in stats] + [7])
     head = (f"{'channel':<{w}}  {'units':<6}{'rms dev':>12}{'max |dev|':>12}{'at t [s]':>10}{'ref range':>12}"
             f"{'allowed':>12}{'result':>8}{'samples':>9}")
-    lines = ["Time histories (LANDYN - reference, linear interpolation on the common time range; "
-             "allowed = rms tolerance)", head, "-" * len(head)]
+    lines = ["Time histories (LANDYN - reference on one time base; allowed = rms tolerance)", head, "-" * len(head)]
     for s in stats:
-        allowed = f"{s.allowed:12.4g}" if s.allowed is not None else f"{'-':>12}"
-        lines.append(f"{s.series.label:<{w}}  {s.series.units:<6}{s.rms:12.4g}{s.max_abs:12.4g}{s.t_max:10.4f}"
-                     f"{s.ref_range:12.4g}{allowed}{_verdict(s.passed):>8}{len(s.t):9d}")
+        u, f = s.series.display()
+        allowed = f"{s.allowed * f:12.4g}" if s.allowed is not None else f"{'-':>12}"
+        lines.append(f"{s.series.label:<{w}}  {u:<6}{s.rms * f:12.4g}{s.max_abs * f:12.4g}{s.t_max:10.4f}"
+                     f"{s.ref_range * f:12.4g}{allowed}{_verdict(s.passed):>8}{len(s.t):9d}")
+    return "\n".join(lines)
+
+
+def _f(v: float | None, fmt: str, width: int) -> str:
+    return f"{'-':>{width}}" if v is None or not math.isfinite(v) else f"{v:{width}{fmt}}"
+
+
+def metrics_table(stats: list[SeriesStats]) -> str:
+    """Peaks (display units), Sprague & Geers, ISO/TS 18571 and coverage per channel."""
+    w = max([len(s.series.label.split(" -> ")[0]) for s in stats] + [7])
+    head = (f"{'channel':<{w}} {'unit':<5}{'peak':>9}{'t [s]':>8}{'ref peak':>9}{'t [s]':>8}{'err %':>7}"
+            f"{'SG M':>7}{'SG P':>7}{'SG C':>7}{'ISO Z':>7}{'E_P':>6}{'E_M':>6}{'E_S':>6}{'R':>6}  {'grade':<9}"
+            f"{'cov run':>8}{'cov td':>7}")
+    lines = ["Correlation metrics (Sprague & Geers errors; ISO/TS 18571 ratings 0..1; coverage in %)", head,
+             "-" * len(head)]
+    for s in stats:
+        m, (u, f) = s.metrics, s.series.display()
+        iso = m.iso
+        lines.append(f"{s.series.label.split(' -> ')[0]:<{w}} {u:<5}{m.peak * f:9.4g}{m.t_peak:8.4f}"
+                     f"{m.peak_ref * f:9.4g}{m.t_peak_ref:8.4f}{_f(m.peak_error_pct, '.2f', 7)}"
+                     f"{_f(m.sg_m, '.3f', 7)}{_f(m.sg_p, '.3f', 7)}{_f(m.sg_c, '.3f', 7)}"
+                     f"{_f(iso.corridor if iso else None, '.3f', 7)}{_f(iso.phase if iso else None, '.3f', 6)}"
+                     f"{_f(iso.magnitude if iso else None, '.3f', 6)}{_f(iso.slope if iso else None, '.3f', 6)}"
+                     f"{_f(iso.overall if iso else None, '.3f', 6)}  {(iso.grade if iso else '-'):<9}"
+                     f"{_f(None if s.cov_run is None else 100 * s.cov_run, '.1f', 8)}"
+                     f"{_f(None if s.cov_td is None else 100 * s.cov_td, '.1f', 7)}")
     return "\n".join(lines)
 
 
@@ -573,11 +802,23 @@ def write_series_csv(path: str, stats: list[SeriesStats]) -> str:
     with cli.atomic_output(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["channel", "units", "rms_deviation", "max_abs_deviation", "time_of_max_s", "reference_range",
-                    "allowed_rms", "result", "samples"])
+                    "allowed_rms", "result", "samples", "peak", "time_of_peak_s", "reference_peak",
+                    "reference_time_of_peak_s", "peak_error_pct", "sprague_geers_m", "sprague_geers_p",
+                    "sprague_geers_c", "iso18571_corridor", "iso18571_phase", "iso18571_magnitude", "iso18571_slope",
+                    "iso18571_rating", "iso18571_grade", "coverage_run_pct", "coverage_touchdown_pct",
+                    "reference_shift_s", "cfc"])
         for s in stats:
+            m = s.metrics
+            iso = [m.iso.corridor, m.iso.phase, m.iso.magnitude, m.iso.slope, m.iso.overall] if m.iso else [None] * 5
+
+            def g(v):
+                return "" if v is None or not math.isfinite(v) else f"{v:.9g}"
             w.writerow([s.series.label, s.series.units, f"{s.rms:.9g}", f"{s.max_abs:.9g}", f"{s.t_max:.9g}",
                         f"{s.ref_range:.9g}", f"{s.allowed:.9g}" if s.allowed is not None else "",
-                        _verdict(s.passed), len(s.t)])
+                        _verdict(s.passed), len(s.t), g(m.peak), g(m.t_peak), g(m.peak_ref), g(m.t_peak_ref),
+                        g(m.peak_error_pct), g(m.sg_m), g(m.sg_p), g(m.sg_c), *[g(v) for v in iso],
+                        m.iso.grade if m.iso else "", g(None if s.cov_run is None else 100 * s.cov_run),
+                        g(None if s.cov_td is None else 100 * s.cov_td), f"{s.shift:.9g}", s.cfc or ""])
     return path
 
 
@@ -622,13 +863,15 @@ def write_plots(outdir: str, rows: list[CrushRow], stats: list[SeriesStats], res
         plt.close(fig)
     for i, st in enumerate(stats, 1):
         s = st.series
-        eu, f = engineering(s.units)
+        eu, f = s.display()
         fig, (ax, ax2) = plt.subplots(2, 1, figsize=(8, 5.5), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
         if st.allowed is not None:
             ax.fill_between(st.t, (st.y_ref - st.allowed) * f, (st.y_ref + st.allowed) * f, color="0.85",
                             label=f"reference ± allowed rms {st.allowed * f:.3g} {eu}")
-        ax.plot(s.t_ref, s.y_ref * f, color="#c44e52", lw=1.0, ls="--", label=ref_label)
-        ax.plot(s.t, s.y * f, color="#4c72b0", lw=1.2, label=res_label)
+        # the compared signals: the reference shifted and both filtered as stated, on the common time base
+        ax.plot(st.t, st.y * f, color="#4c72b0", lw=2.4, alpha=0.55, label=res_label, zorder=2)
+        shift = f" (shifted {st.shift:+.4g} s)" if st.shift else ""
+        ax.plot(st.t, st.y_ref * f, color="#c44e52", lw=1.0, ls="--", label=ref_label + shift, zorder=3)
         ax.set_xlim(st.t[0], st.t[-1])
         ax.set_ylabel(f"[{eu}]")
         ax.legend(fontsize=7, loc="best")
@@ -718,19 +961,31 @@ def _main(argv=None) -> int:
                "  a crush length fails when |dev| > tol_mm + tol_pct/100 * |reference| (numpy.isclose style;\n"
                "  with only one of --tol-mm / --tol-pct given, that one alone); a time history fails when its\n"
                "  rms deviation exceeds tol + rtol/100 * (reference max - min), tol and rtol from its map line or\n"
-               "  else from --tol-rms (one value per unit, e.g. 2mm 5kN 0.1g 0.5deg) and --rtol-rms.\n\n"
+               "  else from --tol-rms (one value per unit, e.g. 2mm 5kN 0.1g 0.5deg) and --rtol-rms; the metric\n"
+               "  limits (--max-peak-error, --max-peak-time-error, --max-sg-c, --min-iso-rating) apply to every\n"
+               "  compared channel; a time-history reference fails when it covers less than --min-coverage %\n"
+               "  of the run or --min-touchdown-coverage % of the touchdown phase (first footpad contact to\n"
+               "  99 % of the final honeycomb work).\n\n"
+               "alignment (one shift for all channels of a reference, reported and stored in the report):\n"
+               "  --align touchdown: the touchdown instant of the alignment channel (--align-channel, default the\n"
+               "  first) in both signals, the first time |y - y(t0)| reaches 5 % of its largest value;\n"
+               "  --align xcorr: largest correlation within --max-shift; --shift S: given.\n\n"
                "exit status (as landyn's): 0 at least one check ran and all passed; 1 usage error; 2 invalid\n"
-               "  input; 3 a check failed (or, with --strict, a reference channel was not compared or a strut\n"
-               "  not checked); 4 an output file could not be written; 5 nothing was checked (no tolerance).\n\n"
+               "  input; 3 a check failed (a tolerance or metric limit exceeded, a reference channel not\n"
+               "  compared, a coverage under its minimum, or with --strict a strut not checked); 4 an output\n"
+               "  file could not be written; 5 nothing was checked (no tolerance).\n\n"
                "examples:\n"
                "  landyn-compare lc1.h5 post/landyn_post/data/table3_crush_lengths.csv --load-case LC-1 --column theory --tol-pct 3\n"
                "  landyn-compare new.h5 baseline.h5 --tol-mm 0.1 --tol-rms 1mm 2kN 0.05g 0.1deg 0.01m/s\n"
-               "  landyn-compare lc1.h5 droptest.csv --timeseries --map droptest.map --strict --plots cmp\n\n" + MAP_HELP)
+               "  landyn-compare lc1.h5 droptest.csv --timeseries --map droptest.map --strict --plots cmp\n"
+               "  landyn-compare lc1.h5 droptest.csv --timeseries --map droptest.map --align touchdown --cfc 60 \\\n"
+               "      --min-iso-rating 0.8 --report validation.pdf\n\n" + MAP_HELP)
     p.add_argument("result", metavar="RESULT", help="LANDYN result file (.h5)")
     p.add_argument("reference", metavar="REFERENCE", help="LANDYN result (.h5) or CSV")
     p.add_argument("--load-case", metavar="NAME", help="rows of this load_case (per-strut CSV), e.g. LC-1")
     p.add_argument("--column", metavar="NAME", help="value column of a per-strut CSV, e.g. theory (-> theory_mm)")
-    p.add_argument("--timeseries", action="store_true", help="REFERENCE is a time-history CSV")
+    p.add_argument("--timeseries", action="store_true",
+                   help="REFERENCE is a time-history CSV (a MAT file is always one: one vector per channel)")
     p.add_argument("--map", metavar="MAPFILE", help="channel map for --timeseries (format below)")
     p.add_argument("--time-column", metavar="NAME", help="time column of a time-history CSV (default: see map/first)")
     p.add_argument("--time-factor", type=float, default=1.0, metavar="F", help="time column * F = seconds (default 1)")
@@ -744,12 +999,39 @@ def _main(argv=None) -> int:
     p.add_argument("--rtol-rms", type=float, metavar="PCT",
                    help="relative rms tolerance of the time histories [%% of the reference's range]")
     p.add_argument("--strict", action="store_true",
-                   help="fail (exit 3) when a reference channel is not compared or a strut of the result not checked")
+                   help="also fail (exit 3) when a strut of the result is not checked (a reference channel not "
+                        "compared always fails, see --allow-unmatched)")
+    p.add_argument("--allow-unmatched", action="store_true",
+                   help="list reference channels that are not compared instead of failing on them")
+    p.add_argument("--min-coverage", type=float, default=50.0, metavar="PCT",
+                   help="least share of the run a time-history reference must cover [%%] (default 50)")
+    p.add_argument("--min-touchdown-coverage", type=float, default=95.0, metavar="PCT",
+                   help="least share of the touchdown phase it must cover [%%] (default 95)")
+    p.add_argument("--align", choices=("none", "touchdown", "xcorr"), default="none",
+                   help="shift the reference's time: touchdown instants matched, or largest cross-correlation")
+    p.add_argument("--shift", type=float, metavar="S", help="add S seconds to the reference's time (given alignment)")
+    p.add_argument("--max-shift", type=float, default=0.05, metavar="S",
+                   help="bound of the cross-correlation search [s] (default 0.05)")
+    p.add_argument("--align-channel", metavar="NAME", help="channel that sets the alignment (default: the first)")
+    p.add_argument("--cfc", type=int, choices=(60, 180, 600), metavar="CLASS",
+                   help="filter both signals with this SAE J211 channel frequency class (60, 180, 600)")
+    p.add_argument("--iso", action="store_true",
+                   help="ISO/TS 18571 ratings for every channel (default: mapped channels of a --map, or with "
+                        "--min-iso-rating or --report; about 0.3 s per channel and second of signal)")
+    p.add_argument("--max-peak-error", type=float, metavar="PCT", help="limit on |peak error| [%%] per channel")
+    p.add_argument("--max-peak-time-error", type=float, metavar="S", help="limit on |time-of-peak error| [s]")
+    p.add_argument("--max-sg-c", type=float, metavar="X", help="limit on the Sprague & Geers comprehensive error")
+    p.add_argument("--min-iso-rating", type=float, metavar="R", help="least ISO/TS 18571 overall rating (0..1)")
+    p.add_argument("--limit", nargs="+", default=[], metavar="NAME<=X",
+                   help="limits on any metric, e.g. 'sg_m<=0.1' 'iso_slope>=0.5' (names: "
+                        + ", ".join(METRIC_NAMES) + "; errors by magnitude; rms in the channel's unit)")
+    p.add_argument("--report", metavar="PDF", help="write the validation report (PDF)")
     p.add_argument("--plots", metavar="DIR", help="write overlay plots to DIR")
     p.add_argument("--table-csv", metavar="FILE",
                    help="write the deviation table as CSV (crush lengths; time histories to FILE or <stem>_timeseries.csv)")
     a = p.parse_args(argv)
-    for name in ("tol_mm", "tol_pct", "rtol_rms"):
+    for name in ("tol_mm", "tol_pct", "rtol_rms", "min_coverage", "min_touchdown_coverage", "max_shift",
+                 "max_peak_error", "max_peak_time_error", "max_sg_c", "min_iso_rating"):
         v = getattr(a, name)
         if v is not None and not v >= 0:
             p.error(f"--{name.replace('_', '-')} must be >= 0")
@@ -783,7 +1065,8 @@ def _main(argv=None) -> int:
         warnings += _load_case_warnings(res, None, ref=ref)
     elif a.channels:
         p.error("--channels applies to .h5 references (a CSV's channels come from its columns or --map)")
-    elif a.timeseries:
+    elif a.timeseries or is_mat(ref_path):
+        a.timeseries = True
         if a.column or a.load_case:
             p.error("--column and --load-case apply to per-strut crush-length CSVs, not to --timeseries")
         sset = read_timeseries_csv(ref_path, res, a.map, a.time_column, a.time_factor)
@@ -812,11 +1095,27 @@ def _main(argv=None) -> int:
     if rows:
         checks.check_crush(rows)
         print(crush_table(rows, "Crush lengths (Table 3 layout; primary shortening, secondary lengthening +)"))
-    stats = [resample(s) for s in sset.series]
+    external = bool(a.timeseries)
+    limits = MetricLimits(a.max_peak_error, a.max_peak_time_error, a.max_sg_c, a.min_iso_rating,
+                          [MetricLimits.parse_limit(x) for x in a.limit])
+    want_iso = (bool(a.map) or a.iso or a.min_iso_rating is not None or a.report is not None
+                or any(k.startswith("iso_") for k, _, _ in limits.extra))
+    al = align(sset.series, a.align, a.shift, a.max_shift, a.align_channel) if sset.series else Alignment("none")
+    stats = [resample(s, al.shift, a.cfc, want_iso) for s in sset.series]
+    td_phase = None
     if stats:
+        if external:
+            td_phase = check_coverage(stats, res, al.shift, a.min_coverage, a.min_touchdown_coverage, checks)
         checks.check_series(stats)
+        limits.check(stats, checks)
         print()
+        print(f"alignment: {al.detail}; shift added to the reference's time: {al.shift:+.6f} s")
+        print(f"filter: {cfc_label(a.cfc) + ', both signals' if a.cfc else 'none'}; resampling: {RESAMPLING}")
+        if td_phase:
+            print(f"touchdown phase of the result (for coverage): {td_phase[0]:.4f} .. {td_phase[1]:.4f} s")
         print(series_table(stats))
+        print()
+        print(metrics_table(stats))
     if a.table_csv:
         if rows:
             print(write_table_csv(a.table_csv, rows))
@@ -846,10 +1145,18 @@ def _main(argv=None) -> int:
     if checks.unchecked:
         print(f"Compared without a tolerance ({len(checks.unchecked)}): "
               + ", ".join(checks.unchecked[:12]) + (" ..." if len(checks.unchecked) > 12 else ""))
+    if sset.unmatched and not a.allow_unmatched:
+        checks.failures += [f"reference channel {c!r} not compared (--allow-unmatched lists it instead)"
+                            for c in sset.unmatched]
+        strict_fail = [f for f in strict_fail if not f.startswith("reference channel")]
     if a.strict:
         checks.failures += [f"--strict: {s}" for s in strict_fail]
     elif strict_fail:
         print("  (--strict makes these a failure)")
+    if a.report:
+        from .validation_report import write_report
+        print(write_report(a.report, res, ref_path, rows, stats, checks, al, td_phase, a,
+                           sys.argv[1:] if argv is None else argv))
     if checks.failures:
         for f in checks.failures:
             print("FAILED: " + f)

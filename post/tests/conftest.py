@@ -21,7 +21,7 @@ POST = Path(__file__).resolve().parents[1]
 REPO = POST.parent
 sys.path.insert(0, str(POST))
 
-TOOLS = ("plot", "animate", "compare", "export", "envelope", "dispersion")
+TOOLS = ("plot", "animate", "compare", "export", "envelope", "dispersion", "calibrate")
 
 
 def _find_landyn() -> tuple[str | None, str]:

@@ -31,21 +31,28 @@ def exported(lc1_short, tmp_path_factory, run_tool):
 ALL_UNITS = ("1e-5m", "1e-3N", "1e-3N m", "1e-5m/s", "1e-5deg", "1e-5deg/s", "1e-5g", "1e-3J")
 
 
-def test_renamed_column_fails_strict_and_is_reported_without(lc1_short, exported, tmp_path, run_tool):
-    """A reference with one column renamed: without --strict the column is named as not compared
-    (exit 0, the other checks pass); with --strict the comparison fails (exit 3)."""
+def test_renamed_column_fails_by_default_and_is_listed_with_allow_unmatched(lc1_short, exported, tmp_path,
+                                                                           run_tool):
+    """A reference with one column renamed (as a heritage code would name it): by default the
+    comparison fails naming the column (exit 3) although every other check passes; with
+    --allow-unmatched the column is listed as not compared (exit 0); --strict fails again."""
     lines = exported.read_text().splitlines()
     assert "gear2_primary_stroke_m" in lines[0].split(",")
     lines[0] = lines[0].replace("gear2_primary_stroke_m", "LG2_primary_stroke_mm")
     ref = tmp_path / "renamed.csv"
     ref.write_text("\n".join(lines) + "\n")
-    r = run_tool("compare", lc1_short, ref, "--timeseries", "--tol-rms", *ALL_UNITS)
+    r = run_tool("compare", lc1_short, ref, "--timeseries", "--rtol-rms", "1", "--tol-rms", *ALL_UNITS)
+    assert r.returncode == 3, r
+    assert "FAILED: reference channel 'LG2_primary_stroke_mm' not compared" in r.stdout
+    assert r.stdout.count("FAILED:") == 1
+    assert "gear2_primary_stroke_m" not in r.stdout          # the channel was really not compared
+    r = run_tool("compare", lc1_short, ref, "--timeseries", "--tol-rms", *ALL_UNITS, "--allow-unmatched")
     assert r.returncode == 0, r
     assert "without a tolerance" not in r.stdout         # every unit has one, the joint moments' N m included
     assert "Reference channels NOT compared (1): LG2_primary_stroke_mm" in r.stdout
     assert "--strict makes these a failure" in r.stdout
-    assert "gear2_primary_stroke_m" not in r.stdout          # the channel was really not compared
-    strict = run_tool("compare", lc1_short, ref, "--timeseries", "--tol-rms", *ALL_UNITS, "--strict")
+    strict = run_tool("compare", lc1_short, ref, "--timeseries", "--tol-rms", *ALL_UNITS, "--strict",
+                      "--allow-unmatched")
     assert strict.returncode == 3, strict
     assert "FAILED: --strict: reference channel 'LG2_primary_stroke_mm' not compared" in strict.stdout
     assert strict.stdout.count("FAILED:") == 1
@@ -66,7 +73,8 @@ def test_map_lists_unmapped_columns(lc1_short, tmp_path, run_tool):
                     "LG1_F_kN = strut_force[gear=1,strut=primary] unit=kN tol=0.5kN rtol=2%\n")
     table = tmp_path / "dev.csv"
     plots = tmp_path / "plots"
-    r = run_tool("compare", lc1_short, ref, "--timeseries", "--map", mapf, "--table-csv", table, "--plots", plots)
+    r = run_tool("compare", lc1_short, ref, "--timeseries", "--map", mapf, "--table-csv", table, "--plots", plots,
+                 "--allow-unmatched")
     assert r.returncode == 0, r
     assert "Reference channels NOT compared (1): LG3_P_mm" in r.stdout and "not listed in the map" in r.stdout
     assert "Struts NOT checked (11 of 12" in r.stdout
@@ -86,7 +94,7 @@ def test_map_lists_unmapped_columns(lc1_short, tmp_path, run_tool):
         "compare_01_stroke_gear_1_strut_primary.png", "compare_02_strut_force_gear_1_strut_primary.png"]
     # tighten the stroke tolerance below the offset: that row fails, exit 3
     mapf.write_text(mapf.read_text().replace("tol=1mm", "tol=0.2mm"))
-    r = run_tool("compare", lc1_short, ref, "--timeseries", "--map", mapf, "--table-csv", table)
+    r = run_tool("compare", lc1_short, ref, "--timeseries", "--map", mapf, "--table-csv", table, "--allow-unmatched")
     assert r.returncode == 3, r
     assert "FAILED: time history LG1_P_mm" in r.stdout and r.stdout.count("FAILED:") == 1
     # --strict also fails on the unmapped column
