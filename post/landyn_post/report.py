@@ -72,12 +72,13 @@ def outcome_lines(res: Result) -> list[str]:
     if name == "still_moving":
         lines.append("  inconclusive: neither at rest nor tipped over at the end time; run longer (t_end) to decide")
     lines.append(f"end state: body speed {res.data['outcome/body_speed']:.3g} m/s, angular rate "
-                 f"{res.data['outcome/angular_rate']:.3g} deg/s, slide rate {res.data['outcome/slide_rate']:.3g} m/s, "
+                 f"{res.data['outcome/angular_rate']:.3g} deg/s,")
+    lines.append(f"           slide rate {res.data['outcome/slide_rate']:.3g} m/s, "
                  f"stroke rate {res.data['outcome/stroke_rate']:.3g} m/s")
     if name != "no_touchdown":
         ratio = np.atleast_1d(res.data["outcome/friction_ratio"])
-        lines.append(f"tip-over margin {res.data['outcome/tipover_margin']:.2f} deg; static friction ratio "
-                     "|F_t|/(mu_s F_n) per footpad " + ", ".join(f"{r:.2f}" for r in ratio))
+        lines.append(f"tip-over margin {res.data['outcome/tipover_margin']:.2f} deg (final state)")
+        lines.append("static friction ratio |F_t|/(mu_s F_n) per footpad: " + ", ".join(f"{r:.2f}" for r in ratio))
     return lines
 
 
