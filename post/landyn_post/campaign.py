@@ -10,8 +10,11 @@ from .namelist import parse_namelist
 
 #: failure criteria in the bit order of /cases/failed_criteria
 CRITERIA = (("tipped_over", "tipped over"), ("stroke_margin", "stroke margin (bottoming out)"),
-            ("overload", "overload"), ("body_clearance", "body clearance"), ("not_at_rest", "not at rest"),
-            ("no_result", "no result (invalid input / failed run)"))
+            ("overload", "overload"), ("body_clearance", "body clearance"),
+            ("not_at_rest", "not at rest (still moving: inconclusive)"),
+            ("no_result", "no result (invalid input / failed run / failed health check)"),
+            ("no_touchdown", "no touchdown"), ("tipover_margin", "tip-over margin at rest"),
+            ("friction_ratio", "static friction ratio at rest"))
 
 _NAME = re.compile(r"^\s*([a-z_]+)%([a-z_0-9]+)\s*(?:\(([^)]*)\))?\s*$", re.I)
 

@@ -57,10 +57,36 @@ def touchdown_lines(res: Result) -> list[str]:
     ]
 
 
+#: the outcome classes of /summary/outcome (docs/output.md, "Outcome")
+OUTCOMES = {1: "no_touchdown", 2: "at_rest", 3: "still_moving", 4: "tipped_over"}
+
+
+def outcome_lines(res: Result) -> list[str]:
+    """The outcome block: the class, the end state's speeds and the stability figures (schema 1.3;
+    an older file has none: said so)."""
+    code = res.data.get("outcome/code")
+    if code is None:
+        return ["no outcome in this file (schema before 1.3): rest and touchdown not decided"]
+    name = OUTCOMES.get(int(code), "not classified")
+    lines = [f"outcome: {name.replace('_', ' ')} at t = {res.final_time:.3f} s"]
+    if name == "still_moving":
+        lines.append("  inconclusive: neither at rest nor tipped over at the end time; run longer (t_end) to decide")
+    lines.append(f"end state: body speed {res.data['outcome/body_speed']:.3g} m/s, angular rate "
+                 f"{res.data['outcome/angular_rate']:.3g} deg/s,")
+    lines.append(f"           slide rate {res.data['outcome/slide_rate']:.3g} m/s, "
+                 f"stroke rate {res.data['outcome/stroke_rate']:.3g} m/s")
+    if name != "no_touchdown":
+        ratio = np.atleast_1d(res.data["outcome/friction_ratio"])
+        lines.append(f"tip-over margin {res.data['outcome/tipover_margin']:.2f} deg (final state)")
+        lines.append("static friction ratio |F_t|/(mu_s F_n) per footpad: " + ", ".join(f"{r:.2f}" for r in ratio))
+    return lines
+
+
 def verdict(res: Result, min_stroke_margin: float = 0.0, max_overload: float | None = None) -> tuple[bool, list[str]]:
-    """(success, lines): the run against the success criteria of a campaign's &criteria: it ran to
-    its end, did not tip over, every stroke margin >= min_stroke_margin (m), and (when given) peak
-    overload <= max_overload (g)."""
+    """(success, lines): the run against the success criteria of a campaign's &criteria: it touched
+    down and came to rest (outcome at_rest; schema 1.3), did not tip over, every stroke margin >=
+    min_stroke_margin (m), and (when given) peak overload <= max_overload (g). A run still moving at
+    its end is inconclusive, never a success; one that never touched down is no landing."""
     lines, ok = [], True
 
     def crit(good: bool, text: str):
@@ -68,6 +94,12 @@ def verdict(res: Result, min_stroke_margin: float = 0.0, max_overload: float | N
         ok &= good
         lines.append(f"  [{'met' if good else 'FAILED'}] {text}")
 
+    code = res.data.get("outcome/code")
+    name = OUTCOMES.get(int(code), "not classified") if code is not None else None
+    if name == "no_touchdown":
+        crit(False, "touchdown (no footpad touched the ground)")
+        return False, (["NO TOUCHDOWN: the lander never touched the ground"] + lines
+                       + [f"  run ended: {res.end_reason} at {res.final_time:.3f} s"])
     crit(not res.tipped_over, f"no tip-over (largest tilt {res.max_tilt:.2f} deg)")
     m = float(np.min(res.stroke_margin))
     i, k = np.unravel_index(int(np.argmin(res.stroke_margin)), res.stroke_margin.shape)
@@ -77,7 +109,21 @@ def verdict(res: Result, min_stroke_margin: float = 0.0, max_overload: float | N
     if max_overload is not None:
         crit(res.peak_overload <= max_overload, f"peak overload <= {max_overload:g} g "
              f"({res.peak_overload:.2f} g)")
-    head = ("SUCCESSFUL LANDING: every criterion met" if ok else "NOT A SUCCESSFUL LANDING: criteria failed")
+    decided = True
+    if name is None:
+        crit(False, "at rest: not decided (file before schema 1.3 has no outcome)")
+        decided = False
+    elif not res.tipped_over:
+        decided = name == "at_rest"
+        crit(decided, "came to rest" + ("" if decided else
+                                       f" (still moving at {res.final_time:.3f} s: body speed "
+                                       f"{res.data['outcome/body_speed']:.3g} m/s)"))
+    if ok:
+        head = "SUCCESSFUL LANDING: at rest, every criterion met"
+    elif not decided and sum("[FAILED]" in ln for ln in lines) == 1:
+        head = "INCONCLUSIVE: still moving at the end time, not a success"
+    else:
+        head = "NOT A SUCCESSFUL LANDING: criteria failed"
     return ok, [head] + lines + [f"  run ended: {res.end_reason} at {res.final_time:.3f} s"]
 
 
@@ -108,7 +154,8 @@ def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tup
     if banner is not None:
         text, ok = banner
         fig.text(0.06, y, text, fontsize=13, weight="bold", va="top", color="white",
-                 bbox=dict(boxstyle="round,pad=0.4", fc="#2e7d32" if ok else "#c62828", ec="none"))
+                 bbox=dict(boxstyle="round,pad=0.4", ec="none",
+                           fc={True: "#2e7d32", False: "#c62828"}.get(ok, "#b26a00")))
         y -= 0.04
     for heading, lines in blocks:
         fig.text(0.06, y, heading, fontsize=10, weight="bold", va="top")
@@ -140,6 +187,7 @@ def write_report(res: Result, path: str, opts=None) -> str:
     ok, verdict_lines = verdict(res, opts.min_stroke_margin, opts.max_overload)
     blocks = [
         ("Touchdown conditions", touchdown_lines(res)),
+        ("Outcome", outcome_lines(res)),
         ("Verdict against the success criteria", verdict_lines[1:]),
         ("Crush lengths (Table 3 layout; primary shortening and secondary lengthening positive)",
          crush_table_lines(res)),
@@ -149,7 +197,9 @@ def write_report(res: Result, path: str, opts=None) -> str:
     ]
     with cli.atomic_output(path, mode=None) as tmp:
         with PdfPages(tmp, metadata={"Title": f"LANDYN report: {res.title}", "Creator": "landyn-plot"}) as pdf:
-            _text_page(pdf, f"LANDYN result: {res.title}", blocks, (verdict_lines[0], ok))
+            # green: success; amber: inconclusive (still moving); red: failed
+            state = None if verdict_lines[0].startswith("INCONCLUSIVE") else ok
+            _text_page(pdf, f"LANDYN result: {res.title}", blocks, (verdict_lines[0], state))
             for _, func, _ in FIGURES:
                 fig = func(res, opts)
                 if fig is None:       # nothing to draw in this file (e.g. an older schema)

@@ -35,7 +35,7 @@ __all__ = [
     "ROOT_ATTRIBUTES", "META", "JOINT_BLOCKS", "LOAD_NAMES", "PEAK_JOINTS", "PEAK_QUANTITIES",
 ]
 
-SCHEMA_VERSION = "1.2"     #: the schema version this package was written for
+SCHEMA_VERSION = "1.3"     #: the schema version this package was written for
 SUPPORTED_MAJOR = "1"      #: files with schema_version 1.x are read (minor versions only add)
 
 #: strut order of the last axis of gear arrays (Table 3 measure order within a gear)
@@ -253,6 +253,29 @@ DATASETS: tuple[DatasetSpec, ...] = tuple(
                     "per check: 0 passed, 1 warning, 2 failed"),
         DatasetSpec("health/messages", "/summary/health/messages", "-", (), "text",
                     "one line per check that did not pass; 'none' when all passed"),
+        DatasetSpec("outcome/code", "/summary/outcome/code", "-", (), "int",
+                    "0 not classified, 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over",
+                    (), "1.3"),
+        DatasetSpec("outcome/name", "/summary/outcome/name", "-", (), "text",
+                    "no_touchdown, at_rest, still_moving or tipped_over", (), "1.3"),
+        DatasetSpec("outcome/touched_down", "/summary/outcome/touched_down", "-", (), "bool",
+                    "a footpad touched the ground", (), "1.3"),
+        DatasetSpec("outcome/body_speed", "/summary/outcome/body_speed", "m/s", (), "real",
+                    "mass-centre speed at the final time", (), "1.3"),
+        DatasetSpec("outcome/angular_rate", "/summary/outcome/angular_rate", "deg/s", (), "real",
+                    "|omega| at the final time", (), "1.3"),
+        DatasetSpec("outcome/slide_rate", "/summary/outcome/slide_rate", "m/s", (), "real",
+                    "largest footpad speed along the terrain at the final time", (), "1.3"),
+        DatasetSpec("outcome/footpad_speed", "/summary/outcome/footpad_speed", "m/s", (), "real",
+                    "largest footpad speed (slide and sink) at the final time", (), "1.3"),
+        DatasetSpec("outcome/stroke_rate", "/summary/outcome/stroke_rate", "m/s", (), "real",
+                    "largest strut stroke rate at the final time", (), "1.3"),
+        DatasetSpec("outcome/tipover_margin", "/summary/outcome/tipover_margin", "deg", (), "real",
+                    "further tilt about the nearest support-polygon edge that puts the gravity line through the mass "
+                    "centre on it, final state (<= 0: not statically stable)", (), "1.3"),
+        DatasetSpec("outcome/friction_ratio", "/summary/outcome/friction_ratio", "-", ("g",), "real",
+                    "per footpad |F_t|/(mu_s F_n), final state (< 1 held by static friction, 0 off the ground)",
+                    (), "1.3"),
     ]
 )
 

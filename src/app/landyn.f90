@@ -2,19 +2,23 @@
 !!
 !!   landyn [DECK.nml] [-o FILE] [--check] [--quiet] [--help] [--version]
 !!
-!! Exit status: 0 success (a tip-over is a result, not an error); 1 usage error; 2 invalid input;
-!! 3 the simulation failed (diverged); 4 the result file cannot be written (checked before the run
-!! where possible, docs/files.md); 6 the run completed but a run-health check failed: the result is
-!! physically meaningless (file written, /summary/health says why; docs/health.md).
+!! Exit status: 0 the run touched down and ended with an outcome: at rest, tipped over, or still
+!! moving at t_end (inconclusive; the printed outcome and /summary/outcome say which); 1 usage
+!! error; 2 invalid input; 3 the simulation failed (diverged); 4 the result file cannot be written
+!! (checked before the run where possible, docs/files.md); 6 the run completed but a run-health
+!! check failed: the result is physically meaningless (file written, /summary/health says why;
+!! docs/health.md); 7 no touchdown (file written; docs/exit_status.md).
 program landyn
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_kinds, only: msg_len
   use landyn_config, only: landyn_input_t, default_input
   use landyn_input, only: input_errors_t, load_input, resolve_input, validate_input, write_resolved_input
-  use landyn_simulation, only: sim_result_t, run_simulation
+  use landyn_simulation, only: sim_result_t
+  use landyn_run, only: run_case, input_unhealthy, case_status_meaning
+  use landyn_outcome, only: write_outcome
   use landyn_output, only: write_result_file
   use landyn_report, only: write_summary_table
-  use landyn_health, only: health_t, check_health, check_input_health, write_health, health_fail
+  use landyn_health, only: health_t, write_health
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
@@ -37,9 +41,10 @@ program landyn
       '  -V, --version   print the version', &
       '  -h, --help      print this help', &
       '', &
-      'Exit status: 0 success (a tip-over is a result), 1 usage error, 2 invalid input,', &
-      '3 simulation failed (diverged), 4 result file not written (or refused: docs/files.md),', &
-      '6 run-health check failed: result physically meaningless (docs/health.md).']
+      'Exit status: 0 touched down, outcome printed (at rest, tipped over, or still moving:', &
+      'inconclusive), 1 usage error, 2 invalid input, 3 simulation failed (diverged),', &
+      '4 result file not written (or refused: docs/files.md), 6 run-health check failed: result', &
+      'physically meaningless (docs/health.md), 7 no touchdown (docs/exit_status.md).']
 
   type(app_t) :: app
   type(landyn_input_t) :: inp
@@ -48,7 +53,8 @@ program landyn
   type(health_t) :: health
   character(len=:), allocatable :: deck, out_file, arg, cmd, problem
   logical :: check_only
-  integer :: stat, progress
+  integer :: stat, status, progress
+  logical :: ran
   character(len=msg_len) :: msg
 
   call app%start('landyn', trim(help_text(1)), help_text)
@@ -91,16 +97,8 @@ program landyn
   if (file_kind(out_file) == kind_regular .and. .not. app%quiet) &
     write (error_unit, '(a)') 'landyn: '//out_file//' exists and will be replaced'
 
-  ! ---- input health (docs/health.md): a meaningless configuration is not run
-  call check_input_health(inp, health)
-  if (health%status() == health_fail) then
-    call write_health(error_unit, 'landyn: ', health)
-    write (error_unit, '(a)') 'landyn: a run-health check of the input failed: the run would be physically '// &
-      'meaningless; nothing was run and no file was written (exit status 6)'
-    call terminate(EXIT_HEALTH)
-  end if
-
-  ! ---- run
+  ! ---- run: input health, simulation, result health, outcome (landyn_run, as landyn_study and
+  ! landyn_batch run a case)
   progress = error_unit
   if (app%quiet) progress = -1
   if (.not. app%quiet) then
@@ -110,8 +108,15 @@ program landyn
       write (error_unit, '(a)') 'landyn: running the built-in default (paper lander, LC-1) -> '//out_file
     end if
   end if
-  call run_simulation(inp, res, stat, msg, progress)
-  if (stat /= 0) then
+  msg = ''
+  call run_case(inp, res, health, status, msg, progress, ran=ran)
+  if (input_unhealthy(status, ran)) then
+    call write_health(error_unit, 'landyn: ', health)
+    write (error_unit, '(a)') 'landyn: a run-health check of the input failed: the run would be physically '// &
+      'meaningless; nothing was run and no file was written (exit status 6)'
+    call terminate(EXIT_HEALTH)
+  end if
+  if (.not. ran) then
     write (error_unit, '(a)') 'landyn: simulation failed: '//trim(msg)
     write (error_unit, '(a)') 'landyn: no result file was written'
     call terminate(EXIT_DIVERGED)
@@ -119,20 +124,23 @@ program landyn
 
   ! ---- result file
   cmd = command_line()
-  call check_health(inp, res, health)
   call write_result_file(out_file, inp, res, cmd, stat, msg, health)
   if (stat /= 0) then
     write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
     call terminate(EXIT_FILE)
   end if
   call write_summary_table(output_unit, inp, res)
+  call write_outcome(output_unit, res)
   call write_health(output_unit, '', health)
   write (output_unit, '(a)') 'Results written to '//out_file
-  if (health%status() == health_fail) then
+  if (status == EXIT_HEALTH) then
     call write_health(error_unit, 'landyn: ', health)
     write (error_unit, '(a)') 'landyn: a run-health check failed: the result is physically meaningless '// &
       '(exit status 6; /summary/health in '//out_file//')'
-    call terminate(EXIT_HEALTH)
+  else if (status /= EXIT_OK) then
+    write (error_unit, '(a,i0,a)') 'landyn: '//case_status_meaning(status)//' (exit status ', status, &
+      '; /summary/outcome in '//out_file//')'
   end if
+  call terminate(status)
 
 end program landyn

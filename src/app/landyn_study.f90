@@ -6,16 +6,20 @@
 !! Exit status: 0 every run completed (a tip-over is a result); 1 usage error; 2 invalid study
 !! deck or run input (nothing is run); 3 some runs failed (diverged; the files are written, their
 !! status says which); 4 an output file cannot be written (refused before anything runs where
-!! possible, docs/files.md); 6 no run failed but a run-health check failed for some (status 6).
+!! possible, docs/files.md); 6 no run failed but a run-health check failed for some (status 6);
+!! 7 every run completed and was healthy, but some never touched the ground (status 7). Each run
+!! is run as landyn runs it (landyn_run): its status in the result file has landyn's meaning.
 program landyn_study_main
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
-  use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, strut_names
+  use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, &
+                          status_no_touchdown, strut_names
   use landyn_study_output, only: write_study_csv, write_study_h5
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
-  use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
+  use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH, &
+                          EXIT_NO_TOUCHDOWN
   use landyn_cli, only: command_line, write_input_errors
   use landyn_app_support, only: app_t
   implicit none
@@ -39,7 +43,7 @@ program landyn_study_main
       '', &
       'Exit status: 0 success, 1 usage error, 2 invalid input (nothing run), 3 some runs failed,', &
       '4 a file cannot be written (or is refused: docs/files.md), 6 a run-health check failed for', &
-      'some runs (docs/health.md).']
+      'some runs (docs/health.md), 7 some runs never touched down (docs/exit_status.md).']
 
   type(app_t) :: app
   type(study_t) :: study
@@ -154,6 +158,10 @@ program landyn_study_main
     write (error_unit, '(a)') 'landyn_study: a run-health check failed for some runs: their results are '// &
       'physically meaningless (status 6 in the result file; docs/health.md)'
     call terminate(EXIT_HEALTH)
+  end if
+  if (run_stat == status_no_touchdown) then
+    write (error_unit, '(a)') 'landyn_study: some runs never touched the ground (status 7 in the result file)'
+    call terminate(EXIT_NO_TOUCHDOWN)
   end if
   call terminate(EXIT_OK)
 

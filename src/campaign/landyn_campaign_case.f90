@@ -2,20 +2,26 @@
 !! messages, journal lines) as integer, real and text parts.
 !!
 !! A case runs exactly what `landyn` runs: the case's input (landyn_campaign_deck%case_input,
-!! read through the run-deck reader) goes to run_simulation, and a saved time history is written
-!! with write_result_file. The row holds the case's varied inputs, the single-run summary
-!! metrics, the success verdict against the campaign's criteria, the status and error message.
+!! read through the run-deck reader) goes to landyn_run's run_case (input health, simulation,
+!! result health, outcome; the status has landyn's exit-status meaning), and a saved time history
+!! is written with write_result_file. The row holds the case's varied inputs, the single-run
+!! summary metrics, the outcome, the success verdict against the campaign's criteria, the status
+!! and error message. A case is a success only when it came to rest (outcome at_rest) and met
+!! every criterion; one still moving at its end time with no other criterion failed is
+!! inconclusive (criterion not_at_rest alone), counted apart in the summary.
 !!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_case
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears, deg2rad
-  use landyn_status, only: STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED
+  use landyn_status, only: STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
-  use landyn_simulation, only: sim_result_t, run_simulation
-  use landyn_health, only: health_t, check_health, health_fail
+  use landyn_simulation, only: sim_result_t
+  use landyn_health, only: health_t
+  use landyn_run, only: run_case_once => run_case
+  use landyn_outcome, only: outcome_at_rest
   use landyn_output, only: write_result_file
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
   use landyn_kinematics, only: rot_zyx
@@ -25,31 +31,38 @@ module landyn_campaign_case
 
   public :: case_row_t, run_case, new_row
   public :: row_int_count, row_real_count, pack_row, unpack_row, rows_equal
-  public :: status_ok, status_failed
+  public :: status_ok, status_failed, status_unhealthy, status_no_touchdown, inconclusive
   public :: n_criteria, criterion_name, failed_criteria_names, failure_counts
 
   integer, parameter :: status_not_run = -1        !! row not filled [-]
   integer, parameter :: status_ok = EXIT_OK                 !! the simulation ran to its end (a tip-over is a result) [-]
   integer, parameter :: status_invalid_input = EXIT_INPUT   !! the case's input is invalid (as landyn's exit status) [-]
   integer, parameter :: status_failed = EXIT_DIVERGED       !! the simulation failed, e.g. diverged (as landyn's exit status) [-]
+  integer, parameter :: status_unhealthy = EXIT_HEALTH      !! a run-health check failed: meaningless (as landyn's) [-]
+  integer, parameter :: status_no_touchdown = EXIT_NO_TOUCHDOWN  !! no footpad touched the ground (as landyn's) [-]
 
   ! Bits of failed_criteria.
   integer, parameter :: fail_tipped_over = 1       !! tipped over [-]
   integer, parameter :: fail_stroke_margin = 2     !! a stroke margin below min_stroke_margin [-]
   integer, parameter :: fail_overload = 4          !! peak overload above max_overload [-]
   integer, parameter :: fail_clearance = 8         !! body clearance below min_body_clearance [-]
-  integer, parameter :: fail_not_at_rest = 16      !! not at rest although required [-]
-  integer, parameter :: fail_run = 32              !! no result (invalid input or failed run) [-]
+  integer, parameter :: fail_not_at_rest = 16      !! not at rest at the end time: inconclusive [-]
+  integer, parameter :: fail_run = 32              !! no result (invalid input, failed run, failed health check) [-]
+  integer, parameter :: fail_no_touchdown = 64     !! never touched the ground [-]
+  integer, parameter :: fail_tipover_margin = 128  !! final tip-over margin below min_tipover_margin [-]
+  integer, parameter :: fail_friction_ratio = 256  !! a final friction ratio above max_friction_ratio [-]
 
-  integer, parameter :: n_criteria = 6             !! number of fail_* bits [-]
+  integer, parameter :: n_criteria = 9             !! number of fail_* bits [-]
   !> The fail_* bits in order, and their names (summary-file column failed_criteria_names,
   !! /probability/failure_criterion; docs/campaign.md).
   integer, parameter :: criterion_bit(n_criteria) = [fail_tipped_over, fail_stroke_margin, fail_overload, &
-                                                      fail_clearance, fail_not_at_rest, fail_run]  !! [-]
+                                                      fail_clearance, fail_not_at_rest, fail_run, &
+                                                      fail_no_touchdown, fail_tipover_margin, fail_friction_ratio]  !! [-]
   character(len=14), parameter :: criterion_name(n_criteria) = [character(len=14) :: 'tipped_over', &
-    'stroke_margin', 'overload', 'body_clearance', 'not_at_rest', 'no_result']  !! [-]
+    'stroke_margin', 'overload', 'body_clearance', 'not_at_rest', 'no_result', 'no_touchdown', 'tipover_margin', &
+    'friction_ratio']  !! [-]
 
-  integer, parameter :: row_int_count = 11         !! integer part of a packed row [-]
+  integer, parameter :: row_int_count = 12         !! integer part of a packed row [-]
   integer, parameter :: max_message = 2000         !! longest error message kept [-]
 
   !> The summary row of one case.
@@ -62,6 +75,7 @@ module landyn_campaign_case
     integer :: bottomed_out = 0                 !! 1 when a stroke exceeded its capacity [-]
     integer :: failed_criteria = 0              !! bit set of fail_* [-]
     integer :: n_steps = 0                      !! time steps taken [-]
+    integer :: outcome = 0                      !! outcome code (landyn_outcome; 0 none) [-]
     real(wp), allocatable :: inputs(:)          !! (n_par) varied inputs [deck unit]
     real(wp), allocatable :: crush(:, :)        !! (3, n_gears) signed net crush [m]
     real(wp), allocatable :: margin(:, :)       !! (3, n_gears) stroke margin [m]
@@ -74,6 +88,8 @@ module landyn_campaign_case
     real(wp) :: min_clearance = 0.0_wp          !! smallest body-point clearance above the terrain [m]
     real(wp) :: final_time = 0.0_wp            !! simulated end time [s]
     real(wp) :: wall_time = 0.0_wp              !! wall-clock time of the case [s]
+    real(wp) :: tipover_margin = 0.0_wp         !! tip-over margin at the end (landyn_outcome) [deg]
+    real(wp) :: max_friction_ratio = 0.0_wp     !! largest footpad |F_t|/(mu_s F_n) at the end [-]
     character(len=:), allocatable :: message    !! error message ('' when none) [-]
     character(len=:), allocatable :: end_reason !! why the run ended [-]
     character(len=:), allocatable :: history_file  !! time-history file written ('' when none) [-]
@@ -86,7 +102,7 @@ contains
     integer, intent(in) :: n_par    !! varied inputs [-]
     integer, intent(in) :: n_gears  !! gears [-]
     integer :: n                    !! reals [-]
-    n = n_par + 6*n_gears + 9
+    n = n_par + 6*n_gears + 11
   end function row_real_count
 
   !> An empty row (metrics NaN) for case `id`.
@@ -110,6 +126,8 @@ contains
     row%max_tilt = nan
     row%min_clearance = nan
     row%final_time = nan
+    row%tipover_margin = nan
+    row%max_friction_ratio = nan
     row%wall_time = 0.0_wp
     row%message = ''
     row%end_reason = ''
@@ -145,6 +163,7 @@ contains
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
     integer :: st, i
+    logical :: ran
     integer(int64) :: c0, c1, crate, c_in, c_sim
 
     call system_clock(c0, crate)
@@ -175,23 +194,26 @@ contains
     end if
     msg = ''
     call system_clock(c_in)
-    call run_simulation(inp, res, st, msg, -1, loads=save_history)    ! interface loads only for saved histories
+    call run_case_once(inp, res, health, st, msg, -1, loads=save_history, ran=ran)   ! loads only for saved histories
     call system_clock(c_sim)
-    if (st /= 0) then
-      row%status = status_failed
+    row%status = st
+    if (.not. ran) then
       row%message = trim(msg)
       row%end_reason = 'simulation failed'
+      if (st == status_unhealthy) then
+        row%message = 'run-health check of the input failed: '//health%messages
+        row%end_reason = 'not run'
+      end if
       row%n_steps = res%n_steps
       call finish_row()
       return
     end if
-    row%status = status_ok
-    call check_health(inp, res, health)
-    if (health%status() == health_fail) then
-      ! physically meaningless (docs/health.md): recorded as a failed run, its numbers kept
-      row%status = status_failed
-      row%message = 'run-health check failed: '//health%messages
-    end if
+    ! physically meaningless (docs/health.md): status 6, its numbers kept
+    if (st == status_unhealthy) row%message = 'run-health check failed: '//health%messages
+    if (st == status_no_touchdown) row%message = 'no touchdown: no footpad touched the ground'
+    row%outcome = res%outcome
+    row%tipover_margin = res%tipover_margin
+    row%max_friction_ratio = maxval(res%friction_ratio)
     row%crush = res%crush_net
     row%margin = res%stroke_margin
     row%min_margin = minval(res%stroke_margin)
@@ -269,7 +291,9 @@ contains
     type(case_row_t), intent(inout) :: row  !! row [-]
     type(criteria_t), intent(in) :: crit    !! criteria [-]
     integer :: fc
-    if (row%status /= status_ok) then
+    if (row%status == status_no_touchdown) then
+      fc = fail_no_touchdown
+    else if (row%status /= status_ok) then
       fc = fail_run
     else
       fc = 0
@@ -281,11 +305,27 @@ contains
       if (crit%clearance_applied) then
         if (row%min_clearance < crit%min_body_clearance) fc = ior(fc, fail_clearance)
       end if
-      if (crit%require_at_rest .and. row%at_rest == 0) fc = ior(fc, fail_not_at_rest)
+      ! the stability figures of the state at rest (a moving case is undecided: not_at_rest below)
+      if (crit%tipover_applied .and. row%outcome == outcome_at_rest) then
+        if (row%tipover_margin < crit%min_tipover_margin) fc = ior(fc, fail_tipover_margin)
+      end if
+      if (crit%friction_applied .and. row%outcome == outcome_at_rest) then
+        if (row%max_friction_ratio > crit%max_friction_ratio) fc = ior(fc, fail_friction_ratio)
+      end if
+      ! a case still moving at its end time is undecided, whatever require_at_rest says
+      if (row%outcome /= outcome_at_rest .and. row%tipped_over == 0) fc = ior(fc, fail_not_at_rest)
     end if
     row%failed_criteria = fc
     row%success = merge(1, 0, fc == 0)
   end subroutine evaluate_criteria
+
+  !> The case is inconclusive: still moving at its end time, and no criterion but not_at_rest
+  !! failed (it could still turn out either way).
+  elemental function inconclusive(row) result(yes)
+    type(case_row_t), intent(in) :: row     !! row [-]
+    logical :: yes                          !! inconclusive [-]
+    yes = row%failed_criteria == fail_not_at_rest
+  end function inconclusive
 
   !> Names of the criteria a bit set of fail_* says failed, comma-separated in criterion_bit
   !! order ('' when none), e.g. 'tipped_over,stroke_margin'.
@@ -330,10 +370,10 @@ contains
     real(wp), allocatable, intent(out) :: rbuf(:)       !! real part [mixed units]
     character(len=:), allocatable, intent(out) :: text  !! text part: message, end reason, history file [-]
     ibuf = [row%case_id, row%status, row%success, row%tipped_over, row%at_rest, row%bottomed_out, &
-            row%failed_criteria, row%n_steps, len(row%message), len(row%end_reason), len(row%history_file)]
+            row%failed_criteria, row%n_steps, len(row%message), len(row%end_reason), len(row%history_file), row%outcome]
     rbuf = [row%inputs, reshape(row%crush, [size(row%crush)]), reshape(row%margin, [size(row%margin)]), &
             row%min_margin, row%peak_overload, row%peak_penetration, row%max_slide, row%final_tilt, row%max_tilt, &
-            row%min_clearance, row%final_time, row%wall_time]
+            row%min_clearance, row%final_time, row%tipover_margin, row%max_friction_ratio, row%wall_time]
     text = row%message//row%end_reason//row%history_file
   end subroutine pack_row
 
@@ -377,6 +417,7 @@ contains
     row%bottomed_out = ibuf(6)
     row%failed_criteria = ibuf(7)
     row%n_steps = ibuf(8)
+    row%outcome = ibuf(12)
     row%inputs = rbuf(1:n_par)
     k = n_par
     row%crush = reshape(rbuf(k + 1:k + 3*n_gears), [3, n_gears])
@@ -391,7 +432,9 @@ contains
     row%max_tilt = rbuf(k + 6)
     row%min_clearance = rbuf(k + 7)
     row%final_time = rbuf(k + 8)
-    row%wall_time = rbuf(k + 9)
+    row%tipover_margin = rbuf(k + 9)
+    row%max_friction_ratio = rbuf(k + 10)
+    row%wall_time = rbuf(k + 11)
     row%message = text(1:l1)
     row%end_reason = text(l1 + 1:l1 + l2)
     row%history_file = text(l1 + l2 + 1:l1 + l2 + l3)

@@ -46,7 +46,9 @@ contains
     associate (c => camp%crit)
       s = s//';crit='//real_text(c%min_stroke_margin)//'|'//merge('T', 'F', c%overload_applied)// &
           real_text(c%max_overload)//'|'//merge('T', 'F', c%clearance_applied)//real_text(c%min_body_clearance)// &
-          '|'//merge('T', 'F', c%require_at_rest)//'|'//trim(c%failed_runs)//'|'
+          '|'//merge('T', 'F', c%require_at_rest)//'|'//trim(c%failed_runs)//'|'// &
+          merge('T', 'F', c%tipover_applied)//real_text(c%min_tipover_margin)//'|'// &
+          merge('T', 'F', c%friction_applied)//real_text(c%max_friction_ratio)//'|'
       do i = 1, c%n_body_points
         s = s//real_text(c%body_point(1, i))//real_text(c%body_point(2, i))//real_text(c%body_point(3, i))
       end do

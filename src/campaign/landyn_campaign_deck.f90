@@ -63,11 +63,11 @@ module landyn_campaign_deck
     'a real number [deck unit]', 'a real number [deck unit]', 'up to 1000 real numbers >= 0']
   !> Variables of the &criteria group [-]
   character(len=*), parameter :: criteria_vars(*) = [character(len=20) :: 'min_stroke_margin', 'max_overload', &
-    'min_body_clearance', 'body_point', 'require_at_rest', 'failed_runs']
+    'min_body_clearance', 'body_point', 'require_at_rest', 'failed_runs', 'min_tipover_margin', 'max_friction_ratio']
   !> What each of criteria_vars takes, for messages [-]
   character(len=*), parameter :: criteria_takes(*) = [character(len=56) :: 'a real number [m]', &
     'a real number [g]', 'a real number [m]', 'a 3 x 8 real array [m]; body_point(:, i) = x, y, z', &
-    'a logical', "'count_as_failure' or 'exclude'"]
+    'a logical', "'count_as_failure' or 'exclude'", 'a real number [deg]', 'a real number [-]']
 
 contains
 
@@ -336,7 +336,8 @@ contains
         case default
           read (buffer, nml=criteria, iostat=ios, iomsg=msg)
           if (ios == 0 .and. .not. all(ieee_is_finite([criteria_%min_stroke_margin, criteria_%max_overload, &
-              criteria_%min_body_clearance, criteria_%body_point]))) ios = -1
+              criteria_%min_body_clearance, criteria_%body_point, criteria_%min_tipover_margin, &
+              criteria_%max_friction_ratio]))) ios = -1
         end select
         if (ios == 0) cycle
         campaign_ = c0

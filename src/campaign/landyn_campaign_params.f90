@@ -277,6 +277,14 @@ contains
       crit%body_point(:, 1) = 0.0_wp
     end if
     crit%require_at_rest = rcr%require_at_rest
+    crit%tipover_applied = is_set(rcr%min_tipover_margin)
+    if (crit%tipover_applied) crit%min_tipover_margin = rcr%min_tipover_margin
+    crit%friction_applied = is_set(rcr%max_friction_ratio)
+    if (crit%friction_applied) then
+      crit%max_friction_ratio = rcr%max_friction_ratio
+      if (.not. rcr%max_friction_ratio > 0.0_wp) call errors%add(deck_name//': &criteria: max_friction_ratio = '// &
+        real_text_short(rcr%max_friction_ratio)//' is invalid; valid: max_friction_ratio > 0')
+    end if
     crit%failed_runs = lower_case(trim(adjustl(rcr%failed_runs)))
     if (crit%failed_runs /= 'count_as_failure' .and. crit%failed_runs /= 'exclude') &
       call errors%add(deck_name//': &criteria: failed_runs = '//quote_text(trim(rcr%failed_runs))// &

@@ -17,7 +17,8 @@ module landyn_campaign_store
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_open_read, h5_close, h5_write, &
                        h5_write_attr, h5_read, h5_read_attr, h5_exists
   use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
-  use landyn_campaign_case, only: case_row_t, status_ok, criterion_name, failed_criteria_names, failure_counts
+  use landyn_campaign_case, only: case_row_t, status_ok, status_no_touchdown, criterion_name, failed_criteria_names, &
+                                 failure_counts, inconclusive
   implicit none
   private
 
@@ -190,8 +191,11 @@ contains
   end subroutine wilson_interval
 
   !> Probability of a successful landing over `rows` with its 95 % Wilson interval. Cases
-  !! whose run failed count as unsuccessful, or are left out when failed_runs = 'exclude'.
-  subroutine success_probability(rows, failed_runs, n_eval, n_success, n_excluded, p, lo, hi)
+  !! whose run failed count as unsuccessful, or are left out when failed_runs = 'exclude' (a case
+  !! that never touched down is a result: counted, a failure). Inconclusive cases (still moving at
+  !! their end time, no other criterion failed) count as failures in p; `n_inconclusive` of them
+  !! bound P from above: (n_success + n_inconclusive) / n_eval.
+  subroutine success_probability(rows, failed_runs, n_eval, n_success, n_excluded, p, lo, hi, n_inconclusive)
     type(case_row_t), intent(in) :: rows(:)       !! rows [-]
     character(len=*), intent(in) :: failed_runs   !! 'count_as_failure' or 'exclude' [-]
     integer, intent(out) :: n_eval                !! cases counted [-]
@@ -199,18 +203,23 @@ contains
     integer, intent(out) :: n_excluded            !! failed runs left out [-]
     real(wp), intent(out) :: p                    !! n_success / n_eval (0 when n_eval = 0) [-]
     real(wp), intent(out) :: lo, hi               !! 95 % Wilson score interval [-]
-    integer :: i
+    integer, intent(out), optional :: n_inconclusive  !! counted cases that are inconclusive [-]
+    integer :: i, n_inc
+    n_inc = 0
     n_eval = 0
     n_success = 0
     n_excluded = 0
     do i = 1, size(rows)
-      if (rows(i)%status /= status_ok .and. trim(failed_runs) == 'exclude') then
+      if (rows(i)%status /= status_ok .and. rows(i)%status /= status_no_touchdown .and. &
+          trim(failed_runs) == 'exclude') then
         n_excluded = n_excluded + 1
         cycle
       end if
       n_eval = n_eval + 1
       if (rows(i)%success == 1) n_success = n_success + 1
+      if (inconclusive(rows(i))) n_inc = n_inc + 1
     end do
+    if (present(n_inconclusive)) n_inconclusive = n_inc
     p = 0.0_wp
     if (n_eval > 0) p = real(n_success, wp)/real(n_eval, wp)
     call wilson_interval(n_success, n_eval, z95, lo, hi)
@@ -241,7 +250,7 @@ contains
     character(len=*), intent(in) :: command_line  !! command line [-]
     integer, intent(out) :: stat                  !! 0 ok [-]
     character(len=*), intent(inout) :: errmsg     !! message [-]
-    integer :: n, ng, i, j, n_eval, n_succ, n_excl, complete
+    integer :: n, ng, i, j, n_eval, n_succ, n_excl, n_inc, complete
     real(wp) :: p, lo, hi
     real(wp), allocatable :: a3(:, :, :)
 
@@ -255,7 +264,7 @@ contains
         complete = 1
       end if
     end if
-    call success_probability(rows, meta%crit%failed_runs, n_eval, n_succ, n_excl, p, lo, hi)
+    call success_probability(rows, meta%crit%failed_runs, n_eval, n_succ, n_excl, p, lo, hi, n_inc)
 
     ! ---- root attributes
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
@@ -307,6 +316,14 @@ contains
       if (stat /= 0) return
       call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', stat, errmsg, &
                     description='peak overload must be <= this (when applied)'); if (stat /= 0) return
+      call h5_write(f, '/criteria/min_tipover_margin_applied', merge(1_ip, 0_ip, c%tipover_applied), '-', stat, errmsg)
+      if (stat /= 0) return
+      call h5_write(f, '/criteria/min_tipover_margin', c%min_tipover_margin, 'deg', stat, errmsg, &
+                    description='final tip-over margin must be >= this (when applied)'); if (stat /= 0) return
+      call h5_write(f, '/criteria/max_friction_ratio_applied', merge(1_ip, 0_ip, c%friction_applied), '-', stat, errmsg)
+      if (stat /= 0) return
+      call h5_write(f, '/criteria/max_friction_ratio', c%max_friction_ratio, '-', stat, errmsg, &
+                    description='every final |F_t|/(mu_s F_n) must be <= this (when applied)'); if (stat /= 0) return
       call h5_write(f, '/criteria/min_body_clearance_applied', merge(1_ip, 0_ip, c%clearance_applied), '-', &
                     stat, errmsg); if (stat /= 0) return
       call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', stat, errmsg, &
@@ -322,7 +339,15 @@ contains
     ! ---- /cases
     call h5_write(f, '/cases/case_id', [(int(rows(i)%case_id, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/cases/status', [(int(rows(i)%status, ip), i=1, n)], '-', stat, errmsg, &
-      description='0 ran to its end, 2 invalid input, 3 simulation failed (as landyn exit codes)'); if (stat /= 0) return
+      description='as landyn exit codes: 0 ran to its end (the outcome says how), 2 invalid input, 3 simulation '// &
+                  'failed, 6 run-health check failed, 7 no touchdown'); if (stat /= 0) return
+    call h5_write(f, '/cases/outcome', [(int(rows(i)%outcome, ip), i=1, n)], '-', stat, errmsg, &
+      description='0 none (no result), 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over')
+    if (stat /= 0) return
+    call h5_write(f, '/cases/tipover_margin', [(rows(i)%tipover_margin, i=1, n)], 'deg', stat, errmsg, &
+      description='tip-over margin of the final state (docs/output.md, Outcome)'); if (stat /= 0) return
+    call h5_write(f, '/cases/max_friction_ratio', [(rows(i)%max_friction_ratio, i=1, n)], '-', stat, errmsg, &
+      description='largest footpad |F_t|/(mu_s F_n) of the final state'); if (stat /= 0) return
     call h5_write(f, '/cases/error_message', text_column(1), '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/cases/end_reason', text_column(2), '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/cases/history_file', text_column(3), '-', stat, errmsg, &
@@ -366,7 +391,8 @@ contains
     call h5_write(f, '/cases/success', [(int(rows(i)%success, ip), i=1, n)], '-', stat, errmsg, &
                   description='1 when every criterion of /criteria holds'); if (stat /= 0) return
     call h5_write(f, '/cases/failed_criteria', [(int(rows(i)%failed_criteria, ip), i=1, n)], '-', stat, errmsg, &
-      description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result')
+      description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result, '// &
+                  '64 no touchdown, 128 tip-over margin, 256 friction ratio')
     if (stat /= 0) return
     call h5_write(f, '/cases/failed_criteria_names', text_column(4), '-', stat, errmsg, &
       description='the criteria the case failed, comma-separated (names of /probability/failure_criterion)')
@@ -379,14 +405,22 @@ contains
     call h5_write(f, '/probability/n_excluded', int(n_excl, ip), '-', stat, errmsg, &
                   description="failed runs left out (failed_runs = 'exclude')"); if (stat /= 0) return
     call h5_write(f, '/probability/p_success', p, '-', stat, errmsg, &
-                  description='n_success / n_evaluated (0 when nothing was evaluated)'); if (stat /= 0) return
+                  description='n_success / n_evaluated (0 when nothing was evaluated); inconclusive cases count as '// &
+                  'failures'); if (stat /= 0) return
+    call h5_write(f, '/probability/n_inconclusive', int(n_inc, ip), '-', stat, errmsg, &
+                  description='evaluated cases still moving at their end time with no other criterion failed')
+    if (stat /= 0) return
+    call h5_write(f, '/probability/p_success_upper', merge(real(n_succ + n_inc, wp)/real(max(n_eval, 1), wp), 0.0_wp, &
+                  n_eval > 0), '-', stat, errmsg, &
+                  description='(n_success + n_inconclusive) / n_evaluated: P if every inconclusive case succeeded')
+    if (stat /= 0) return
     call h5_write(f, '/probability/ci95_low', lo, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/probability/ci95_high', hi, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/probability/confidence', 0.95_wp, '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/probability/method', 'Wilson score interval, z = 1.959963984540054', '-', stat, errmsg)
     if (stat /= 0) return
     call h5_write(f, '/probability/failure_criterion', criterion_name, '-', stat, errmsg, &
-                  description='criteria in the order of failure_count (bits 1, 2, 4, 8, 16, 32 of failed_criteria)')
+                  description='criteria in the order of failure_count (bits 1, 2, ..., 256 of failed_criteria)')
     if (stat /= 0) return
     call h5_write(f, '/probability/failure_count', int(failure_counts(rows), ip), '-', stat, errmsg, &
                   description='cases failing each criterion (a case may fail several)')
@@ -517,6 +551,12 @@ contains
       call h5_read(f, '/criteria/max_overload_applied', ival, stat, errmsg); if (stat /= 0) return
       c%overload_applied = ival /= 0
       call h5_read(f, '/criteria/max_overload', c%max_overload, stat, errmsg); if (stat /= 0) return
+      call h5_read(f, '/criteria/min_tipover_margin_applied', ival, stat, errmsg); if (stat /= 0) return
+      c%tipover_applied = ival /= 0
+      call h5_read(f, '/criteria/min_tipover_margin', c%min_tipover_margin, stat, errmsg); if (stat /= 0) return
+      call h5_read(f, '/criteria/max_friction_ratio_applied', ival, stat, errmsg); if (stat /= 0) return
+      c%friction_applied = ival /= 0
+      call h5_read(f, '/criteria/max_friction_ratio', c%max_friction_ratio, stat, errmsg); if (stat /= 0) return
       call h5_read(f, '/criteria/min_body_clearance_applied', ival, stat, errmsg); if (stat /= 0) return
       c%clearance_applied = ival /= 0
       call h5_read(f, '/criteria/min_body_clearance', c%min_body_clearance, stat, errmsg); if (stat /= 0) return
@@ -550,6 +590,8 @@ contains
     rows%failed_criteria = iv
     call int_column('/cases/n_steps'); if (stat /= 0) return
     rows%n_steps = iv
+    call int_column('/cases/outcome'); if (stat /= 0) return
+    rows%outcome = iv
     call h5_read(f, '/cases/error_message', sv, stat, errmsg); if (stat /= 0) return
     if (.not. sized(size(sv), '/cases/error_message')) return
     do i = 1, n
@@ -598,6 +640,10 @@ contains
     rows%min_clearance = rv
     call real_column('/cases/final_time'); if (stat /= 0) return
     rows%final_time = rv
+    call real_column('/cases/tipover_margin'); if (stat /= 0) return
+    rows%tipover_margin = rv
+    call real_column('/cases/max_friction_ratio'); if (stat /= 0) return
+    rows%max_friction_ratio = rv
     call real_column('/cases/wall_time'); if (stat /= 0) return
     rows%wall_time = rv
 

@@ -11,7 +11,7 @@ module landyn_campaign_tasks
   use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_nml, only: int_text, ints_text, real_text_short, lower_case
   use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
-  use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, n_criteria, criterion_name, &
+  use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, status_no_touchdown, n_criteria, criterion_name, &
                                   failed_criteria_names, failure_counts
   use landyn_campaign_store, only: summary_meta_t, meta_from_campaign, write_summary, read_summary, results_t, &
                                    results_init, results_add, results_missing, results_take_rows, success_probability
@@ -192,23 +192,30 @@ contains
     type(case_row_t), intent(in) :: rows(:)      !! rows [-]
     character(len=*), intent(in) :: failed_runs  !! criteria%failed_runs [-]
     integer, intent(in) :: u                     !! unit [-]
-    integer :: n_eval, n_succ, n_excl, n_inv, n_fail, k, counts(n_criteria)
+    integer :: n_eval, n_succ, n_excl, n_inv, n_fail, n_inc, n_ran, k, counts(n_criteria)
     real(wp) :: p, lo, hi
     character(len=96) :: buf
     character(len=:), allocatable :: s
-    call success_probability(rows, failed_runs, n_eval, n_succ, n_excl, p, lo, hi)
+    call success_probability(rows, failed_runs, n_eval, n_succ, n_excl, p, lo, hi, n_inc)
     n_inv = count(rows%status == 2)
-    n_fail = count(rows%status == 3)
+    n_fail = count(rows%status == 3 .or. rows%status == 6)
+    n_ran = count(rows%status == status_ok .or. rows%status == status_no_touchdown)
     if (n_excl > 0) then
-      write (u, '(a)') '  cases: '//int_text(size(rows))//' ('//int_text(count(rows%status == status_ok))// &
+      write (u, '(a)') '  cases: '//int_text(size(rows))//' ('//int_text(n_ran)// &
         ' ran, '//int_text(n_inv)//' invalid input, '//int_text(n_fail)//' failed runs, left out of P)'
     else
-      write (u, '(a)') '  cases: '//int_text(size(rows))//' ('//int_text(count(rows%status == status_ok))// &
+      write (u, '(a)') '  cases: '//int_text(size(rows))//' ('//int_text(n_ran)// &
         ' ran, '//int_text(n_inv)//' invalid input, '//int_text(n_fail)//' failed runs)'
     end if
     write (buf, '(f6.4,a,f6.4,a,f6.4,a)') p, ', 95 % CI [', lo, ', ', hi, '] (Wilson score)'
     write (u, '(a)') '  successful landings: '//int_text(n_succ)//' of '//int_text(n_eval)//': P = '// &
       trim(adjustl(buf))
+    if (n_inc > 0) then
+      write (buf, '(f6.4,a,f6.4)') real(n_succ, wp)/real(n_eval, wp), ' (counted as failures) .. ', &
+        real(n_succ + n_inc, wp)/real(n_eval, wp)
+      write (u, '(a)') '  inconclusive (still moving at the end time, no other criterion failed): '// &
+        int_text(n_inc)//' of '//int_text(n_eval)//'; P lies between '//trim(adjustl(buf))//' (counted as successes)'
+    end if
     counts = failure_counts(rows)
     s = '  failures per criterion:'
     do k = 1, n_criteria

@@ -54,7 +54,11 @@ module landyn_campaign_types
     real(wp) :: min_body_clearance = 0.0_wp         !! body clearance must stay >= this [m]
     integer :: n_body_points = 1                    !! body points checked for clearance [-]
     real(wp) :: body_point(3, max_body_points) = 0.0_wp  !! body points, lander frame [m]
-    logical :: require_at_rest = .false.            !! the lander must have come to rest [-]
+    logical :: require_at_rest = .false.            !! kept for old decks: a success must be at rest anyway [-]
+    logical :: tipover_applied = .false.            !! min_tipover_margin given [-]
+    real(wp) :: min_tipover_margin = 0.0_wp         !! final tip-over margin must be >= this [deg]
+    logical :: friction_applied = .false.           !! max_friction_ratio given [-]
+    real(wp) :: max_friction_ratio = 0.0_wp         !! every final |F_t|/(mu_s F_n) must be <= this [-]
     character(len=24) :: failed_runs = 'count_as_failure'  !! 'count_as_failure' or 'exclude' [-]
   end type criteria_t
 
@@ -122,7 +126,9 @@ module landyn_campaign_types
     real(wp) :: max_overload = unset_real            !! peak overload must be <= this; unset_real not applied [g]
     real(wp) :: min_body_clearance = unset_real      !! body clearance must stay >= this; unset_real not applied [m]
     real(wp) :: body_point(3, max_body_points) = unset_real  !! lander-frame points (x, y, z) of the clearance [m]
-    logical :: require_at_rest = .false.             !! the lander must have come to rest [-]
+    logical :: require_at_rest = .false.             !! kept for old decks: a success must be at rest anyway [-]
+    real(wp) :: min_tipover_margin = unset_real      !! final tip-over margin must be >= this; unset_real not applied [deg]
+    real(wp) :: max_friction_ratio = unset_real      !! final friction ratios must be <= this; unset_real not applied [-]
     character(len=32) :: failed_runs = 'count_as_failure'  !! 'count_as_failure' or 'exclude' as written [-]
   end type raw_criteria_t
 

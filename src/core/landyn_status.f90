@@ -23,4 +23,5 @@ module landyn_status
   integer, parameter, public :: EXIT_FILE = 4        !! a file was not written (or refused)
   integer, parameter, public :: EXIT_INCOMPLETE = 5  !! stopped early; the summary is incomplete (campaigns)
   integer, parameter, public :: EXIT_HEALTH = 6      !! the run finished but failed a health check
+  integer, parameter, public :: EXIT_NO_TOUCHDOWN = 7  !! the run finished without touching the ground
 end module landyn_status

@@ -119,11 +119,13 @@ module landyn_input_registry
     input_var_t(g_simulation, 'stop_at_rest', k_logical, default=".true.", takes='a logical (.true. or .false.)', &
       meaning='end the run early once at rest', doc='end the run early once the lander has come to rest'), &
     input_var_t(g_simulation, 'rest_speed', k_real, default="1.0e-3_wp", unit='m/s', takes='a real number', &
-      meaning='body speed below which the lander is at rest', lo_op='>', lo='0', &
-      doc='body speed below which the lander counts as at rest'), &
-    input_var_t(g_simulation, 'rest_time', k_real, default="0.05_wp", unit='s', takes='a real number', &
-      meaning='time the speed must stay below rest_speed', lo_op='>=', lo='0', &
-      doc='time the speed must stay below `rest_speed`'), &
+      meaning='speed below which the lander is at rest', lo_op='>', lo='0', &
+      doc='speed below which the lander counts as at rest: the body, the rotation at the footpads, every footpad '// &
+      'and every strut stroke rate (docs/output.md, Outcome)'), &
+    input_var_t(g_simulation, 'rest_time', k_real, default="0.1_wp", unit='s', takes='a real number', &
+      meaning='time every speed must stay below rest_speed', lo_op='>=', lo='0', &
+      doc='time every speed must stay below `rest_speed` to count as at rest; longer than one period of the '// &
+      'settled lander''s vibration on the soil (docs/output.md, Outcome)'), &
     input_var_t(g_simulation, 'tipover_angle', k_real, default="45.0_wp*pi/180.0_wp", unit='deg', takes='a real number', &
       meaning='tilt of lander z from vertical counted as tip-over', angle=.true., lo_op='>', lo='0', &
       hi_op='<=', hi='180', doc='tilt of the lander z axis from the vertical that counts as tipped over'), &

@@ -27,6 +27,7 @@ module landyn_sim_core
                               max_primary_stroke
   use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_sim_result, only: sim_result_t, allocate_result, record, finish, n_energy, energy_names
+  use landyn_rest, only: at_rest_now
   implicit none
   private
 
@@ -350,7 +351,7 @@ contains
                                                   !! has made it: its strut modes are counted; default
                                                   !! the committed modes of the step just taken
     integer :: ng, i, ns, m(max_struts)
-    real(wp) :: tilt, speed_char
+    real(wp) :: tilt
 
     stat = STAT_OK
     done = .false.
@@ -384,8 +385,8 @@ contains
         done = .true.
         return
       end if
-      speed_char = norm2(model%body%v) + norm2(model%body%omega)*sim%l_char
-      if (sim%loop%touched .and. speed_char < inp%simulation%rest_speed) then
+      ! rest (landyn_rest, the outcome's definition): decided from the accepted state
+      if (sim%loop%touched .and. at_rest_now(model, inp%simulation%rest_speed, sim%l_char)) then
         sim%loop%rest_clock = sim%loop%rest_clock + dt
       else
         sim%loop%rest_clock = 0.0_wp

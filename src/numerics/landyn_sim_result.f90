@@ -7,6 +7,7 @@ module landyn_sim_result
   use landyn_loads, only: n_load, load_peaks_t, gear_load_vector, load_peaks_init
   use landyn_terrain, only: slip_velocity
   use landyn_sim_model, only: model_t, sim_eval_t
+  use landyn_rest, only: motion_t
   implicit none
   private
 
@@ -87,6 +88,13 @@ module landyn_sim_result
     real(wp) :: dt_largest = 0.0_wp                        !! largest accepted step [s]
     real(wp) :: wall_time = 0.0_wp                         !! [s]
     real(wp) :: initial_position(3) = 0.0_wp               !! O_L at t = 0 [m]
+    ! ---- outcome (docs/output.md "Outcome"): the end state from the run (landyn_simulation), the
+    ! classification and the stability figures from landyn_outcome
+    logical :: touched = .false.                           !! a footpad touched the ground [-]
+    type(motion_t) :: end_motion                           !! how fast the lander moved at t_final [m/s, rad/s]
+    integer :: outcome = 0                                 !! outcome code (landyn_outcome); 0 not classified [-]
+    real(wp) :: tipover_margin = 0.0_wp                    !! tip-over margin at t_final [deg]
+    real(wp), allocatable :: friction_ratio(:)             !! (n_gears) |F_t|/(mu_s F_n) at t_final [-]
   end type sim_result_t
 
   integer, parameter, public :: n_energy = 11   !! terms of the energy audit [-]

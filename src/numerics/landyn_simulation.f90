@@ -9,6 +9,7 @@ module landyn_simulation
                              sim_save, sim_restore, n_energy, energy_names
   use landyn_integrator, only: integrator_t
   use landyn_integrators, only: make_integrator
+  use landyn_rest, only: measure_motion
   implicit none
   private
 
@@ -45,6 +46,9 @@ contains
       call integ%step(sim, inp, res, done, stat, errmsg, progress_unit)
       if (stat /= 0 .or. done) exit
     end do
+    ! ---- the end state for the outcome (landyn_outcome classifies it)
+    res%touched = sim%loop%touched
+    res%end_motion = measure_motion(sim%model)
     call system_clock(c1)
     res%wall_time = real(c1 - c0, wp)/real(crate, wp)
   end subroutine run_simulation

@@ -2,13 +2,14 @@
 !! The file is written under a temporary name (<file>.partial) and renamed only when complete,
 !! so a run that fails or is killed leaves nothing that looks like a result.
 module landyn_output
-  use landyn_kinds, only: wp
+  use landyn_kinds, only: wp, rad2deg
   use landyn_config, only: landyn_input_t
   use landyn_strings, only: nonempty
   use landyn_provenance, only: write_meta
   use landyn_input, only: resolved_input_text
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
   use landyn_health, only: health_t, check_names, n_checks
+  use landyn_outcome, only: outcome_name
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr
   use landyn_loads, only: n_load, n_joint, n_quantity, load_names, joint_names, quantity_names
   implicit none
@@ -16,7 +17,7 @@ module landyn_output
 
   public :: write_result_file, schema_version
 
-  character(len=*), parameter :: schema_version = '1.2'  !! version of docs/output.md
+  character(len=*), parameter :: schema_version = '1.3'  !! version of docs/output.md
 
 contains
 
@@ -176,7 +177,42 @@ contains
     call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &
       description='largest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
+    call write_outcome_group(f, res, stat, errmsg)
   end subroutine write_all
+
+  !> The outcome under /summary/outcome (docs/output.md, "Outcome"; landyn_outcome).
+  subroutine write_outcome_group(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file
+    type(sim_result_t), intent(in) :: res          !! classified results
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message
+    real(wp), allocatable :: ratio(:)
+    call h5_write(f, '/summary/outcome/code', res%outcome, '-', stat, errmsg, &
+      description='0 not classified, 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over')
+    if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/name', outcome_name(res%outcome), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/touched_down', res%touched, '-', stat, errmsg, &
+      description='a footpad touched the ground'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/body_speed', res%end_motion%body_speed, 'm/s', stat, errmsg, &
+      description='mass-centre speed at the final time'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/angular_rate', res%end_motion%angular_rate*rad2deg, 'deg/s', stat, errmsg, &
+      description='|omega| at the final time'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/slide_rate', res%end_motion%slide_rate, 'm/s', stat, errmsg, &
+      description='largest footpad speed along the terrain at the final time'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/footpad_speed', res%end_motion%footpad_speed, 'm/s', stat, errmsg, &
+      description='largest footpad speed (slide and sink) at the final time'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/stroke_rate', res%end_motion%stroke_rate, 'm/s', stat, errmsg, &
+      description='largest strut stroke rate at the final time'); if (stat /= 0) return
+    call h5_write(f, '/summary/outcome/tipover_margin', res%tipover_margin, 'deg', stat, errmsg, &
+      description='further tilt about the nearest edge of the footpad support polygon that puts the gravity line '// &
+                  'through the mass centre on it, final state; <= 0 not statically stable'); if (stat /= 0) return
+    allocate (ratio(res%n_gears))
+    ratio = 0.0_wp
+    if (allocated(res%friction_ratio)) ratio = res%friction_ratio
+    call h5_write(f, '/summary/outcome/friction_ratio', ratio, '-', stat, errmsg, &
+      description='per footpad |F_t|/(mu_s F_n), final state, mu_s = &friction mu_static: < 1 held by static '// &
+                  'friction, >= 1 slides, 0 off the ground')
+  end subroutine write_outcome_group
 
   !> Interface loads (docs/output.md, "Interface loads"): per joint histories in lander axes and in
   !! each gear's axes, the gear's total force on the body, and the peak-load table.

@@ -31,11 +31,13 @@ module landyn_study
   use landyn_kinds, only: wp, msg_len, max_gears
   use landyn_config, only: landyn_input_t, path_len
   use landyn_input, only: input_errors_t, read_text_or_report, read_input_file, apply_input_text, resolve_input, validate_input
-  use landyn_simulation, only: sim_result_t, run_simulation
-  use landyn_health, only: health_t, check_health, health_fail
+  use landyn_simulation, only: sim_result_t
+  use landyn_health, only: health_t
+  use landyn_run, only: run_case, worse_status
   use landyn_output, only: write_result_file
   use landyn_strings, only: int_text, lower_case
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH
+  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, &
+                          EXIT_NO_TOUCHDOWN
   use landyn_files, only: base_name
   use landyn_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
@@ -46,7 +48,7 @@ module landyn_study
   public :: study_t, variant_t, run_record_t
   public :: read_study, prepare_study, run_study, group_name
   public :: label_len, set_len, strut_names
-  public :: status_ok, status_failed, status_unhealthy
+  public :: status_ok, status_failed, status_unhealthy, status_no_touchdown
 
   integer, parameter :: max_cases = 8        !! load cases per study
   integer, parameter :: max_sets = 32        !! `set` / `common` entries per group
@@ -58,6 +60,7 @@ module landyn_study
   integer, parameter :: status_input = EXIT_INPUT        !! invalid input: not run
   integer, parameter :: status_failed = EXIT_DIVERGED    !! the simulation failed (diverged)
   integer, parameter :: status_unhealthy = EXIT_HEALTH   !! completed, but a run-health check failed (docs/health.md)
+  integer, parameter :: status_no_touchdown = EXIT_NO_TOUCHDOWN  !! completed without touching the ground
 
   !> One law variant.
   type :: variant_t
@@ -76,6 +79,8 @@ module landyn_study
     real(wp) :: peak_overload = 0.0_wp               !! [g]
     real(wp) :: max_tilt = 0.0_wp                    !! [deg]
     logical :: tipped_over = .false.                 !! [-]
+    integer :: outcome = 0                           !! outcome code (landyn_outcome) [-]
+    real(wp) :: tipover_margin = 0.0_wp              !! tip-over margin at the end [deg]
     real(wp) :: t_final = 0.0_wp                     !! [s]
     real(wp) :: wall_time = 0.0_wp                   !! [s]
   end type run_record_t
@@ -359,17 +364,20 @@ contains
   ! ================================================================ running
 
   !> Run every prepared (case, variant). `progress_unit` < 0 silences the progress lines.
-  !! stat = STAT_OK when every run completed, status_failed when some failed (their records say why),
-  !! STAT_FILE when a kept result file could not be written.
+  !! stat: the worst run status (landyn_run's worse_status: status_failed before status_unhealthy
+  !! before status_no_touchdown before STAT_OK; the records say which runs), or STAT_FILE when a kept
+  !! result file could not be written.
   subroutine run_study(study, progress_unit, command_line, stat, errmsg)
     type(study_t), intent(inout) :: study        !! prepared study; runs are filled in
     integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none [-]
     character(len=*), intent(in) :: command_line !! command line (stored in kept result files) [-]
-    integer, intent(out) :: stat                 !! STAT_OK, status_failed, status_unhealthy or STAT_FILE [-]
+    integer, intent(out) :: stat                 !! STAT_OK, status_failed, status_unhealthy, status_no_touchdown
+                                                 !! or STAT_FILE [-]
     character(len=*), intent(inout) :: errmsg    !! message of a file failure
     type(sim_result_t) :: res
     type(health_t) :: health
     integer :: c, v, k, n, st
+    logical :: ran
     character(len=msg_len) :: msg
     stat = STAT_OK
     k = 0
@@ -384,22 +392,25 @@ contains
         end if
         msg = ''
         ! interface loads only for the result files kept
-        call run_simulation(study%inp(c, v), res, st, msg, -1, loads=study%keep_results)
+        call run_case(study%inp(c, v), res, health, st, msg, -1, loads=study%keep_results, ran=ran)
         associate (r => study%run(c, v))
           r%message = ''
-          if (st /= 0) then
-            r%status = status_failed
+          if (.not. ran) then
+            r%status = st
             r%message = msg
+            if (st == status_unhealthy) r%message = 'run-health check failed: '//health%messages
             r%crush = reshape([ieee_value(1.0_wp, ieee_quiet_nan)], [1, 1])
-            stat = status_failed
+            stat = worse_status(stat, st)
           else
-            call check_health(study%inp(c, v), res, health)
-            r%status = status_ok
-            if (health%status() == health_fail) then
-              r%status = status_unhealthy
+            r%status = st
+            stat = worse_status(stat, st)
+            if (st == status_unhealthy) then
               r%message = 'run-health check failed: '//health%messages
-              if (stat == STAT_OK) stat = status_unhealthy
+            else if (st == status_no_touchdown) then
+              r%message = 'no touchdown: no footpad touched the ground'
             end if
+            r%outcome = res%outcome
+            r%tipover_margin = res%tipover_margin
             r%n_gears = res%n_gears
             r%crush = res%crush_net
             r%energy_residual = res%energy_residual
@@ -421,7 +432,7 @@ contains
           end if
           if (progress_unit >= 0) then
             if (r%status == status_unhealthy) write (progress_unit, '(a)') '  '//trim(r%message)
-            if (r%status /= status_failed) then
+            if (r%n_gears > 0) then
               write (progress_unit, '(a,'//int_text(size(r%crush, 1))//'f8.1,a,f7.3,a,f7.2,a)') &
                 '  gear 1 crush [mm]', 1000.0_wp*r%crush(:, 1), &
                 ', energy residual', 100.0_wp*r%energy_residual, ' %, ', r%wall_time, ' s, '//trim(r%end_reason)

@@ -155,25 +155,29 @@ def test_monte_carlo(env):
     check(abs(f.attrs["p_success"] - k / n) < 1e-15, "p_success attribute")
     # every success verdict follows the criteria
     crit_margin = f["criteria/min_stroke_margin"][()]
+    # (a success must have come to rest: outcome 2; issue 28)
     ok = ((f["cases/tipped_over"][()] == 0) & (f["cases/min_stroke_margin"][()] >= crit_margin)
           & (f["cases/peak_overload"][()] <= f["criteria/max_overload"][()])
-          & (f["cases/min_body_clearance"][()] >= f["criteria/min_body_clearance"][()]))
+          & (f["cases/min_body_clearance"][()] >= f["criteria/min_body_clearance"][()])
+          & (f["cases/outcome"][()] == 2))
     check(np.array_equal(ok.astype(int), f["cases/success"][()]), "success = criteria of &criteria")
     # which criteria failed, per case and counted per criterion (stdout's last result line)
     names = [x.decode() for x in f["probability/failure_criterion"][()]]
-    check(names == ["tipped_over", "stroke_margin", "overload", "body_clearance", "not_at_rest", "no_result"],
-          "failure criteria named in bit order")
+    check(names == ["tipped_over", "stroke_margin", "overload", "body_clearance", "not_at_rest", "no_result",
+                     "no_touchdown", "tipover_margin", "friction_ratio"], "failure criteria named in bit order")
     fc = f["cases/failed_criteria"][()]
     expect_fc = (np.where(f["cases/tipped_over"][()] == 1, 1, 0)
                  + np.where(f["cases/min_stroke_margin"][()] < crit_margin, 2, 0)
                  + np.where(f["cases/peak_overload"][()] > f["criteria/max_overload"][()], 4, 0)
-                 + np.where(f["cases/min_body_clearance"][()] < f["criteria/min_body_clearance"][()], 8, 0))
+                 + np.where(f["cases/min_body_clearance"][()] < f["criteria/min_body_clearance"][()], 8, 0)
+                 + np.where((f["cases/outcome"][()] != 2) & (f["cases/tipped_over"][()] == 0), 16, 0))
     check(np.array_equal(fc, expect_fc), f"failed_criteria bits {list(fc)} from the metrics")
     per_case = [x.decode().strip() for x in f["cases/failed_criteria_names"][()]]
-    check(per_case == [",".join(nm for b, nm in zip((1, 2, 4, 8, 16, 32), names) if v & b) for v in fc],
+    bits = tuple(1 << k for k in range(9))
+    check(per_case == [",".join(nm for b, nm in zip(bits, names) if v & b) for v in fc],
           f"failed_criteria_names {per_case} spell the bits")
     counts = f["probability/failure_count"][()]
-    check(list(counts) == [int(np.sum((fc & b) != 0)) for b in (1, 2, 4, 8, 16, 32)],
+    check(list(counts) == [int(np.sum((fc & b) != 0)) for b in bits],
           f"failure_count {list(counts)} per criterion")
     check(int(np.sum(f["cases/success"][()] == 0)) > 0, "the sample has failed cases to count")
     p = env.serial("mc.nml", "--case", "1:6", "-o", "all6.h5")

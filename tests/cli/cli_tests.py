@@ -78,7 +78,7 @@ def t_default_run(exe, src, d):
         n = f["timeseries/time"].shape[0]
         check(f["timeseries/gears/stroke"].shape == (n, 4, 3), "stroke time series has shape (n, n_gears, 3)")
         check(f["timeseries/body/overload"].attrs["units"] == b"g", "overload in g")
-        check(f.attrs["schema_version"] == b"1.2", "schema_version attribute")
+        check(f.attrs["schema_version"] == b"1.3", "schema_version attribute (1.3: /summary/outcome)")
 
 
 def t_quiet(exe, src, d):

@@ -28,7 +28,8 @@ CRASH_MARKS = ("Program received signal", "Fortran runtime error", "Backtrace fo
                "Floating-point exception", "Segmentation fault", "is not allocated", "Error termination")
 
 # documented exit statuses (docs/exit_status.md); deck-driven runs never see 1 (usage) except '' names
-ALLOWED = {"landyn": {0, 2, 3, 4, 6}, "study": {0, 2, 3, 4, 6}, "batch": {0, 2, 3, 4, 5}}
+# 7: no touchdown (a mutated velocity or clearance), with a result file (docs/exit_status.md)
+ALLOWED = {"landyn": {0, 2, 3, 4, 6, 7}, "study": {0, 2, 3, 4, 6, 7}, "batch": {0, 2, 3, 4, 5}}
 # statuses after which no new file may exist
 NOTHING_WRITTEN = {"landyn": {1, 2, 4}, "study": {1, 2, 4}, "batch": {1, 2, 4}}
 
@@ -169,7 +170,7 @@ class Fuzzer:
             self.check_files("landyn", rc, d, files, files)
             if rc == 0 and self.short_run(out):
                 rc, out = self.run("landyn", exe, ["-q", "deck.nml", "-o", "r.h5"], d, files)
-                self.check_files("landyn", rc, d, list(files) + (["r.h5"] if rc in (0, 6) else []), files)
+                self.check_files("landyn", rc, d, list(files) + (["r.h5"] if rc in (0, 6, 7) else []), files)
             shutil.rmtree(d)
 
     @staticmethod
@@ -194,7 +195,7 @@ class Fuzzer:
             if rc == 0 and rng.random() < 0.3 and self.short_run_study(files["lc.nml"]):
                 rc, out = self.run("study", exe, ["-q", "s.nml"], d, files)
                 written = [f for f in os.listdir(d) if f not in files]
-                self.check_files("study", rc, d, list(files) + (written if rc in (0, 3, 6) else []), files)
+                self.check_files("study", rc, d, list(files) + (written if rc in (0, 3, 6, 7) else []), files)
             shutil.rmtree(d)
 
     @staticmethod

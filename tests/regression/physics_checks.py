@@ -33,16 +33,17 @@ def check(cond, what):
         FAILS.append(what)
 
 
-def run(exe, d, name, deck_text=None, deck_path=None, extra=()):
+def run(exe, d, name, deck_text=None, deck_path=None, extra=(), status=0):
+    """Runs landyn; it must exit with `status` (7: no touchdown, docs/exit_status.md)."""
     if deck_text is not None:
         deck_path = os.path.join(d, name + ".nml")
         with open(deck_path, "w") as f:
             f.write(deck_text)
     out = os.path.join(d, name + ".h5")
     p = subprocess.run([exe, deck_path, "-q", "-o", out] + list(extra), capture_output=True, text=True)
-    if p.returncode != 0:
+    if p.returncode != status:
         print(p.stdout, p.stderr)
-        raise SystemExit("landyn failed on " + name)
+        raise SystemExit("landyn exited %d on %s (expected %d)" % (p.returncode, name, status))
     return h5py.File(out, "r")
 
 
@@ -79,7 +80,9 @@ def t_free_fall(exe, src, d):
     check(np.max(np.abs(f["timeseries/gears/stroke"][()][pre])) < 1e-12, "no stroke before touchdown")
     # The adaptive integrator (the default): variable-step leapfrog, exact for constant acceleration
     # with synchronised velocities; its steps grow to dt_max in free fall (run ends before touchdown).
-    f = run(exe, d, "ff_adaptive", "&simulation t_end = 0.07 /\n&initial_state clearance = 0.3 /\n")
+    # ends in the air, before touchdown: outcome no_touchdown, exit status 7
+    f = run(exe, d, "ff_adaptive", "&simulation t_end = 0.07 /\n&initial_state clearance = 0.3 /\n", status=7)
+    check(f["summary/outcome/name"][()] == b"no_touchdown", "adaptive: the run that ends in the air is a no_touchdown")
     t = f["timeseries/time"][()]
     x = f["timeseries/body/mass_centre_position"][()]
     v = f["timeseries/body/velocity"][()]
