@@ -13,7 +13,7 @@ not store them).
 
   campaign_accuracy.py --batch build/release/landyn_batch --src . [--cases 200] [--rounds 2]
                        [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
-                       [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR]
+                       [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR] [--t-end 2]
 
 A scheme is NAME[:var=value,...]: &simulation integrator = NAME with those &simulation variables.
 The reference is expensive (about 7 s per case); --ref-cache keeps it between runs (keyed by the
@@ -41,15 +41,18 @@ def scheme_text(spec):
     return ", ".join(items)
 
 
-def make_dir(src, workdir, tag, spec, cases):
-    """A copy of the campaign example whose base deck runs `spec`, summary file <tag>.h5."""
+def make_dir(src, workdir, tag, spec, cases, t_end=None):
+    """A copy of the campaign example whose base deck runs `spec` (and t_end when given)."""
     d = os.path.join(workdir, tag)
     os.makedirs(d)
     ex = os.path.join(src, "examples", "campaign")
     base = open(os.path.join(ex, "lander.nml")).read()
     # the scheme replaces the deck's integrator, dt and tolerance settings
     base = re.sub(r"(?m)^\s*(integrator|dt|tolerance)\s*=.*$", "", base)
-    base, n = re.subn(r"(?mi)^&simulation\b", "&simulation " + scheme_text(spec) + ",", base)
+    extra = scheme_text(spec) + ("" if t_end is None else ", t_end = %r" % t_end)
+    if t_end is not None:
+        base = re.sub(r"(?m)^\s*t_end\s*=.*$", "", base)
+    base, n = re.subn(r"(?mi)^&simulation\b", "&simulation " + extra + ",", base)
     assert n == 1, "lander.nml must have one &simulation group"
     open(os.path.join(d, "lander.nml"), "w").write(base)
     deck = open(os.path.join(ex, "dispersion.nml")).read()
@@ -88,21 +91,22 @@ def main():
     ap.add_argument("--ref-dt", type=float, default=1.25e-6)
     ap.add_argument("--check-cases", type=int, default=5)
     ap.add_argument("--ref-cache", help="folder keeping the reference between runs")
+    ap.add_argument("--t-end", type=float, help="simulated time per case [s] (default: the example's)")
     a = ap.parse_args()
     batch = os.path.abspath(a.batch)
     src = os.path.abspath(a.src)
     with tempfile.TemporaryDirectory(prefix="landyn_campaign_accuracy_") as w:
         key = hashlib.sha1((open(os.path.join(src, "examples/campaign/lander.nml")).read()
                             + open(os.path.join(src, "examples/campaign/dispersion.nml")).read()
-                            + "%d %r" % (a.cases, a.ref_dt)).encode()).hexdigest()[:12]
+                            + "%d %r %r" % (a.cases, a.ref_dt, a.t_end)).encode()).hexdigest()[:12]
         cached = os.path.join(a.ref_cache, "ref_%s.npz" % key) if a.ref_cache else None
         if cached and os.path.exists(cached):
             z = np.load(cached)
             ref, ref_check = z["ref"], z["check"]
         else:
-            d = make_dir(src, w, "ref", "fixed:dt=%r" % a.ref_dt, a.cases)
+            d = make_dir(src, w, "ref", "fixed:dt=%r" % a.ref_dt, a.cases, a.t_end)
             _, ref, _ = run(batch, d, "ref", a.cases)
-            d = make_dir(src, w, "check", "fixed:dt=%r" % (a.ref_dt / 2), a.check_cases)
+            d = make_dir(src, w, "check", "fixed:dt=%r" % (a.ref_dt / 2), a.check_cases, a.t_end)
             _, ref_check, _ = run(batch, d, "check", a.check_cases)
             if cached:
                 os.makedirs(a.ref_cache, exist_ok=True)
@@ -110,7 +114,7 @@ def main():
         conv = 1e3 * np.max(np.abs(ref_check - ref[:a.check_cases]))
         print("reference: fixed dt = %.3g s; against dt/2 on cases 1..%d: largest crush-length difference %.4f mm"
               % (a.ref_dt, a.check_cases, conv))
-        dirs = {s: make_dir(src, w, "s%d" % i, s, a.cases) for i, s in enumerate(a.schemes)}
+        dirs = {s: make_dir(src, w, "s%d" % i, s, a.cases, a.t_end) for i, s in enumerate(a.schemes)}
         best, results = {}, {}
         for r in range(a.rounds):
             for i, s in enumerate(a.schemes):

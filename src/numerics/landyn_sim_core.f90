@@ -350,12 +350,14 @@ contains
     type(sim_eval_t), intent(in), optional :: ev  !! evaluation of the state reached, when the integrator
                                                   !! has made it: its strut modes are counted; default
                                                   !! the committed modes of the step just taken
-    integer :: ng, i, ns, m(max_struts)
+    integer :: ng, i, ns, m(max_struts), n_rel
+    logical :: locked_now
     real(wp) :: tilt
 
     stat = STAT_OK
     done = .false.
     ng = sim%model%n_gears
+    locked_now = .false.
     associate (model => sim%model)
       do i = 1, ng
         ns = model%n_struts(i)
@@ -364,8 +366,15 @@ contains
         else
           call model%gear(i)%g%strut_modes(m(1:ns))
         end if
+        ! strut releases (locked -> not locked), and those in the step after a lock anywhere
+        ! (docs/theory.md, "Mode switches": a lock's stopping force reaches the legs a step late)
+        n_rel = count(sim%loop%mode(1:ns, i) == 0 .and. m(1:ns) /= 0)
+        res%n_releases = res%n_releases + n_rel
+        if (sim%loop%locked_last) res%n_releases_after_lock = res%n_releases_after_lock + n_rel
+        if (any(sim%loop%mode(1:ns, i) /= 0 .and. m(1:ns) == 0)) locked_now = .true.
         call count_mode_switches(m(1:ns), sim%loop%mode(1:ns, i), res%mode_switches(1:ns, i))
       end do
+      sim%loop%locked_last = locked_now
       res%n_steps = sim%loop%n
 
       ! ---- divergence, tip-over and rest checks

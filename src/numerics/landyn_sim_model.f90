@@ -64,6 +64,7 @@ module landyn_sim_model
     real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
     logical :: touched = .false.                       !! a footpad has touched the ground [-]
     integer :: mode(max_struts, max_gears) = 0         !! crush mode of each strut at the last step [-]
+    logical :: locked_last = .false.                   !! a strut locked in the last accepted step [-]
   end type sim_loop_t
 
   !> One simulation in progress: the model (parameters and evolving state) and the integrator.

@@ -84,6 +84,8 @@ module landyn_sim_result
     integer :: n_rejected = 0                              !! rejected steps (error or event) [-]
     integer :: n_events = 0                                !! accepted steps that ended at a located event [-]
     integer :: n_forced = 0                                !! steps of event_resolution accepted above the tolerance [-]
+    integer :: n_releases = 0                              !! strut releases (locked -> crushing or free) [-]
+    integer :: n_releases_after_lock = 0                   !! of those, in the step after a strut locked [-]
     real(wp) :: dt_smallest = 0.0_wp                       !! smallest accepted step [s]
     real(wp) :: dt_largest = 0.0_wp                        !! largest accepted step [s]
     real(wp) :: wall_time = 0.0_wp                         !! [s]

@@ -172,6 +172,10 @@ contains
     call h5_write(f, '/summary/integrator/n_forced', res%n_forced, '-', stat, errmsg, &
       description='steps of event_resolution accepted with the local error above the tolerance (discontinuities)')
     if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_releases', res%n_releases, '-', stat, errmsg, &
+      description='strut releases (locked to crushing or free), all struts'); if (stat /= 0) return
+    call h5_write(f, '/summary/integrator/n_releases_after_lock', res%n_releases_after_lock, '-', stat, errmsg, &
+      description='strut releases in the accepted step after one in which a strut locked'); if (stat /= 0) return
     call h5_write(f, '/summary/integrator/dt_smallest', res%dt_smallest, 's', stat, errmsg, &
       description='smallest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &
