@@ -208,8 +208,8 @@ def main(argv=None):
     ax.set_xlim(xs[0] - dx, xs[-1] + dx)
     ax.set_ylim(ys[0] - dy, ys[-1] + dy)
     names = dict(zip(d["labels"], d["names"]))
-    ax.set_xlabel(input_label(names[xl], xu, d["base_deck_text"]))
-    ax.set_ylabel(input_label(names[yl], yu, d["base_deck_text"]))
+    ax.set_xlabel(input_label(names[xl], xu, d["base_deck_text"], d["names"]))
+    ax.set_ylabel(input_label(names[yl], yu, d["base_deck_text"], d["names"]))
     ttl = a.title or (d["title"] or os.path.basename(a.summary)) + " - landing stability envelope"
     if fixed:
         ttl += "\n" + ", ".join(f"{k} = {v:g}" for k, v in fixed.items())
