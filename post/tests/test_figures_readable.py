@@ -172,3 +172,24 @@ def test_sensitivity_grid_stays_readable_with_many_inputs(tmp_path):
     from PIL import Image
     w, h = Image.open(out).size
     assert w <= 2200, w
+
+
+def test_study_deviation_panel_stays_readable():
+    """A near-zero baseline (2.2 mm -> 32.7 mm, +1385 %) no longer dominates the deviation panel:
+    it is drawn in mm, and no % is quoted for such a baseline."""
+    from landyn_post.study import fig_study, relative_deviation
+    crush = np.array([[0.2863, 0.2732], [0.0022, 0.0327], [0.1138, 0.1259]])
+    st = dict(title="t", variants=["Base result", "Hertz"], cases=["LC-1"], crush=crush, load_case=["LC-1"] * 3,
+              gear=np.array([1, 1, 2]), strut=["primary", "secondary left", "secondary left"],
+              status=np.zeros((1, 2), int))
+    pct = relative_deviation(crush)
+    assert np.isnan(pct[1, 0]) and pct[0, 0] == pytest.approx((0.2732 - 0.2863) / 0.2863 * 100)
+    fig = fig_study(st)
+    ax2 = fig.axes[1]
+    assert "[mm]" in ax2.get_ylabel()
+    lo, hi = ax2.get_ylim()
+    assert hi - lo < 100.0, (lo, hi)                     # mm, not the 1385 % of the tiny baseline
+    heights = sorted(round(p.get_height(), 3) for p in ax2.patches)
+    assert heights == pytest.approx(sorted([-13.1, 30.5, 12.1]), abs=0.01)
+    assert "largest 10.6 %" in ax2.get_title(loc="left")     # 12.1 mm of 113.8 mm; not the 1385 %
+    matplotlib.pyplot.close(fig)
