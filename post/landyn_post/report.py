@@ -124,7 +124,10 @@ def run_summary_lines(res: Result) -> list[str]:
 
 
 def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tuple[str, bool] | None = None) -> None:
+    """The text pages: title, verdict banner and blocks of lines; a block that does not fit on the
+    page continues on the next one (nothing is cut at the page's foot)."""
     import matplotlib.pyplot as plt
+    bottom = 0.035
     fig = plt.figure(figsize=(8.27, 11.69))   # A4 portrait
     title_lines = textwrap.wrap(title, 75)
     fig.text(0.06, 0.965, "\n".join(title_lines), fontsize=12, weight="bold", va="top", linespacing=1.3)
@@ -134,11 +137,27 @@ def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tup
         fig.text(0.06, y, text, fontsize=13, weight="bold", va="top", color="white",
                  bbox=dict(boxstyle="round,pad=0.4", fc="#2e7d32" if ok else "#c62828", ec="none"))
         y -= 0.04
+
+    def new_page(heading: str):
+        nonlocal fig, y
+        pdf.savefig(fig)
+        plt.close(fig)
+        fig = plt.figure(figsize=(8.27, 11.69))
+        fig.text(0.06, 0.965, f"{textwrap.shorten(title, 70)} (continued)", fontsize=9, color="0.4", va="top")
+        y = 0.935
+        if heading:
+            fig.text(0.06, y, heading + " (continued)", fontsize=10, weight="bold", va="top")
+            y -= 0.022
+
     for heading, lines in blocks:
+        if y - 0.022 - 0.0135 * min(len(lines), 3) < bottom:
+            new_page("")
         fig.text(0.06, y, heading, fontsize=10, weight="bold", va="top")
         y -= 0.022
         size = 7.5 if max((len(s) for s in lines), default=0) <= 100 else 6.5
         for line in lines:
+            if y - 0.0135 * size / 7.5 < bottom:
+                new_page(heading)
             fig.text(0.06, y, line, fontsize=size, family="monospace", va="top")
             y -= 0.0135 * size / 7.5
         y -= 0.012

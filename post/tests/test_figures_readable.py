@@ -193,3 +193,14 @@ def test_study_deviation_panel_stays_readable():
     assert heights == pytest.approx(sorted([-13.1, 30.5, 12.1]), abs=0.01)
     assert "largest 10.6 %" in ax2.get_title(loc="left")     # 12.1 mm of 113.8 mm; not the 1385 %
     matplotlib.pyplot.close(fig)
+
+
+def test_report_text_continues_on_a_new_page(tmp_path):
+    """A first page too long for A4 (a long provenance) continues on the next page, not off its foot."""
+    from matplotlib.backends.backend_pdf import PdfPages
+
+    from landyn_post.report import _text_page
+    with PdfPages(tmp_path / "r.pdf") as pdf:
+        _text_page(pdf, "t", [("Short", ["x"] * 10), ("Long", [f"line {i}" for i in range(90)])], ("OK", True))
+        n = pdf.get_pagecount()
+    assert n == 2
