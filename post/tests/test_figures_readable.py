@@ -204,3 +204,9 @@ def test_report_text_continues_on_a_new_page(tmp_path):
         _text_page(pdf, "t", [("Short", ["x"] * 10), ("Long", [f"line {i}" for i in range(90)])], ("OK", True))
         n = pdf.get_pagecount()
     assert n == 2
+
+
+def test_envelope_default_name(grid_campaign, tmp_path, run_tool):
+    r = run_tool("envelope", grid_campaign, cwd=tmp_path)
+    assert r.returncode == 0, r
+    assert (tmp_path / "grid_stability.png").is_file() and not list(tmp_path.glob("*_envelope.png"))
