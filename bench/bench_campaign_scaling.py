@@ -66,15 +66,15 @@ class Runner:
         self.launcher = [x for x in a.mpiexec.split(",") if x]
 
     def batch(self, ranks, deck, out, extra=()):
-        cmd = self.launcher + [self.a.np_flag, str(ranks), self.a.batch, deck, "-q", "--force", "-o", out] + list(extra)
+        cmd = self.launcher + [self.a.np_flag, str(ranks), self.a.batch, deck, "-q", "--verbose", "--force", "-o", out] + list(extra)
         t0 = time.perf_counter()
         p = subprocess.run(cmd, cwd=self.dir, env=self.env, capture_output=True, text=True)
         wall = time.perf_counter() - t0
         if p.returncode != 0:
             print(p.stdout, p.stderr)
             raise SystemExit("landyn_batch failed (exit status %d): %s" % (p.returncode, " ".join(cmd)))
-        r0, tot = parse_account(p.stdout)
-        return wall, r0, tot, p.stdout
+        r0, tot = parse_account(p.stderr)      # the time account is on stderr with --verbose
+        return wall, r0, tot, p.stderr
 
 
 def make_decks(a, d, cases, trivial_cases):
@@ -157,7 +157,7 @@ def part_efficiency(a, run, res):
     print("   results of 1 and 2 ranks identical row for row: %s" % ("yes" if same else "NO"))
     print("   landyn_batch's report of the last 2-rank run:")
     for line in last2.splitlines():
-        if re.match(r"\s*(this run|rank time|per case):", line):
+        if re.match(r"\s*(landyn_batch: this run|rank time|per case):", line):
             print("   " + line)
     print("   after: " + load())
     res.update(c_sim=c_sim, c_in=c_in, c_after=c_after, steps=steps, step=c_sim / steps, speedup=speedup,

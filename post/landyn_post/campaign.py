@@ -71,15 +71,29 @@ def _uphill_sense(base_deck_text: str) -> str | None:
     return None
 
 
-def input_label(name: str, units: str, base_deck_text: str = "") -> str:
-    """Engineering axis label of a varied input, e.g. 'horizontal velocity along +x, uphill [m/s]'
-    for initial_state%velocity(1) on the default terrain (rising toward +x)."""
+def _varies_slope_direction(varied) -> bool:
+    """True when one of the campaign's varied parameters is the terrain's slope direction."""
+    for other in varied or ():
+        mo = _NAME.match(other or "")
+        if mo and (mo.group(1).lower(), mo.group(2).lower()) == ("terrain", "slope_direction"):
+            return True
+    return False
+
+
+def input_label(name: str, units: str, base_deck_text: str = "", varied=()) -> str:
+    """Engineering axis label of a varied input, derived from what was sampled: e.g. 'horizontal
+    velocity along global +x, uphill [m/s]' for initial_state%velocity(1) on the default terrain
+    (rising toward +x); when the campaign also varies the slope direction (`varied`: the names of
+    every varied parameter) the direction relative to the slope varies from case to case and the
+    label says so instead of naming the base deck's direction."""
     m = _NAME.match(name or "")
     unit = f" [{units}]" if units and units != "-" else " [-]"
     if not m:
         return f"{name}{unit}"
     group, var, sub = m.group(1).lower(), m.group(2).lower(), (m.group(3) or "").replace(" ", "")
     if (group, var, sub) == ("initial_state", "velocity", "1"):
+        if _varies_slope_direction(varied):
+            return f"horizontal velocity along global +x (slope direction sampled){unit}"
         sense = _uphill_sense(base_deck_text)
         return f"horizontal velocity along global +x{', ' + sense if sense else ''}{unit}"
     key = (group, var, sub) if (group, var, sub) in _LABELS else (group, var, "")

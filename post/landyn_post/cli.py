@@ -15,6 +15,7 @@ import sys
 import contextlib
 import tempfile
 
+from . import files
 from .schema import LandynPostError
 
 EXIT_OK, EXIT_USAGE, EXIT_ERROR, EXIT_CHECK_FAILED, EXIT_WRITE, EXIT_NOTHING_CHECKED = 0, 1, 2, 3, 4, 5
@@ -96,6 +97,7 @@ def atomic_output(path: str, mode: str = "w", **kw):
         os.makedirs(d, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix="." + os.path.basename(path) + ".", suffix=".partial", dir=d)
         os.close(fd)
+        files.follow_umask(tmp)      # mkstemp's 0600 -> the umask's mode (0644 under umask 022)
     except OSError as exc:
         raise LandynWriteError(f"cannot write {path}: {exc.strerror}") from None
     try:

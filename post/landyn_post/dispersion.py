@@ -2,7 +2,7 @@
 LANDYN Monte Carlo campaign.
 
 Reads the summary file of a campaign (landyn_batch, docs/campaign.md; meant for Monte Carlo,
-works for any mode) and writes one figure with
+works for any mode) and writes one figure, <stem>_statistics.png, with
 
   * histograms of the summary metrics of the cases that ran (smallest stroke margin, peak
     overload, peak footpad penetration, largest slide, final tilt, body clearance, largest
@@ -18,7 +18,8 @@ per criterion. --inputs adds histograms of the sampled inputs. --sensitivity wri
 <stem>_sensitivity.png: every varied input against the smallest stroke margin and the peak
 overload (scatter, successful and failed cases marked, criteria as lines), and the Spearman rank
 correlation of every input with every metric (scipy.stats.spearmanr), also printed as a table.
-Axes carry engineering labels (e.g. "horizontal velocity along global +x, uphill [m/s]").
+Axes carry engineering labels derived from what was sampled (e.g. "horizontal velocity along
+global +x, uphill [m/s]"; "... (slope direction sampled)" when the campaign varies it too).
 
 Exit status 0, 1 on a usage error, 2 when the file is not a campaign summary, 4 when a figure
 cannot be written.
@@ -53,6 +54,37 @@ METRICS = [
 ]
 
 
+def _print_extremes(ids, data) -> None:
+    """The cases at the extremes (smallest margin, largest overload), with the command that re-runs
+    one of them with its full time history."""
+    parts = []
+    for name, pick, scale, unit, what in (("min_stroke_margin", np.nanargmin, 1000.0, "mm", "smallest stroke margin"),
+                                          ("peak_overload", np.nanargmax, 1.0, "g", "largest peak overload")):
+        v = data[name]
+        if len(v) and np.isfinite(v).any():
+            k = int(pick(v))
+            parts.append(f"{what}: case {int(ids[k])} ({v[k] * scale:.4g} {unit})")
+    if parts:
+        print("  extreme cases: " + "; ".join(parts))
+        print("  (re-run one with its full time history: landyn_batch DECK --case K --history)")
+
+
+def default_figure_name(summary: str) -> str:
+    """<stem>_statistics.png beside the working directory: the histograms, the success probability
+    and the failure causes (not <stem>_dispersion.png, which read dispersion_dispersion.png for the
+    example campaign dispersion.h5)."""
+    return cli.stem(summary) + "_statistics.png"
+
+
+def sensitivity_name(out: str) -> str:
+    """The sensitivity figure's name next to the main figure: x_statistics.png -> x_sensitivity.png,
+    other names x.png -> x_sensitivity.png."""
+    root, ext = os.path.splitext(out)
+    for suffix in ("_statistics", "_dispersion"):
+        root = root.removesuffix(suffix)
+    return root + "_sensitivity" + (ext or ".png")
+
+
 def wilson(k, n, z=Z95):
     if n == 0:
         return 0.0, 1.0
@@ -71,7 +103,7 @@ def text(x):
 def main(argv=None):
     ap = cli.make_parser("landyn-dispersion", __doc__)
     ap.add_argument("summary", help="summary file of a campaign (landyn_batch)")
-    ap.add_argument("-o", "--output", help="figure file (default <summary stem>_dispersion.png)")
+    ap.add_argument("-o", "--output", help="figure file (default <summary stem>_statistics.png)")
     ap.add_argument("--inputs", action="store_true", help="also histogram the sampled inputs")
     ap.add_argument("--sensitivity", action="store_true",
                     help="also write <stem>_sensitivity.png: inputs vs margin and overload, rank correlations")
@@ -135,6 +167,7 @@ def main(argv=None):
         q = np.percentile(v, [5, 50, 95])
         print(f"  {label + ' [' + unit + ']':34} {v.mean():10.4g} {v.std(ddof=1) if len(v) > 1 else 0:10.4g} "
               f"{q[0]:10.4g} {q[1]:10.4g} {q[2]:10.4g} {v.min():10.4g} {v.max():10.4g}")
+    _print_extremes(ids[ran], {m: data[m][ran] for m in ("min_stroke_margin", "peak_overload")})
     k, ne, p, lo, hi = stored
     print(f"  P(successful landing) = {k}/{ne} = {p:.4f}, 95 % Wilson score interval [{lo:.4f}, {hi:.4f}]"
           f" (failed runs: {failed_runs})")
@@ -143,7 +176,7 @@ def main(argv=None):
     print(f"  failure causes ({n_failed} case(s) failed; a case may fail several criteria):")
     for _, lab, cnt in breakdown:
         print(f"    {lab:40s} {cnt:6d}")
-    eng = {lab: input_label(nm, u, base_text) for lab, nm, u in zip(labels, par_names, units)}
+    eng = {lab: input_label(nm, u, base_text, par_names) for lab, nm, u in zip(labels, par_names, units)}
 
     # ---- figure
     panels = [m for m in METRICS if np.isfinite(data[m[0]][ran]).any()]
@@ -162,8 +195,9 @@ def main(argv=None):
             ax.axvline(crit[name] * scale, color="red", lw=1.5, label="criterion")
         ax.set_xlabel(f"{label} [{unit}]")
         ax.set_ylabel("cases")
-    if panels:
-        axes[0].legend(fontsize=7)
+    if panels:       # one legend for every histogram, above them: none covers a bar or a criterion
+        h, lab = axes[0].get_legend_handles_labels()
+        fig.legend(h, lab, loc="upper center", bbox_to_anchor=(0.5, 0.965), ncol=3, fontsize=8, frameon=False)
     # running probability with its Wilson band
     ax = axes[len(panels)]
     order = np.argsort(ids)
@@ -200,15 +234,15 @@ def main(argv=None):
     for ax in axes[npan:]:
         ax.axis("off")
     fig.suptitle(f"{title} - {n} cases", fontsize=11)
-    fig.tight_layout(rect=(0, 0, 1, 0.97))
-    out = a.output or os.path.splitext(os.path.basename(a.summary))[0] + "_dispersion.png"
+    fig.tight_layout(rect=(0, 0, 1, 0.94))
+    out = a.output or default_figure_name(a.summary)
     try:
         cli.refuse_overwrite(out, [a.summary])
         cli.savefig(fig, out, dpi=a.dpi)
         plt.close(fig)
         print(f"Figure written to {out}")
         if a.sensitivity:
-            out2 = os.path.splitext(out)[0].removesuffix("_dispersion") + "_sensitivity.png"
+            out2 = sensitivity_name(out)
             cli.refuse_overwrite(out2, [a.summary])
             sensitivity_figure(out2, title, labels, eng, inputs, sens, success, ran, crit, a.dpi)
             print(f"Figure written to {out2}")
@@ -237,46 +271,76 @@ def sensitivity_figure(out, title, labels, eng, inputs, sens, success, ran, crit
             cells.append(f"{r:+.3f} ({pv:.2g})" if np.isfinite(r) else "-")
         print("    " + f"{eng[lab]:{w}s}" + "".join(f"{c:>24s}" for c in cells))
     scat = [m for m in metrics if m[0] in ("min_stroke_margin", "peak_overload")]
-    ncol = max(len(labels), 1)
-    fig, axs = plt.subplots(len(scat) + 1, ncol, figsize=(3.6 * ncol, 3.0 * (len(scat) + 1)), squeeze=False)
+    fig = _sensitivity_panels(labels, eng, inputs, sens, success, ran, crit, scat, metrics, rho)
+    fig.suptitle(f"{title}: sensitivity of the margins to the inputs", fontsize=10)
+    cli.savefig(fig, out, dpi=dpi)
+    plt.close(fig)
+
+
+SENS_COLUMNS = 4   #: scatter panels per row of the sensitivity figure (a grid, not one row per metric)
+
+
+def _sensitivity_panels(labels, eng, inputs, sens, success, ran, crit, scat, metrics, rho):
+    """The sensitivity figure's panels: for each of the scatter metrics a block of rows of at most
+    SENS_COLUMNS inputs, then the rank-correlation matrix across the full width; one legend for the
+    figure, above the panels, so none covers a failure marker."""
+    from matplotlib.lines import Line2D
+    from matplotlib.ticker import FormatStrFormatter, MaxNLocator
+    ncol = min(SENS_COLUMNS, max(len(labels), 1))
+    rows_per = max(1, math.ceil(len(labels) / ncol))
+    n_rows = rows_per * len(scat)
+    heat_h = 1.6 + 0.3 * len(labels)
+    fig = plt.figure(figsize=(3.4 * ncol + 0.4, 2.7 * n_rows + heat_h + 0.8), layout="constrained")
+    top, bottom = fig.subfigures(2, 1, height_ratios=[2.7 * n_rows + 0.5, heat_h])
+    axs = top.subplots(max(n_rows, 1), ncol, squeeze=False)
     good = success[ran] == 1
+    for ax in axs.ravel()[len(scat) * rows_per * ncol:]:
+        ax.axis("off")
     for j, m in enumerate(scat):
         y = sens[m[0]][ran] * m[2]
-        for i, lab in enumerate(labels):
-            ax = axs[j, i]
+        for i in range(rows_per * ncol):
+            ax = axs[j * rows_per + i // ncol, i % ncol]
+            if i >= len(labels):
+                ax.axis("off")
+                continue
+            lab = labels[i]
             x = inputs[lab][ran]
-            ax.plot(x[good], y[good], "o", ms=3.5, color="tab:blue", label="successful")
-            ax.plot(x[~good], y[~good], "x", ms=4.5, color="tab:red", label="not successful")
+            ax.plot(x[good], y[good], "o", ms=3.5, color="tab:blue", alpha=0.7)
+            ax.plot(x[~good], y[~good], "x", ms=4.5, color="tab:red")
             if m[0] in crit:
-                ax.axhline(crit[m[0]] * m[2], color="red", lw=1.0, ls="--", label="criterion")
+                ax.axhline(crit[m[0]] * m[2], color="red", lw=1.0, ls="--")
             r = rho[i, [mm[0] for mm in metrics].index(m[0])]
             ax.set_title(f"Spearman rho = {r:+.2f}" if np.isfinite(r) else "constant", fontsize=8)
-            ax.set_xlabel(eng[lab], fontsize=7)
-            if i == 0:
-                ax.set_ylabel(f"{m[1]} [{m[3]}]", fontsize=8)
+            ax.set_xlabel(_wrap(eng[lab], 40), fontsize=7)
+            ax.set_ylabel(f"{m[1]} [{m[3]}]", fontsize=7)
+            ax.xaxis.set_major_locator(MaxNLocator(4))
+            if np.nanmax(np.abs(x)) >= 1e4 if np.isfinite(x).any() else False:
+                ax.xaxis.set_major_formatter(FormatStrFormatter("%.3g"))   # no offset text under the label
             ax.tick_params(labelsize=7)
             ax.grid(True, alpha=0.3)
-    if scat:
-        axs[0, 0].legend(fontsize=6)
-    for ax in axs[-1, 1:]:
-        ax.axis("off")
-    ax = axs[-1, 0]
+    handles = [Line2D([], [], ls="none", marker="o", color="tab:blue", label="successful"),
+               Line2D([], [], ls="none", marker="x", color="tab:red", label="not successful"),
+               Line2D([], [], ls="--", color="red", label="criterion")]
+    top.legend(handles=handles, loc="outside upper center", ncol=3, fontsize=8, frameon=False)
     if metrics:
+        ax = bottom.subplots()
         im = ax.imshow(rho, vmin=-1, vmax=1, cmap="RdBu_r", aspect="auto")
         ax.set_xticks(range(len(metrics)))
-        ax.set_xticklabels([f"{m[1]}" for m in metrics], rotation=35, ha="right", fontsize=6)
+        ax.set_xticklabels([f"{m[1]}" for m in metrics], rotation=20, ha="right", fontsize=7)
         ax.set_yticks(range(len(labels)))
-        ax.set_yticklabels([eng[lab] for lab in labels], fontsize=6)
+        ax.set_yticklabels([eng[lab] for lab in labels], fontsize=7)
         for i in range(len(labels)):
             for j in range(len(metrics)):
                 if np.isfinite(rho[i, j]):
-                    ax.annotate(f"{rho[i, j]:+.2f}", (j, i), ha="center", va="center", fontsize=6)
-        fig.colorbar(im, ax=ax, label="Spearman rank correlation")
+                    ax.annotate(f"{rho[i, j]:+.2f}", (j, i), ha="center", va="center", fontsize=7)
+        bottom.colorbar(im, ax=ax, label="Spearman rank correlation", fraction=0.04)
         ax.set_title("rank correlation input vs metric", fontsize=8)
-    fig.suptitle(f"{title}: sensitivity of the margins to the inputs", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.97))
-    cli.savefig(fig, out, dpi=dpi)
-    plt.close(fig)
+    return fig
+
+
+def _wrap(label: str, width: int) -> str:
+    import textwrap
+    return "\n".join(textwrap.wrap(label, width)) or label
 
 
 if __name__ == "__main__":

@@ -140,7 +140,7 @@ def envelope(xs, ys, ok):
 def main(argv=None):
     ap = cli.make_parser("landyn-envelope", __doc__)
     ap.add_argument("summary", help="summary file of a grid campaign (landyn_batch)")
-    ap.add_argument("-o", "--output", help="figure file (default <summary stem>_envelope.png)")
+    ap.add_argument("-o", "--output", help="figure file (default <summary stem>_stability.png)")
     ap.add_argument("--x", help="label of the horizontal-velocity parameter (default: the one varying velocity(1|2))")
     ap.add_argument("--y", help="label of the slope parameter (default: the one varying terrain%%slope)")
     ap.add_argument("--metric", default="min_stroke_margin", choices=sorted(METRICS),
@@ -208,8 +208,8 @@ def main(argv=None):
     ax.set_xlim(xs[0] - dx, xs[-1] + dx)
     ax.set_ylim(ys[0] - dy, ys[-1] + dy)
     names = dict(zip(d["labels"], d["names"]))
-    ax.set_xlabel(input_label(names[xl], xu, d["base_deck_text"]))
-    ax.set_ylabel(input_label(names[yl], yu, d["base_deck_text"]))
+    ax.set_xlabel(input_label(names[xl], xu, d["base_deck_text"], d["names"]))
+    ax.set_ylabel(input_label(names[yl], yu, d["base_deck_text"], d["names"]))
     ttl = a.title or (d["title"] or os.path.basename(a.summary)) + " - landing stability envelope"
     if fixed:
         ttl += "\n" + ", ".join(f"{k} = {v:g}" for k, v in fixed.items())
@@ -217,7 +217,8 @@ def main(argv=None):
         ttl += "\n(worst case over " + ", ".join(lab for lab in d["labels"] if lab not in (xl, yl)) + ")"
     ax.set_title(ttl, fontsize=10)
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=8, frameon=False)
-    out = a.output or os.path.splitext(os.path.basename(a.summary))[0] + "_envelope.png"
+    # <stem>_stability.png: the example campaign envelope.h5 gave envelope_envelope.png
+    out = a.output or os.path.splitext(os.path.basename(a.summary))[0] + "_stability.png"
     try:
         cli.refuse_overwrite(out, [a.summary])
     except cli.LandynPostError as exc:

@@ -13,7 +13,17 @@ FIRST, as MATLAB users expect: ``timeseries.gears.stroke`` is n_samples x n_gear
 ``plot(timeseries.time, timeseries.gears.stroke(:, 1, 1))`` is gear 1's primary stroke;
 ``cases.crush_length`` is n_cases x n_gears x 3; vectors are columns (n x 1). Texts are char
 arrays, lists of texts cell arrays. Every struct has a field ``units`` with the unit of each field
-(a struct of strings), and the file a char variable ``landyn_info`` describing the layout.
+(a struct of strings), a field ``components`` naming the entries of every axis of fixed length
+(``components.stroke = {'primary'; 'secondary_left'; 'secondary_right'}``, ``components.velocity
+= {'x'; 'y'; 'z'}``, ``components.euler_angles = {'yaw'; 'pitch'; 'roll'}``) and a field ``dims``
+naming every axis (``dims.stroke = 'sample x gear x strut'``); the file has a char variable
+``landyn_info`` describing the layout.
+
+CSV column names are MATLAB-safe (``readtable`` keeps them as they are): letters, digits and
+``_`` only, starting with a letter, at most 63 characters, the units last
+(``inputs_initial_state_attitude_1_deg``, ``inputs_soil_stiffness_N_per_m_pow_n``).
+``--units engineering`` (``engineering_tree``) writes lengths in mm, forces in kN, energies in kJ
+and moments in kN m instead of SI.
 """
 from __future__ import annotations
 
@@ -25,7 +35,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from . import cli
-from .schema import LOAD_NAMES, PEAK_JOINTS, PEAK_QUANTITIES, STRUTS, LandynPostError, is_hdf5, units_token
+from .schema import DATASETS, LOAD_NAMES, PEAK_JOINTS, PEAK_QUANTITIES, STRUTS, LandynPostError, is_hdf5
 
 CAMPAIGN_SCHEMA = "landyn-campaign-1.0"
 
@@ -118,17 +128,56 @@ def _mat_value(v):
     return a
 
 
-def _mat_struct(node: Node) -> dict:
-    out, units = {}, {}
+#: dataset path -> (names of the last axis, names of every axis) from the result schema
+_AXIS_WORDS = {"n": "sample", "g": "gear", "s": "strut"}
+_SCHEMA_AXES = {d.path: (tuple(d.components), " x ".join(_AXIS_WORDS.get(str(a), "strut" if d.components == STRUTS
+                                                                     else "component") for a in d.shape))
+                for d in DATASETS if d.shape}
+#: datasets of study and campaign files whose last axis is the strut (n_cases x n_gears x 3 ...)
+_STRUT_FIELDS = {"crush_length", "crushed_positive", "crushed_negative", "stroke_final", "stroke_margin",
+                 "bottomed_out", "crush_work", "mode_switches", "peak_strut_force"}
+
+
+def _axes_of(path: str, name: str, value) -> tuple[tuple, str]:
+    """(names of the last axis' entries or (), names of the axes or '') of a dataset."""
+    if path in _SCHEMA_AXES:
+        return _SCHEMA_AXES[path]
+    shape = np.shape(value) if not isinstance(value, (str, list)) else ()
+    if name in _STRUT_FIELDS and len(shape) >= 2 and shape[-1] == len(STRUTS):
+        lead = {"cases": "case", "table": "row"}.get(path.strip("/").split("/")[0], "row")
+        return STRUTS, " x ".join(([lead] if len(shape) == 3 else []) + ["gear", "strut"])
+    if name == "final_attitude" and shape == (3,):
+        return ("yaw", "pitch", "roll"), "component"
+    return (), ""
+
+
+def _cell(names) -> np.ndarray:
+    out = np.empty((len(names), 1), dtype=object)
+    for i, x in enumerate(names):
+        out[i, 0] = x
+    return out
+
+
+def _mat_struct(node: Node, path: str = "") -> dict:
+    out, units, comps, dims = {}, {}, {}, {}
     for k, v in node.items():
         name = mat_name(k)
         if isinstance(v, Node):
-            out[name] = _mat_struct(v)
+            out[name] = _mat_struct(v, f"{path}/{k}")
         else:
             out[name] = _mat_value(v.value)
             units[name] = v.units
+            c, d = _axes_of(f"{path}/{k}", k, v.value)
+            if c:
+                comps[name] = _cell(c)
+            if d:
+                dims[name] = d
     if units:
         out["units"] = units
+    if comps:
+        out["components"] = comps
+    if dims:
+        out["dims"] = dims
     return out
 
 
@@ -136,31 +185,88 @@ MAT_INFO = ("LANDYN export (landyn-export --mat). One struct per HDF5 group, fie
             "(MATLAB identifiers: '-' -> '_', a leading digit gets 'v'). Arrays as h5py reads them: the sample or "
             "case index first (timeseries.gears.stroke is n_samples x n_gears x 3: primary, secondary left, "
             "secondary right; cases.crush_length is n_cases x n_gears x 3); vectors are columns. Each struct's "
-            "field 'units' gives the unit of every field. Frames and signs: docs/output.md, docs/campaign.md, "
+            "field 'units' gives the unit of every field, 'components' the names of the entries of a fixed-length "
+            "last axis (components.stroke = {'primary'; 'secondary_left'; 'secondary_right'}, components.velocity "
+            "= {'x'; 'y'; 'z'}, components.euler_angles = {'yaw'; 'pitch'; 'roll'}) and 'dims' the names of the "
+            "axes (dims.stroke = 'sample x gear x strut'). Frames and signs: docs/output.md, docs/campaign.md, "
             "docs/study.md.")
 
 
-def write_mat(path: str, src: str) -> str:
-    """Every group and dataset of `src` (run, study or campaign file) as a MATLAB .mat file."""
+def write_mat(path: str, src: str, units: str = "si") -> str:
+    """Every group and dataset of `src` (run, study or campaign file) as a MATLAB .mat file; with
+    units='engineering' lengths in mm, forces in kN, energies in kJ, moments in kN m."""
     from scipy.io import savemat
     attrs, tree = read_tree(src)
-    data = {"landyn_info": MAT_INFO, "landyn_file": os.path.abspath(src),
+    if units == "engineering":
+        tree = engineering_tree(tree)
+    data = {"landyn_info": MAT_INFO, "landyn_file": os.path.abspath(src), "landyn_units": units,
             "attributes": {mat_name(k): (v if isinstance(v, str) else _mat_value(v)) for k, v in attrs.items()}}
     for k, v in tree.items():
-        data[mat_name(k)] = _mat_struct(v) if isinstance(v, Node) else _mat_value(v.value)
+        data[mat_name(k)] = _mat_struct(v, "/" + k) if isinstance(v, Node) else _mat_value(v.value)
     with cli.atomic_output(path, mode=None) as tmp:
         with open(tmp, "wb") as fh:
             savemat(fh, data, long_field_names=True, do_compression=True, oned_as="column")
     return path
 
 
+def engineering_tree(node: Node) -> Node:
+    """A copy of a read tree with every numeric dataset in engineering units (units.to_engineering:
+    m -> mm, N -> kN, J -> kJ, N m -> kN m; others unchanged), its units attribute changed with it."""
+    from .units import to_engineering
+    out = Node()
+    for k, v in node.items():
+        if isinstance(v, Node):
+            out[k] = engineering_tree(v)
+        elif isinstance(v.value, (str, list)) or np.asarray(v.value).dtype.kind not in "fiu":
+            out[k] = v
+        else:
+            val, unit = to_engineering(np.asarray(v.value), v.units)
+            out[k] = Leaf(val, unit, v.description)
+    return out
+
+
 # ----------------------------------------------------------------------------------------- CSV tables
+
+_NOT_MATLAB = re.compile(r"[^A-Za-z0-9_]+")
+
+
+def units_suffix(units: str) -> str:
+    """Units as a MATLAB-safe column-name suffix: 'm/s' -> 'm_per_s', 'm/s^2' -> 'm_per_s2',
+    'N/m^1.5' -> 'N_per_m1p5', 'N/m^n' -> 'N_per_m_pow_n', 'kN m' -> 'kN_m', '-' -> ''."""
+    if units in ("-", ""):
+        return ""
+    u = units.replace("/", "_per_").replace(" ", "_")
+    u = re.sub(r"\^([0-9]+(?:\.[0-9]+)?)", lambda m: m.group(1).replace(".", "p"), u)
+    u = re.sub(r"\^([A-Za-z]+)", r"_pow_\1", u)
+    return _NOT_MATLAB.sub("_", u).strip("_")
+
+
+def matlab_column(name: str) -> str:
+    """A column name MATLAB's readtable keeps unchanged: [A-Za-z][A-Za-z0-9_]*, at most 63
+    characters ('inputs_initial_state.attitude_1_deg' -> 'inputs_initial_state_attitude_1_deg')."""
+    s = _NOT_MATLAB.sub("_", name).strip("_")
+    if not s or not s[0].isalpha():
+        s = "x" + s
+    return s[:63]
+
+
+def _unique_columns(names: list[str]) -> list[str]:
+    out, seen = [], set()
+    for n in names:
+        c, k = matlab_column(n), 2
+        while c in seen:
+            tail = f"_{k}"
+            c, k = matlab_column(n)[:63 - len(tail)] + tail, k + 1
+        seen.add(c)
+        out.append(c)
+    return out
+
 
 def _col_names(name: str, units: str, shape: tuple, labels: tuple | None = None) -> list[str]:
     """Column names of a dataset whose first axis is the table's rows: trailing (g, 3) axes as
     gear<i>_<strut>_<name>, a trailing axis with labels as <label>_<name> (struts) or
     <name>_<label> (components), else numbered 1..k."""
-    tok = units_token(units)
+    tok = units_suffix(units)
     suf = f"_{tok}" if tok else ""
     trail = shape[1:]
     if not trail:
@@ -188,7 +294,7 @@ def _write_table(path: str, columns: list[tuple[str, list]]) -> str:
     n = max((len(c) for _, c in columns), default=0)
     with cli.atomic_output(path, "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow([h for h, _ in columns])
+        w.writerow(_unique_columns([h for h, _ in columns]))
         for i in range(n):
             w.writerow([_fmt(c[i]) for _, c in columns])
     return path
@@ -285,10 +391,10 @@ def study_runs_table(tree: Node) -> list[tuple[str, list]]:
                     a = np.asarray(leaf.value)
                     for g in range(a.shape[0]):
                         for s in range(a.shape[1]):
-                            row[f"gear{g + 1}_{STRUTS[s]}_crush_length_m"] = a[g, s]
+                            row[f"gear{g + 1}_{STRUTS[s]}_crush_length_{units_suffix(leaf.units)}"] = a[g, s]
                 else:
                     v = leaf.value
-                    row[k + (f"_{units_token(leaf.units)}" if units_token(leaf.units) else "")] = \
+                    row[k + (f"_{units_suffix(leaf.units)}" if units_suffix(leaf.units) else "")] = \
                         v if isinstance(v, str) else np.asarray(v).item()
             rows.append(row)
     keys: list[str] = []
@@ -306,6 +412,8 @@ def peak_joint_load_table(tree: Node) -> list[tuple[str, list]]:
     if not isinstance(grp, Node):
         return []
     value = np.asarray(grp["value"].value, dtype=float)           # (g, 4, 4)
+    if grp["value"].units == "kN":                               # already engineering_tree'd
+        value = value * 1e3
     time = np.asarray(grp["time"].value, dtype=float)
     simul = np.asarray(grp["simultaneous"].value, dtype=float)     # (g, 16, 21)
     load_cols = [nm + ("_kN" if nm[0] == "F" else "_kNm") for nm in LOAD_NAMES]
@@ -324,9 +432,12 @@ def peak_joint_load_table(tree: Node) -> list[tuple[str, list]]:
     return list(cols.items())
 
 
-def write_tables(src: str, kind: str, outdir: str) -> list[str]:
-    """CSV files of every table of a study or campaign file (and of a run's summary and meta)."""
+def write_tables(src: str, kind: str, outdir: str, units: str = "si") -> list[str]:
+    """CSV files of every table of a study or campaign file (and of a run's summary and meta);
+    units='engineering': mm, kN, kJ, kN m instead of SI (the column names say which)."""
     attrs, tree = read_tree(src)
+    if units == "engineering":
+        tree = engineering_tree(tree)
     stem = cli.stem(src)
     if kind == "run":
         labels = {k: STRUTS for k in ("crush_length", "crushed_positive", "crushed_negative", "stroke_final",

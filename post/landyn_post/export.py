@@ -3,7 +3,8 @@ CSV, MATLAB .mat and (runs) a ParaView-readable XDMF file.
 
 Column names carry their units: time_s, body_velocity_z_m_per_s, body_euler_angles_pitch_deg,
 gear1_primary_stroke_m, gear1_secondary_left_strut_force_N, gear1_footpad_position_x_m,
-gear1_normal_force_N, energy_honeycomb_work_J ... (SI, z down, signs as in docs/output.md).
+gear1_normal_force_N, energy_honeycomb_work_J ... (SI, z down, signs as in docs/output.md);
+``--units engineering``: mm, kN, kJ, kN m (gear1_primary_stroke_mm, gear1_normal_force_kN ...).
 Every file is written under a temporary name and renamed when complete; an input file is never
 overwritten.
 """
@@ -16,7 +17,7 @@ import sys
 import numpy as np
 
 from . import cli
-from .schema import STRUTS, Channel, LandynPostError, Result, load, measure_number
+from .schema import STRUTS, Channel, LandynPostError, Result, load, measure_number, units_token
 
 TIME_COLUMN = "time_s"
 
@@ -30,6 +31,24 @@ def write_csv(path: str, time: np.ndarray, channels: list[Channel]) -> str:
         for row in data:
             w.writerow([f"{v:.12g}" for v in row])
     return path
+
+
+def engineering_channels(channels: list[Channel]) -> list[Channel]:
+    """The channels in engineering units (units.to_engineering: m -> mm, N -> kN, J -> kJ, N m ->
+    kN m), the unit at the end of each column name changed with them."""
+    from dataclasses import replace
+
+    from .exchange import units_suffix
+    from .units import to_engineering
+    out = []
+    for c in channels:
+        values, unit = to_engineering(c.values, c.units)
+        column = c.column
+        old = units_token(c.units)
+        if unit != c.units and old and column.endswith("_" + old):
+            column = column[:-len(old)] + units_suffix(unit)
+        out.append(replace(c, values=values, units=unit, column=column))
+    return out
 
 
 def write_summary_csv(path: str, res: Result) -> str:
@@ -68,12 +87,15 @@ def _main(argv=None) -> int:
                "               _parameters, _probability, _scalars; study <stem>_table.csv (Tables 6/9/10\n"
                "               layout), _runs.csv (one row per variant and load case), _study, _summary, _scalars\n"
                "  --mat        MATLAB file (default <stem>.mat)\n\n"
-               "examples:\n  landyn-export lc3.h5 -o lc3.csv\n  landyn-export lc3.h5 --mat --xdmf --tables\n"
+               "examples:\n  landyn-export lc3.h5 -o lc3.csv\n  landyn-export lc3.h5 --units engineering -o lc3_mm_kN.csv\n  landyn-export lc3.h5 --mat --xdmf --tables\n"
                "  landyn-export dispersion.h5 --mat\n  landyn-export study_friction.h5 -o friction_csv")
     p.add_argument("file", metavar="FILE", help="LANDYN result, study or campaign file (.h5)")
     p.add_argument("-o", "--output", metavar="OUT", help="output CSV file (a directory with --per-gear and for "
                    "study and campaign files)")
     p.add_argument("--per-gear", action="store_true", help="one file per gear plus one for body and energy")
+    p.add_argument("--units", choices=("si", "engineering"), default="si",
+                   help="si (default: m, N, J, N m) or engineering (mm, kN, kJ, kN m; m/s, deg, g and s unchanged); "
+                        "the column names and the MATLAB 'units' fields say which")
     p.add_argument("--summary", action="store_true", help="also write the per-strut crush-length summary CSV")
     p.add_argument("--tables", nargs="?", const="", metavar="DIR", help="a result's summary tables as CSV")
     p.add_argument("--mat", nargs="?", const="", metavar="FILE", help="MATLAB .mat file (default <stem>.mat)")
@@ -95,37 +117,42 @@ def _main(argv=None) -> int:
             p.error(f"--per-gear, --summary, --tables and --xdmf apply to result files; {a.file} is a {kind} file")
         if a.mat is None or a.output:
             outdir = out_path(a.output, base + "_csv")
-            written += write_tables(a.file, kind, cli.output_dir(outdir))
+            written += write_tables(a.file, kind, cli.output_dir(outdir), a.units)
         if a.mat is not None:
-            written.append(write_mat(out_path(a.mat, base + ".mat"), a.file))
+            written.append(write_mat(out_path(a.mat, base + ".mat"), a.file, a.units))
         for fn in written:
             print(fn)
         return cli.EXIT_OK
 
     res = load(a.file)
+
+    def channels(**kw) -> list[Channel]:
+        ch = res.channels(**kw)
+        return engineering_channels(ch) if a.units == "engineering" else ch
+
     default_csv = a.output is not None or a.per_gear or a.summary or all(
         x is None for x in (a.tables, a.mat, a.xdmf))
     if default_csv:
         if a.per_gear:
             outdir = cli.output_dir(out_path(a.output, base + "_csv"))
-            written.append(write_csv(os.path.join(outdir, f"{base}_body.csv"), res.time, res.channels(gears=[])))
+            written.append(write_csv(os.path.join(outdir, f"{base}_body.csv"), res.time, channels(gears=[])))
             for g in range(1, res.n_gears + 1):
                 written.append(write_csv(os.path.join(outdir, f"{base}_gear{g}.csv"), res.time,
-                                         res.channels(gears=[g], include_body=False)))
+                                         channels(gears=[g], include_body=False)))
             summary_dir = outdir
         else:
             out = out_path(a.output, base + "_timeseries.csv")
             d = os.path.dirname(out)
             if d:
                 cli.output_dir(d)
-            written.append(write_csv(out, res.time, res.channels()))
+            written.append(write_csv(out, res.time, channels()))
             summary_dir = d
         if a.summary:
             written.append(write_summary_csv(os.path.join(summary_dir, f"{base}_crush.csv"), res))
     if a.tables is not None:
-        written += write_tables(a.file, kind, cli.output_dir(out_path(a.tables, base + "_tables")))
+        written += write_tables(a.file, kind, cli.output_dir(out_path(a.tables, base + "_tables")), a.units)
     if a.mat is not None:
-        written.append(write_mat(out_path(a.mat, base + ".mat"), a.file))
+        written.append(write_mat(out_path(a.mat, base + ".mat"), a.file, a.units))
     if a.xdmf is not None:
         written += write_xdmf(out_path(a.xdmf, base + ".xdmf"), res)
     for fn in written:

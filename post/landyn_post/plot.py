@@ -1,8 +1,9 @@
 """landyn-plot: standard figures of one LANDYN result file (and the --report PDF).
 
-Figures (file names ``<stem>_<name>.<fmt>`` in OUTDIR). Curves that coincide (the symmetric gear
-pairs of a symmetric landing) are drawn so that every one stays visible (dashed with markers on
-top of the first) and a note names them.
+Figures (file names ``<stem>_<name>.<fmt>`` in OUTDIR). Curves that coincide or nearly coincide
+(the symmetric gear pairs of a symmetric landing) are drawn so that every one stays visible
+(dashed with markers on top of the first) and a note names them; legends stand outside the axes
+and reference lines are named on the right-hand axis, off the data.
 
   strokes         stroke time history of every strut (paper Fig. 9)
   strut_forces    axial force of every strut over time
@@ -70,32 +71,67 @@ class PlotOptions:
 #: marker and dash patterns given, in turn, to the later members of a group of coincident curves
 _COINCIDENT_STYLES = (("--", "o"), (":", "s"), ("-.", "^"), ((0, (1, 3)), "v"))
 
+#: curves closer than OVERLAP_REL of the axis span (about a line width) are drawn on top of each
+#: other there; a curve that does so for at least OVERLAP_SHARE of the samples and never parts by
+#: more than OVERLAP_MAX is styled as coincident with the first ("≈" in the note, with its largest
+#: difference). LC-3's symmetric gears: >= 94 % of the samples within 1 %, apart by <= 5.4 %; the
+#: other pairs: <= 73 % within 1 %, apart by >= 54 %.
+OVERLAP_REL = 1e-2
+OVERLAP_SHARE = 0.9
+OVERLAP_MAX = 0.1
+
+
+def _span(curves: list[np.ndarray]) -> float:
+    allv = np.concatenate([np.ravel(c) for c in curves]) if curves else np.zeros(0)
+    allv = allv[np.isfinite(allv)]
+    return float(np.max(allv) - np.min(allv)) if allv.size else 0.0
+
 
 def coincident_groups(curves: list[np.ndarray], rel: float = 2e-3) -> list[list[int]]:
     """Groups of curves that lie on top of each other: max |y_i - y_j| <= rel x the span of all
     curves (0.2 %: closer than a line width). Each group lists indices, first one first."""
+    return [[i for i, _ in g] for g in overlap_groups(curves, rel, near=rel, share=1.0)]
+
+
+def overlap_groups(curves: list[np.ndarray], rel: float = 2e-3, near: float = OVERLAP_REL,
+                   share: float = OVERLAP_SHARE, most: float = OVERLAP_MAX) -> list[list[tuple[int, float]]]:
+    """Groups of curves that hide each other: a curve joins the closest group whose first curve it
+    follows within `rel` of the span of all curves everywhere (identical to the eye), or within
+    `near` for at least `share` of the samples and within `most` everywhere (drawn under it most
+    of the time, e.g. LC-3's symmetric gears that part by a few % late in the run). Each group
+    lists (index, largest difference as a fraction of the span), the first curve first with 0."""
     if not curves:
         return []
-    allv = np.concatenate([np.ravel(c) for c in curves])
-    span = float(np.nanmax(allv) - np.nanmin(allv)) if allv.size else 0.0
-    tol = rel * span if span > 0 else 1e-12
-    groups: list[list[int]] = []
+    span = _span(curves)
+    scale = span if span > 0 else 1e-12
+    groups: list[list[tuple[int, float]]] = []
     for i, c in enumerate(curves):
+        best, best_d = None, np.inf
         for g in groups:
-            if np.shape(curves[g[0]]) == np.shape(c) and float(np.nanmax(np.abs(c - curves[g[0]]))) <= tol:
-                g.append(i)
-                break
+            lead = curves[g[0][0]]
+            if np.shape(lead) != np.shape(c):
+                continue
+            d = np.abs(np.asarray(c, float) - np.asarray(lead, float))
+            d = np.where(np.isfinite(d), d, np.inf)
+            dmax = float(np.max(d)) if d.size else 0.0
+            hides = dmax <= rel * scale or (dmax <= most * scale and float(np.mean(d <= near * scale)) >= share)
+            if hides and dmax < best_d:
+                best, best_d = g, dmax
+        if best is None:
+            groups.append([(i, 0.0)])
         else:
-            groups.append([i])
+            best.append((i, best_d / scale))
     return groups
 
 
 def draw_curves(ax, t, curves: list[tuple[str, np.ndarray, dict]], rel: float = 2e-3) -> str:
-    """Plots (label, y, style) curves so that coincident ones stay visible: the first curve of a
-    coincident group is drawn wider, the later ones on top with markers (offset from each other)
-    and, where their own line style is the first one's, a dashed or dotted style. Returns a note
-    naming the coincident curves ('' when none), for the figure's footnote (see _footnote)."""
-    groups = coincident_groups([c[1] for c in curves], rel)
+    """Plots (label, y, style) curves so that curves hiding each other stay visible: the first
+    curve of an overlapping group is drawn wider and paler, the later ones on top with markers
+    (offset from each other) and, where their own line style is the first one's, a dashed or
+    dotted style. Returns a note naming them ('' when none), for the figure's footnote (see
+    _footnote): 'gear 1 = gear 4' within `rel` of the axis span everywhere, 'gear 1 ≈ gear 4 (up
+    to 2.5 %)' when they overlap most of the run but part by more somewhere."""
+    groups = overlap_groups([c[1] for c in curves], rel)
     style_of: dict[int, dict] = {}
     notes = []
     n = len(t)
@@ -103,10 +139,15 @@ def draw_curves(ax, t, curves: list[tuple[str, np.ndarray, dict]], rel: float = 
     for g in groups:
         if len(g) < 2:
             continue
-        notes.append(" = ".join(curves[i][0] for i in g))
-        style_of[g[0]] = dict(lw=2.6, alpha=0.8)
-        lead_ls = curves[g[0]][2].get("ls", "-")
-        for rank, i in enumerate(g[1:]):
+        lead = curves[g[0][0]][0]
+        if all(d <= rel for _, d in g):
+            notes.append(" = ".join(curves[i][0] for i, _ in g))
+        else:
+            notes.append(" ≈ ".join([lead] + [f"{curves[i][0]} (up to {100 * d:.1f} %)" if d > rel
+                                              else curves[i][0] for i, d in g[1:]]))
+        style_of[g[0][0]] = dict(lw=2.6, alpha=0.6)
+        lead_ls = curves[g[0][0]][2].get("ls", "-")
+        for rank, (i, _) in enumerate(g[1:]):
             ls, mk = _COINCIDENT_STYLES[rank % len(_COINCIDENT_STYLES)]
             st = dict(marker=mk, ms=4, mfc="none", markevery=(every * (rank + 1) // len(g), every), lw=1.2)
             if curves[i][2].get("ls", "-") == lead_ls:
@@ -119,18 +160,64 @@ def draw_curves(ax, t, curves: list[tuple[str, np.ndarray, dict]], rel: float = 
     return "; ".join(notes)
 
 
+FOOTNOTE_WIDTH = 150   #: characters per footnote line (6.5 pt on an 8-9.5 in wide figure)
+
+
+def _wrap_items(head: str, items: list[str], width: int) -> list[str]:
+    """Lines of `head` followed by the items separated by '; ', broken only between items (a
+    curve's name such as 'footpad 3' is never split over two lines)."""
+    lines, cur = [], head
+    for k, item in enumerate(items):
+        piece = item + (";" if k < len(items) - 1 else "")
+        if len(cur) + 1 + len(piece) > width and cur.strip():
+            lines.append(cur)
+            cur = "    " + piece
+        else:
+            cur = f"{cur} {piece}" if cur else piece
+    lines.append(cur)
+    return lines
+
+
 def _footnote(fig, notes: list[tuple[str, str]]) -> float:
-    """Writes the coincident-curve notes under the figure; returns the bottom margin to keep free."""
-    import textwrap
+    """Writes the notes on curves drawn on top of each other under the figure; returns the bottom
+    margin to keep free."""
     lines = []
     for where, note in notes:
         if note:
-            lines += textwrap.wrap(f"{where}: coincident within 0.2 % of the axis span (markers mark the later "
-                                   f"curves): {note}", 130)
+            lines += _wrap_items(f"{where}:", note.split("; "), FOOTNOTE_WIDTH)
     if not lines:
         return 0.0
+    lines.insert(0, "Curves on top of each other (later ones with markers; = within 0.2 % of the axis span "
+                    "everywhere, ≈ within 1 % for most of the run, largest difference in % of the span):")
     fig.text(0.01, 0.005, "\n".join(lines), fontsize=6.5, color="0.2", va="bottom", ha="left")
     return 0.012 + 0.016 * len(lines)
+
+
+def _level_labels(ax, levels: list[tuple[float, str]]):
+    """Names horizontal reference lines (crush levels, capacities, stage ends) on a secondary
+    axis at the right edge, off the data and off the lines: a label on the line itself is struck
+    through by it and by the curves that run along it. Returns the secondary axis (or None)."""
+    if not levels:
+        return None
+    sax = ax.secondary_yaxis("right")
+    vals = [v for v, _ in levels]
+    sax.set_yticks(vals, labels=[lab for _, lab in levels])
+    sax.tick_params(labelsize=7, colors="0.3", length=3)
+    return sax
+
+
+def _legend_right(fig, ax, sax=None, **kw):
+    """Legend outside the axes on the right, beyond the reference-line labels of `sax` if any, so
+    that it covers neither data nor labels."""
+    from matplotlib.transforms import offset_copy
+    kw.setdefault("fontsize", 7)
+    width_pt = 4.0
+    if sax is not None:
+        fig.canvas.draw()
+        box = sax.get_tightbbox(fig.canvas.get_renderer())
+        width_pt += (box.x1 - ax.get_window_extent().x1) * 72.0 / fig.dpi
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.0, 1.0), borderaxespad=0.0,
+                     bbox_transform=offset_copy(ax.transAxes, fig=fig, x=width_pt, y=0.0, units="points"), **kw)
 
 
 def _tilt(res: Result) -> np.ndarray:
@@ -144,7 +231,7 @@ def _tilt(res: Result) -> np.ndarray:
 def fig_strokes(res: Result, opts: PlotOptions | None = None):
     """Stroke of every strut over time (paper Fig. 9): primaries and secondaries, capacities marked."""
     plt = _plt()
-    fig, axs = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    fig, axs = plt.subplots(2, 1, figsize=(9.5, 7), sharex=True)
     t = res.time
     cap = res.strut_capacity()
     notes = [("(a) primaries", draw_curves(axs[0], t, [(f"gear {i + 1}", res.stroke[:, i, 0] * MM,
@@ -153,20 +240,21 @@ def fig_strokes(res: Result, opts: PlotOptions | None = None):
                                                          res.stroke[:, i, k] * MM,
                                                          dict(color=_gear_color(i), ls=STRUT_STYLES[k]))
                                                         for i in range(res.n_gears) for k in (1, 2)]))]
-    for s_end in res.primary_stage_ends()[:-1]:
+    lv0 = []
+    for k, s_end in enumerate(res.primary_stage_ends()[:-1]):
         axs[0].axhline(s_end * MM, color="0.5", lw=0.8, ls=":")
-        axs[0].annotate("stage end", (t[0], s_end * MM), fontsize=7, color="0.4", va="bottom")
-    _capacity_lines(axs[0], cap[:, 0, 0], None, t[0])
-    _capacity_lines(axs[1], cap[:, 1, 0], cap[:, 1, 1], t[0])
+        lv0.append((s_end * MM, f"stage {k + 1} end"))
+    lv0 += _capacity_lines(axs[0], cap[:, 0, 0], None)
+    lv1 = _capacity_lines(axs[1], cap[:, 1, 0], cap[:, 1, 1])
     axs[0].set_ylabel("primary stroke [mm]\n(shortening +)")
     axs[1].set_ylabel("secondary stroke [mm]\n(lengthening +)")
     axs[1].set_xlabel("time [s]")
     axs[0].set_title("(a) primary struts", fontsize=9, loc="left")
     axs[1].set_title("(b) secondary struts: left dashed, right dotted", fontsize=9, loc="left")
-    axs[0].legend(fontsize=7, ncol=4, loc="lower right")
-    axs[1].legend(fontsize=6, ncol=4, loc="best")
     for ax in axs:
         ax.grid(True, alpha=0.3)
+    _legend_right(fig, axs[0], _level_labels(axs[0], lv0))
+    _legend_right(fig, axs[1], _level_labels(axs[1], lv1), fontsize=6.5)
     _title(fig, res, "Strut strokes")
     fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
     return fig
@@ -186,10 +274,8 @@ def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
                                                         for i in range(res.n_gears) for k in (1, 2)]))]
     levels = _crush_levels(res)
     for ax, lv in ((axs[0], levels["primary"]), (axs[1], levels["secondary"])):
-        for v, what in lv:
+        for v, _ in lv:
             ax.axhline(v * KN, color="0.5", lw=0.8, ls=":")
-            ax.annotate(what, (0.5 * (t[0] + t[-1]), v * KN), fontsize=7, color="0.4", ha="center",
-                        va="bottom" if v > 0 else "top")
     pk = res.peak_strut_force
     axs[0].set_title(f"(a) primary struts; peak {np.max(pk[:, 0]) * KN:.1f} kN (every step)", fontsize=9, loc="left")
     axs[1].set_title(f"(b) secondary struts, left dashed, right dotted; peak {np.max(pk[:, 1:]) * KN:.1f} kN",
@@ -197,10 +283,10 @@ def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
     axs[0].set_ylabel("primary axial force [kN]\n(compression +)")
     axs[1].set_ylabel("secondary axial force [kN]\n(compression +)")
     axs[1].set_xlabel("time [s]")
-    axs[0].legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    axs[1].legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     for ax in axs:
         ax.grid(True, alpha=0.3)
+    _legend_right(fig, axs[0], _level_labels(axs[0], [(v * KN, w) for v, w in levels["primary"]]))
+    _legend_right(fig, axs[1], _level_labels(axs[1], [(v * KN, w) for v, w in levels["secondary"]]), fontsize=6.5)
     _title(fig, res, "Strut axial forces")
     fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
     return fig
@@ -251,13 +337,16 @@ def fig_force_stroke(res: Result, opts: PlotOptions | None = None):
     return fig
 
 
-def _capacity_lines(ax, cap_pos, cap_neg, t0) -> None:
-    for vals, va in ((cap_pos, "bottom"), (cap_neg, "top")):
+def _capacity_lines(ax, cap_pos, cap_neg) -> list[tuple[float, str]]:
+    """Draws the stroke capacities (+ and -) as lines; returns (value mm, label) for _level_labels."""
+    out = []
+    for vals, sign in ((cap_pos, 1), (cap_neg, -1)):
         if vals is None or not np.all(np.isfinite(vals)):
             continue
-        c = float(np.max(vals)) * MM * (1 if va == "bottom" else -1)
+        c = float(np.max(vals)) * MM * sign
         ax.axhline(c, color="k", lw=1.0, ls="-.")
-        ax.annotate("capacity", (t0, c), fontsize=7, va=va)
+        out.append((c, f"capacity {c:+.0f} mm"))
+    return out
 
 
 def fig_crush_lengths(res: Result, opts: PlotOptions | None = None):
@@ -315,7 +404,7 @@ def fig_crush_lengths(res: Result, opts: PlotOptions | None = None):
 def fig_footpad_forces(res: Result, opts: PlotOptions | None = None):
     """Footpad normal and friction forces and penetration over time (paper Fig. 11)."""
     plt = _plt()
-    fig, axs = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
+    fig, axs = plt.subplots(3, 1, figsize=(9, 8), sharex=True)
     t = res.time
     notes = []
     for ax, data, scale, what in ((axs[0], res.normal_force, KN, "normal force"),
@@ -329,7 +418,7 @@ def fig_footpad_forces(res: Result, opts: PlotOptions | None = None):
     peak = max(0.5, float(np.max(res.penetration)) * MM)
     axs[2].set_ylim(-0.25 * peak, 1.15 * peak)   # before touchdown the footpads are far above
     axs[2].set_xlabel("time [s]")
-    axs[0].legend(fontsize=7, ncol=4)
+    _legend_right(fig, axs[0])
     for ax in axs:
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Footpad-ground contact forces")
@@ -342,7 +431,7 @@ def fig_body(res: Result, opts: PlotOptions | None = None):
     with a CFC class (SAE J211 / ISO 6487), the class named in the panel."""
     plt = _plt()
     opts = opts or PlotOptions()
-    fig, axs = plt.subplots(3, 1, figsize=(8, 8.5), sharex=True)
+    fig, axs = plt.subplots(3, 1, figsize=(9, 8.5), sharex=True)
     t = res.time
     notes = [("velocity", draw_curves(axs[0], t, [(f"v{lab}", res.velocity[:, k], dict(color=f"C{k}"))
                                                   for k, lab in enumerate(("x", "y", "z (down)"))])),
@@ -364,15 +453,19 @@ def fig_body(res: Result, opts: PlotOptions | None = None):
                                                       for k, lab in enumerate(("x", "y", "z"))]
                                           + [("|n|", np.linalg.norm(n, axis=1), dict(color="k", ls="--"))])))
     peak_f = float(np.max(np.linalg.norm(n, axis=1)))
-    axs[2].set_title(f"overload: {note}\npeak |n| of the curves {peak_f:.2f} g; unfiltered peak over every time step "
-                     f"{res.peak_overload:.2f} g at {res.time_of_peak_overload:.4f} s", fontsize=7.5, loc="left")
+    title = (f"overload: {note}\npeak |n| of the curves {peak_f:.2f} g; unfiltered peak over every time step "
+             f"{res.peak_overload:.2f} g at {res.time_of_peak_overload:.4f} s")
+    if opts.cfc and peak_f > res.peak_overload:
+        title += ("\nthe filtered peak exceeds the unfiltered: the Butterworth filter overshoots (rings) at the "
+                  "steps of the crush forces, as every J211 filter does")
+    axs[2].set_title(title, fontsize=7.5, loc="left")
     _min_span(axs[1], 2.0)
     axs[0].set_ylabel("mass-centre velocity [m/s]\n(global, z down)")
     axs[1].set_ylabel("attitude [deg]\n(Z-Y-X Euler)")
     axs[2].set_ylabel("overload [g]\n(lander axes)" + (f"\nCFC {opts.cfc}" if opts.cfc else ""))
     axs[2].set_xlabel("time [s]")
     for ax in axs:
-        ax.legend(fontsize=7, ncol=4, loc="upper right")
+        _legend_right(fig, ax)
         ax.grid(True, alpha=0.3)
     _title(fig, res, "Body motion")
     fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))
@@ -459,7 +552,7 @@ def fig_interface_loads(res: Result, opts: PlotOptions | None = None):
     if res.data.get("joint_force_a") is None:
         return None
     plt = _plt()
-    fig, axs = plt.subplots(4, 1, figsize=(8, 10), sharex=True)
+    fig, axs = plt.subplots(4, 1, figsize=(9, 10), sharex=True)
     t = res.time
     notes = []
     blocks = (("a", res.joint_force_a, "joint a (primary, upper)"), ("b", res.joint_force_b, "joint b (left secondary)"),
@@ -477,7 +570,7 @@ def fig_interface_loads(res: Result, opts: PlotOptions | None = None):
         ax.set_ylabel(f"|force| at {name} [kN]")
         ax.set_title(what, fontsize=9, loc="left")
         ax.grid(True, alpha=0.3)
-    axs[0].legend(fontsize=7, ncol=5)
+    _legend_right(fig, axs[0])
     axs[-1].set_xlabel("time [s]")
     _title(fig, res, "Interface loads on the body (a, b, c) and at the footpad (d)")
     fig.tight_layout(rect=(0, _footnote(fig, notes), 1, 1))

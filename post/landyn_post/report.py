@@ -32,12 +32,36 @@ def crush_table_lines(res: Result) -> list[str]:
 
 
 def footpad_table_lines(res: Result) -> list[str]:
+    """Per footpad: peak penetration, slide, peak normal force and (files with interface loads) the
+    peak |force| the footpad puts on the primary at d, with a note when the two peaks differ."""
+    pd = res.data.get("peak_joint_load/value")
     head = f"{'footpad':>7}{'peak penetration':>18}{'slide':>10}{'peak normal force':>19}"
-    lines = [head, f"{'':>7}{'[mm]':>18}{'[mm]':>10}{'[kN]':>19}", "-" * len(head)]
+    units = f"{'':>7}{'[mm]':>18}{'[mm]':>10}{'[kN]':>19}"
+    if pd is not None:
+        head += f"{'peak |force| at d':>19}"
+        units += f"{'[kN]':>19}"
+    lines = [head, units, "-" * len(head)]
     for i in range(res.n_gears):
         lines.append(f"{i + 1:>7}{res.peak_penetration[i] * MM:18.2f}{res.slide_distance[i] * MM:10.1f}"
-                     f"{res.peak_normal_force[i] / 1e3:19.1f}")
-    return lines
+                     f"{res.peak_normal_force[i] / 1e3:19.1f}" + (f"{pd[i, 3, 3] / 1e3:19.1f}" if pd is not None else ""))
+    return lines + footpad_peak_notes(res)
+
+
+def footpad_peak_notes(res: Result) -> list[str]:
+    """Why the peak ground force can exceed the peak force at the footpad joint d: the footpad's
+    own inertia takes the difference, largest in the short stiff-contact spikes of first contact."""
+    pd = res.data.get("peak_joint_load/value")
+    if pd is None:
+        return []
+    nf, fd = float(np.max(res.peak_normal_force)), float(np.max(pd[:, 3, 3]))
+    if nf <= fd * 1.05:
+        return []
+    return textwrap.wrap(
+        f"The peak ground normal force ({nf / 1e3:.1f} kN) exceeds the peak force at the footpad joint d "
+        f"({fd / 1e3:.1f} kN): d carries the ground force less the footpad's own inertia (mass x acceleration), "
+        "and the ground force peaks in short, stiff-contact spikes (touchdown and re-contacts, fractions of a "
+        "millisecond) that mostly accelerate the footpad instead of loading the strut. Both are peaks over "
+        "every time step; the strut and the body see the force at d.", 100)
 
 
 def touchdown_lines(res: Result) -> list[str]:
@@ -146,7 +170,10 @@ def run_summary_lines(res: Result) -> list[str]:
 
 
 def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tuple[str, bool] | None = None) -> None:
+    """The text pages: title, verdict banner and blocks of lines; a block that does not fit on the
+    page continues on the next one (nothing is cut at the page's foot)."""
     import matplotlib.pyplot as plt
+    bottom = 0.035
     fig = plt.figure(figsize=(8.27, 11.69))   # A4 portrait
     title_lines = textwrap.wrap(title, 75)
     fig.text(0.06, 0.965, "\n".join(title_lines), fontsize=12, weight="bold", va="top", linespacing=1.3)
@@ -157,11 +184,27 @@ def _text_page(pdf, title: str, blocks: list[tuple[str, list[str]]], banner: tup
                  bbox=dict(boxstyle="round,pad=0.4", ec="none",
                            fc={True: "#2e7d32", False: "#c62828"}.get(ok, "#b26a00")))
         y -= 0.04
+
+    def new_page(heading: str):
+        nonlocal fig, y
+        pdf.savefig(fig)
+        plt.close(fig)
+        fig = plt.figure(figsize=(8.27, 11.69))
+        fig.text(0.06, 0.965, f"{textwrap.shorten(title, 70)} (continued)", fontsize=9, color="0.4", va="top")
+        y = 0.935
+        if heading:
+            fig.text(0.06, y, heading + " (continued)", fontsize=10, weight="bold", va="top")
+            y -= 0.022
+
     for heading, lines in blocks:
+        if y - 0.022 - 0.0135 * min(len(lines), 3) < bottom:
+            new_page("")
         fig.text(0.06, y, heading, fontsize=10, weight="bold", va="top")
         y -= 0.022
         size = 7.5 if max((len(s) for s in lines), default=0) <= 100 else 6.5
         for line in lines:
+            if y - 0.0135 * size / 7.5 < bottom:
+                new_page(heading)
             fig.text(0.06, y, line, fontsize=size, family="monospace", va="top")
             y -= 0.0135 * size / 7.5
         y -= 0.012

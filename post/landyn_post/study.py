@@ -37,9 +37,23 @@ def read_study(path: str) -> dict:
         raise LandynFileError(f"{path}: not a complete landyn_study file (missing {exc})") from None
 
 
+PCT_BASE_MM = 10.0   #: a % deviation is quoted only where the first variant's crush is at least this [mm]
+
+
+def relative_deviation(crush: np.ndarray, min_base: float = PCT_BASE_MM / MM) -> np.ndarray:
+    """(n_options, n_variants - 1) deviation of every further variant from the first in % of the
+    first's |crush|, NaN where that is below `min_base` (m): 2.2 mm -> 32.7 mm is +1385 %, a number
+    that says nothing and dwarfs every other."""
+    base = crush[:, :1]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        pct = (crush[:, 1:] - base) / np.abs(base) * 100.0
+    return np.where(np.abs(base) >= min_base, pct, np.nan)
+
+
 def fig_study(st: dict):
     """Grouped bars: crush length of each measure option (x) for each variant, and below the
-    deviation of every further variant from the first in % (Table 10's Error/%)."""
+    deviation of every further variant from the first in mm (readable whatever the baseline; the
+    largest deviation in % over the options with a base of at least PCT_BASE_MM in the title)."""
     cli.use_agg()
     import matplotlib.pyplot as plt
     crush = st["crush"] * MM
@@ -57,15 +71,20 @@ def fig_study(st: dict):
             ax.plot(xs[bad], np.zeros(bad.sum()), "x", color="red", ms=8, mew=2)
     ax.axhline(0, color="k", lw=0.6)
     ax.set_ylabel("crush length [mm]\n(primary shortening, secondary lengthening +)")
-    ax.legend(fontsize=7, ncol=min(n_var, 4), loc="upper right")
+    ax.legend(fontsize=7, ncol=min(n_var, 4), loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False)
     ax.grid(True, axis="y", alpha=0.3)
-    base = crush[:, 0]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        dev = (crush[:, 1:] - base[:, None]) / np.abs(base[:, None]) * 100.0
+    dev = crush[:, 1:] - crush[:, :1]      # mm: readable whatever the baseline (a % explodes near 0)
     for j in range(1, n_var):
-        ax2.bar(x - 0.4 + w * (j + 0.5), dev[:, j - 1], w, color=f"C{j % 10}", edgecolor="k", lw=0.4)
+        ax2.bar(x - 0.4 + w * (j + 0.5), dev[:, j - 1], w, color=f"C{j % 10}", edgecolor="k", lw=0.4,
+                hatch=hatches[j // 10 % 8])
+    pct = relative_deviation(st["crush"])
+    big = np.nanmax(np.abs(pct)) if np.isfinite(pct).any() else 0.0
+    if n_var > 1:
+        ax2.set_title(f"deviation from '{textwrap.shorten(st['variants'][0], 30)}' in mm (a % explodes where the base "
+                      f"is near 0); in %, where the base is at least {PCT_BASE_MM:g} mm: largest {big:.1f} %",
+                      fontsize=8, loc="left")
     ax2.axhline(0, color="k", lw=0.6)
-    ax2.set_ylabel(f"deviation from\n'{textwrap.shorten(st['variants'][0], 24)}' [%]")
+    ax2.set_ylabel(f"deviation from\n'{textwrap.shorten(st['variants'][0], 24)}' [mm]")
     ax2.grid(True, axis="y", alpha=0.3)
     ax2.set_xticks(x)
     ax2.set_xticklabels([f"{k}\n{lc}\nG{g}{_STRUT_SHORT.get(s, '?')}" for k, lc, g, s in

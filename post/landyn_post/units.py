@@ -1,9 +1,10 @@
 """Units: conversion of reference units to LANDYN's channel units, and engineering plot units.
 
 LANDYN's channels are in SI except angles (deg, deg/s) and overload (g), see docs/output.md.
-``to_channel_units(value, unit, channel_unit)`` converts a value given in ``unit`` (e.g. 'mm',
-'kN', 'ms', 'rad/s', 'm/s^2') to the channel's unit and raises LandynPostError when the two
-are of different kinds.
+``unit_factor(unit, channel_unit)`` converts a value given in ``unit`` (e.g. 'mm', 'kN', 'ms',
+'rad/s', 'm/s^2') to the channel's unit and raises LandynPostError when the two are of different
+kinds; ``to_engineering(values, unit)`` gives SI values in the engineering units of plots and
+tables (mm, kN, kJ, kN m), as ``landyn-export --units engineering`` writes them.
 """
 from __future__ import annotations
 
@@ -65,3 +66,14 @@ def parse_quantity(text: str) -> tuple[float, str | None]:
 def engineering(channel_unit: str) -> tuple[str, float]:
     """(engineering unit, factor) for a channel unit: m -> mm, N -> kN, J -> kJ, others unchanged."""
     return ENGINEERING.get(channel_unit, (channel_unit, 1.0))
+
+
+def to_engineering(values, unit: str):
+    """(values, unit) in engineering units: lengths in mm, forces in kN, energies in kJ, moments
+    in kN m; velocities (m/s), angles (deg), rates (deg/s), overload (g), time (s) and
+    dimensionless values unchanged. For landyn-export --units engineering and landyn-compare."""
+    import numpy as np
+    eng, factor = engineering(unit)
+    if factor == 1.0:
+        return values, unit
+    return np.asarray(values) * factor, eng

@@ -24,7 +24,8 @@ def test_every_figure_and_report(lc1_short, tmp_path, run_tool):
     report = out / "lc1_short_report.pdf"
     assert report.read_bytes()[:5] == b"%PDF-"
     assert _pdf_pages(report) >= 2
-    assert _pdf_pages(report) == 1 + len(FIGURES)
+    # the text (conditions, verdict, tables, provenance) takes one or two pages, then one per figure
+    assert 1 + len(FIGURES) <= _pdf_pages(report) <= 2 + len(FIGURES)
 
 
 def test_figures_sloped_case_default_outdir(lc3_short, run_tool):

@@ -27,7 +27,7 @@ program landyn_batch
   character(len=120), parameter :: help_text(*) = [character(len=120) :: &
       'usage: mpirun -np N landyn_batch DECK [--resume | --force] [--stop-after N] [-o FILE]', &
       '                                      [--dedicated-master] [-q]', &
-      '       landyn_batch DECK --case K[:L] [-o FILE] [-q]', &
+      '       landyn_batch DECK --case K[:L] [--history] [-o FILE] [-q]', &
       '       landyn_batch --merge OUT IN...', &
       '       landyn_batch DECK --check | --list-cases', &
       '', &
@@ -45,10 +45,15 @@ program landyn_batch
       '  --dedicated-master  rank 0 only hands out cases (default: it runs cases too up to 16 ranks)', &
       '  --case K[:L]        without MPI: run cases K..L and write their rows to their own file', &
       '                      (default <summary>.case<K>.h5); for Slurm job arrays', &
+      '  --history           with --case: also write each case''s full time history (a landyn result', &
+      '                      file, <summary stem>_case<K, 6 digits>.h5), e.g. to re-run an outlier:', &
+      '                      landyn_batch DECK --case 137 --history -o outlier.h5', &
       '  --merge OUT IN...   without MPI: combine summary files of one campaign into OUT', &
       '  --check             validate the deck and describe the campaign; run nothing', &
       '  --list-cases        print every case''s inputs as CSV; run nothing', &
       '  -q, --quiet         no progress messages on stderr', &
+      '  -v, --verbose       also the time account on stderr (where each rank''s time went, per-case', &
+      '                      overhead; docs/campaign.md, "Scaling")', &
       '  -V, --version       print the version', &
       '  -h, --help          print this help', &
       '', &
@@ -61,6 +66,7 @@ program landyn_batch
   character(len=:), allocatable :: deck, arg, out_file, task, range_text
   character(len=1024), allocatable :: inputs(:)
   integer :: code, k1, k2, ios, p
+  logical :: history = .false.
 
   call app%start('landyn_batch', 'usage: landyn_batch DECK [options] | DECK --case K[:L] | --merge OUT IN... '// &
                  '(landyn_batch --help)', help_text)
@@ -78,6 +84,10 @@ program landyn_batch
       opts%force = .true.
     case ('--dedicated-master')
       opts%dedicated_master = .true.
+    case ('-v', '--verbose')
+      opts%verbose = .true.
+    case ('--history')
+      history = .true.
     case ('--check')
       call set_task('check')
     case ('--list-cases')
@@ -109,6 +119,8 @@ program landyn_batch
   opts%quiet = app%quiet
 
   code = EXIT_OK
+  if (history .and. task /= 'case') call app%die_usage('--history goes with --case K[:L] (the cases to re-run '// &
+                                                      'with their time histories)')
   call check_output_file()
   select case (task)
   case ('merge')
@@ -132,7 +144,7 @@ program landyn_batch
     end if
     if (ios /= 0 .or. verify(range_text, '0123456789:') /= 0) &
       call app%die_usage('--case needs a case id K or a range K:L, got '//range_text)
-    call run_case_range(deck, k1, k2, out_file, opts%quiet, opts%command_line, output_unit, error_unit, code)
+    call run_case_range(deck, k1, k2, out_file, opts%quiet, opts%command_line, output_unit, error_unit, code, history)
   case default
     call need_deck()
     opts%summary_file = out_file

@@ -149,6 +149,7 @@ program landyn_study_main
     call terminate(EXIT_FILE)
   end if
   call write_table(output_unit)
+  call write_outcomes(output_unit)
   write (output_unit, '(a)') 'Results written to '//h5_file//' and '//csv_file
   if (run_stat == status_failed) then
     write (error_unit, '(a)') 'landyn_study: some runs failed (status 3 in the result file)'
@@ -193,6 +194,31 @@ contains
       write (u, '(a)') ''
     end do
   end subroutine write_table
+
+  !> The outcome of every run on a unit: peak overload, largest tilt, tip-over, energy residual
+  !! and how the run ended (the figures the CSV and the result file hold besides the crush lengths).
+  subroutine write_outcomes(u)
+    integer, intent(in) :: u               !! output unit
+    integer :: c, vv
+    character(len=24) :: lab
+    write (u, '(a)') ''
+    write (u, '(a)') 'Run outcomes: peak overload at the mass centre [g], largest tilt [deg], energy audit residual [%]'
+    write (u, '(a)') '  case         variant                   overload [g]  max tilt [deg]  residual [%]  end'
+    do c = 1, study%n_cases
+      do vv = 1, study%n_variants
+        lab = study%variant(vv)%label(1:min(24, len_trim(study%variant(vv)%label)))
+        associate (r => study%run(c, vv))
+          if (r%status == status_failed) then
+            write (u, '(2x,a12,1x,a24,a)') study%case_label(c), lab, '        failed: '//trim(r%message)
+          else
+            write (u, '(2x,a12,1x,a24,f15.3,f16.2,f14.3,2x,a)') study%case_label(c), lab, r%peak_overload, &
+              r%max_tilt, 100.0_wp*r%energy_residual, trim(r%end_reason)//trim(merge(', TIPPED OVER', '             ', &
+              r%tipped_over))
+          end if
+        end associate
+      end do
+    end do
+  end subroutine write_outcomes
 
 
 

@@ -62,6 +62,7 @@ module landyn_campaign_parallel
     logical :: force = .false.                     !! overwrite an existing summary file [-]
     integer :: stop_after = 0                      !! stop (as if killed) after this many rows; 0: never [-]
     logical :: quiet = .false.                     !! no progress lines [-]
+    logical :: verbose = .false.                   !! the time account on the message unit [-]
     logical :: dedicated_master = .false.          !! rank 0 only hands out cases [-]
     character(len=:), allocatable :: summary_file  !! summary file ('' : the deck's) [-]
     character(len=:), allocatable :: command_line  !! the command line, recorded in the files [-]
@@ -227,11 +228,13 @@ contains
         return
       end if
       call delete_file(journal, st2, msg)
-      ! performance first, the result last: its final line counts the failures per criterion
-      if (n_session > 0 .and. t1 > t0) write (out_u, '(a)') 'this run: '//int_text(n_session)//' cases in '// &
-        real_text_short(t1 - t0)//' s on '//int_text(nranks)//' rank(s) = '// &
-        int_text(nint(real(n_session, wp)*3600.0_wp/((t1 - t0)*real(nranks, wp))))//' cases per core-hour'
-      if (n_session > 0) call report_profile(prof_all, out_u)
+      ! speed and (--verbose) the time account are diagnostics: on the message unit, before the
+      ! result on out_u, whose final line counts the failures per criterion
+      if (n_session > 0 .and. t1 > t0 .and. (opts%verbose .or. .not. opts%quiet)) write (err_u, '(a)') &
+        'landyn_batch: this run: '//int_text(n_session)//' cases in '//real_text_short(t1 - t0)//' s on '// &
+        int_text(nranks)//' rank(s) = '//int_text(nint(real(n_session, wp)*3600.0_wp/((t1 - t0)*real(nranks, wp))))// &
+        ' cases per core-hour'
+      if (n_session > 0 .and. opts%verbose) call report_profile(prof_all, err_u)
       write (out_u, '(a)') 'LANDYN campaign '//deck//' ('//trim(camp%mode)//'): '//int_text(size(rows))//' of '// &
         int_text(camp%n_cases)//' cases in '//summary
       call report_probability(rows, camp%crit%failed_runs, out_u)

@@ -113,12 +113,14 @@ contains
   end function part_file_name
 
   !> `--case k1[:k2]`: run cases k1..k2 one after the other and write their rows to a summary
-  !! file of their own (out_file, or part_file_name when empty).
-  subroutine run_case_range(deck, k1, k2, out_file, quiet, command_line, out_u, err_u, code)
+  !! file of their own (out_file, or part_file_name when empty); with `history` (`--history`)
+  !! every one of them also writes its full time history (as if named in save_histories).
+  subroutine run_case_range(deck, k1, k2, out_file, quiet, command_line, out_u, err_u, code, history)
     character(len=*), intent(in) :: deck          !! campaign deck [-]
     integer, intent(in) :: k1, k2                 !! case range [-]
     character(len=*), intent(in) :: out_file      !! output file ('' for the default) [-]
     logical, intent(in) :: quiet                  !! no progress lines [-]
+    logical, intent(in), optional :: history      !! write every case's time history [-]
     character(len=*), intent(in) :: command_line  !! for the files written [-]
     integer, intent(in) :: out_u                  !! unit for the result lines [-]
     integer, intent(in) :: err_u                  !! unit for messages and progress [-]
@@ -128,6 +130,9 @@ contains
     type(summary_meta_t) :: meta
     character(len=:), allocatable :: path
     integer :: id
+    logical :: all_histories
+    all_histories = .false.
+    if (present(history)) all_histories = history
     call load_or_report(deck, camp, err_u, code)
     if (code /= EXIT_OK) return
     if (k1 < 1 .or. k2 > camp%n_cases .or. k1 > k2) then
@@ -142,8 +147,12 @@ contains
     allocate (rows(k2 - k1 + 1))
     do id = k1, k2
       if (.not. quiet) write (err_u, '(a)') 'landyn_batch: running case '//int_text(id)//' of '//int_text(camp%n_cases)
-      call run_case(camp, id, any(camp%save_histories == id), command_line, rows(id - k1 + 1))
+      call run_case(camp, id, all_histories .or. any(camp%save_histories == id), command_line, rows(id - k1 + 1))
       call report_row(rows(id - k1 + 1), camp%n_cases, out_u)
+      if (len(rows(id - k1 + 1)%history_file) > 0) write (out_u, '(a)') '  time history of case '//int_text(id)// &
+        ' written to '//rows(id - k1 + 1)%history_file
+      if (all_histories .and. len(rows(id - k1 + 1)%history_file) == 0) write (err_u, '(a)') &
+        'landyn_batch: case '//int_text(id)//': no time history (the case did not run to a result)'
     end do
     meta = meta_from_campaign(camp)
     call write_rows(path, meta, rows, command_line, err_u, code)

@@ -36,6 +36,9 @@ contains
           merge(' BOTTOMED OUT', '             ', res%bottomed(k, i) == 1)
       end do
     end do
+    write (u, '(a)') '  (crush: final net length, primary shortening and secondary lengthening +; (+), (-): lengths'
+    write (u, '(a)') '   crushed toward each sense; margin: stroke left before the strut bottoms out; peak force: over every'
+    write (u, '(a)') '   time step; switches: changes of the crush mode, locked <-> crushing + <-> crushing -)'
     write (u, '(a)') ''
     write (u, '(a)') '  footpad  peak penetration [mm]  slide [m]  peak normal force [kN]'
     do i = 1, res%n_gears
@@ -50,6 +53,10 @@ contains
         res%load_peaks%time(4, k, i), ')', k = 1, 4)
     end do
     write (u, '(a)') '  (per component, with the simultaneous loads: /summary/peak_joint_load, landyn-export --tables)'
+    if (maxval(res%peak_normal_force) > 1.05_wp*maxval(res%load_peaks%value(4, 4, :))) then
+      write (u, '(a)') '  (the ground normal force peaks above the force at d in short stiff-contact spikes: d carries the'
+      write (u, '(a)') '   ground force less the footpad''s own inertia, which takes most of such a spike)'
+    end if
     write (u, '(a)') ''
     write (u, '(a,f8.3,a,f8.4,a)') '  peak overload at the mass centre ', res%peak_overload, ' g at t = ', &
       res%t_peak_overload, ' s'

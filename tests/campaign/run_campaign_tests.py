@@ -255,6 +255,15 @@ def test_case_merge(env):
     check("belongs to another campaign" in p.stderr and not os.path.exists(env.path("x.h5")),
           "files of another campaign are refused")
     env.serial("mc.nml", "--case", "7", expect=1)
+    # --history: re-run one case with its full time history, as landyn would (issue 24)
+    p = env.serial("mc.nml", "--case", "4", "--history", "-q", "-o", "again4.h5")
+    check("time history of case 4 written to again4_case000004.h5" in p.stdout
+          and os.path.isfile(env.path("again4_case000004.h5")), "--case 4 --history writes case 4's time history")
+    with h5py.File(env.path("again4_case000004.h5"), "r") as f, h5py.File(env.path("mpi.h5"), "r") as m:
+        k = list(m["cases/case_id"][()]).index(4)
+        check(f["summary/peak_overload"][()] == m["cases/peak_overload"][k],
+              "the re-run's history has the campaign row's peak overload")
+    env.serial("mc.nml", "--history", expect=1)
 
 
 def test_bad_deck(env):
@@ -299,8 +308,10 @@ def test_time_account(env):
     import re
     for ranks, extra in ((1, []), (2, []), (3, ["--dedicated-master"])):
         out = f"acct_np{ranks}.h5"
-        p = env.mpi(ranks, "mc.nml", "-o", out, "-q", *extra)
-        m = re.search(r"time account \[s\] \(rank 0 \| all ranks\): (.*) \| (.*)", p.stdout)
+        p = env.mpi(ranks, "mc.nml", "-o", out, "-q", "--verbose", *extra)
+        check("time account" not in p.stdout and "book_cpu" not in p.stdout,
+              f"{ranks} rank(s): the time account is not in the result on stdout")
+        m = re.search(r"time account \[s\] \(rank 0 \| all ranks\): (.*) \| (.*)", p.stderr)
         check(m is not None, f"{ranks} rank(s): time account printed")
         r0, tot = ({k: float(v) for k, v in re.findall(r"(\w+)=([-+0-9.Ee]+)", g)} for g in m.groups())
         f = h5py.File(env.path(out), "r")
@@ -313,8 +324,10 @@ def test_time_account(env):
                   f"{ranks} rank(s), {name}: the parts ({parts:.4f} s) fit into the loop ({acc['loop']:.4f} s)")
         if "--dedicated-master" in extra:
             check(r0["cases"] == 0 and r0["sim"] == 0.0, "a dedicated rank 0 runs no case")
-        check(re.search(r"rank time: simulating [0-9.]+ %", p.stdout) is not None, f"{ranks} rank(s): rank time line")
+        check(re.search(r"rank time: simulating [0-9.]+ %", p.stderr) is not None, f"{ranks} rank(s): rank time line")
     env.same("acct_np1.h5", "acct_np3.h5")
+    p = env.mpi(1, "mc.nml", "-o", "acct_quiet.h5", "-q")
+    check("time account" not in p.stdout + p.stderr, "without --verbose: no time account")
 
 
 TESTS = {"grid": test_grid, "monte_carlo": test_monte_carlo, "resume": test_resume, "failing": test_failing,

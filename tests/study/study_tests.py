@@ -60,6 +60,9 @@ def t_small_study(study_exe, exe, src, d):
           "the HDF5 file and the CSV are written")
     check("[8/8]" in err, "progress names each of the 8 runs")
     check("Crush lengths [mm]" in out, "the table is printed")
+    outcome = [ln for ln in out.splitlines() if ln.startswith("  LC-") and "end time reached" in ln]
+    check("Run outcomes: peak overload" in out and len(outcome) == 8,
+          "the outcome of each of the 8 runs (overload, tilt, residual, end) is printed (%d lines)" % len(outcome))
     if FAILS:
         return
     labels = ["Base result", "Hertz", "TY-1, stick", "eta"]
