@@ -47,6 +47,10 @@ def file_kind(path: str) -> str:
         ver = _text(f.attrs.get("schema_version", ""))
         prod = _text(f.attrs.get("producer", ""))
         if ver == CAMPAIGN_SCHEMA:
+            missing = [g for g in ("campaign", "parameters", "cases") if not isinstance(f.get(g), h5py.Group)]
+            if missing:
+                raise LandynPostError(f"{path}: a campaign summary without /{', /'.join(missing)}: the file is "
+                                      "damaged or incomplete")
             return "campaign"
         if ver.split(".")[0] == "1":
             return "run"
