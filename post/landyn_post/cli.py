@@ -142,13 +142,16 @@ def output_dir(path: str) -> str:
     return path
 
 
-def refuse_overwrite(out: str, inputs) -> None:
+def refuse_overwrite(out: str, inputs, hdf5: bool = False) -> None:
     """Raises LandynWriteError (exit 4) when the output path is one of the input files, also through
-    a link or another name (never overwrite input), or is otherwise refused by output_problem."""
+    a link or another name (never overwrite input), or is otherwise refused by output_problem
+    (hdf5: the output is an HDF5 file)."""
     for p in inputs:
         if p and os.path.exists(out) and os.path.exists(p) and os.path.samefile(out, p):
             raise LandynWriteError(f"{out}: is an input file; refusing to overwrite it (choose another output name)")
-    why = output_problem(out)
+    # an existing directory is an output directory here (--tables DIR, --plots DIR): output_dir
+    # checks it; a file written where a directory is would be refused by atomic_output
+    why = "" if os.path.isdir(out) else output_problem(out, hdf5=hdf5)
     if why:
         raise LandynWriteError(why)
 
@@ -156,12 +159,13 @@ def refuse_overwrite(out: str, inputs) -> None:
 _HDF5_SIGNATURE = b"\x89HDF\r\n\x1a\n"
 
 
-def output_problem(path: str, directory: bool = False) -> str:
+def output_problem(path: str, directory: bool = False, hdf5: bool = False) -> str:
     """Why the output `path` may not be written ('' when it may): the policy of docs/files.md.
 
     A missing name is fine; an existing one must be a writable regular file (a directory with
     directory=True) that is not an HDF5 file: a figure or a table never replaces a result, a study
-    or a campaign, and nothing is written into a device, a fifo or a read-only file.
+    or a campaign, and nothing is written into a device, a fifo or a read-only file. An HDF5 output
+    (hdf5=True: the XDMF mesh file) replaces only an HDF5 file, as the Fortran programs' results.
     """
     if not path or not path.strip():
         return "empty output file name"
@@ -186,17 +190,20 @@ def output_problem(path: str, directory: bool = False) -> str:
             head = fh.read(8)
     except OSError as exc:
         return f"{path}: cannot examine it ({exc.strerror})"
-    if head == _HDF5_SIGNATURE:
+    if hdf5 and head != _HDF5_SIGNATURE:
+        return f"{path}: exists and is not an HDF5 file; refusing to replace it"
+    if not hdf5 and head == _HDF5_SIGNATURE:
         return f"{path}: exists and is an HDF5 file (a result, study or campaign?); refusing to replace it"
     return ""
 
 
 @contextlib.contextmanager
-def atomic_output(path: str, mode: str = "w", **kw):
+def atomic_output(path: str, mode: str = "w", hdf5: bool = False, **kw):
     """Writes `path` under a temporary name in the same directory and renames it when the block
     completes, so that a file named `path` is always complete. Yields an open file (mode 'w'/'wb')
-    or, with mode=None, the temporary path for writers that open files themselves."""
-    why = output_problem(path)
+    or, with mode=None, the temporary path for writers that open files themselves. hdf5: the file
+    written is HDF5 (output_problem)."""
+    why = output_problem(path, hdf5=hdf5)
     if why:
         raise LandynWriteError(why)
     d = os.path.dirname(os.path.abspath(path))

@@ -403,7 +403,7 @@ def write_xdmf(path: str, res) -> list[str]:
     foot = res.footpad_position * np.array([1.0, -1.0, -1.0])
     heavy = os.path.splitext(path)[0] + "_mesh.h5"
     hname = os.path.basename(heavy)
-    with cli.atomic_output(heavy, mode=None) as tmp:
+    with cli.atomic_output(heavy, mode=None, hdf5=True) as tmp:
         with h5py.File(tmp, "w") as f:
             f.attrs["producer"] = "landyn-export --xdmf"
             f.attrs["source"] = os.path.abspath(res.path)

@@ -168,3 +168,20 @@ def test_outputs_follow_the_file_policy(lc1_short, grid_campaign, tmp_path, run_
     d = tmp_path / "adir"
     d.mkdir()
     _one_error(run_tool("export", lc1_short, "-o", d, cwd=tmp_path), 4, "directory")
+
+
+def test_export_replaces_its_own_outputs_but_never_an_input(lc1_short, tmp_path, run_tool):
+    """--tables DIR is a directory output; the XDMF mesh (HDF5) replaces the previous mesh, never an input."""
+    src = _copy(lc1_short, tmp_path, "r.h5")
+    for _ in range(2):                                      # a second run replaces the first one's files
+        r = run_tool("export", src, "--tables", "--mat", "--xdmf", cwd=tmp_path)
+        assert r.returncode == 0, r
+    assert (tmp_path / "r_mesh.h5").is_file() and (tmp_path / "r_tables").is_dir()
+    m = _copy(lc1_short, tmp_path, "a_mesh.h5")
+    before = m.read_bytes()
+    _one_error(run_tool("export", m, "--xdmf", "a.xdmf", cwd=tmp_path), 4, "input")
+    assert m.read_bytes() == before
+    notes = tmp_path / "n_mesh.h5"
+    notes.write_text("my notes\n")                          # an HDF5 output never replaces text
+    _one_error(run_tool("export", src, "--xdmf", "n.xdmf", cwd=tmp_path), 4, "not an HDF5 file")
+    assert notes.read_text() == "my notes\n"
