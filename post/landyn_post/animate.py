@@ -163,11 +163,11 @@ def _main(argv=None) -> int:
                    help="output file (.mp4, .gif; .png with --still); default <stem>_animation.mp4/.gif "
                         "or <stem>_t<T>.png")
     p.add_argument("--still", type=float, metavar="T", help="write one PNG frame at time T [s] instead")
-    p.add_argument("--frames", type=int, default=100, help="number of frames (default 100, spread over the run)")
-    p.add_argument("--fps", type=float, default=20.0, help="frames per second (default 20)")
+    p.add_argument("--frames", type=cli.positive_int, default=100, help="number of frames (default 100, spread over the run)")
+    p.add_argument("--fps", type=cli.positive_float, default=20.0, help="frames per second (default 20)")
     p.add_argument("--elev", type=float, default=18.0, help="camera elevation [deg] (default 18)")
     p.add_argument("--azim", type=float, default=-55.0, help="camera azimuth [deg] (default -55)")
-    p.add_argument("--dpi", type=int, default=None, help="resolution (default 100 still, 72 animation)")
+    p.add_argument("--dpi", type=cli.positive_int, default=None, help="resolution (default 100 still, 72 animation)")
     a = p.parse_args(argv)
     if a.frames < 2:
         p.error("--frames must be >= 2")
@@ -177,9 +177,12 @@ def _main(argv=None) -> int:
     base = cli.stem(a.file)
     if a.still is not None:
         out = a.output or f"{base}_t{a.still:.3f}.png"
+        cli.figure_format(out)
+        cli.refuse_overwrite(out, [a.file])
         print(write_still(res, a.still, out, a.elev, a.azim, a.dpi or 100))
     else:
         out = a.output or base + ("_animation.mp4" if shutil.which("ffmpeg") else "_animation.gif")
+        cli.refuse_overwrite(out, [a.file])
         print(write_animation(res, out, a.frames, a.fps, a.elev, a.azim, a.dpi or 72))
     return cli.EXIT_OK
 

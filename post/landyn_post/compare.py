@@ -1039,6 +1039,14 @@ def _main(argv=None) -> int:
         rms_tol = RmsTolerances.parse(a.tol_rms, a.rtol_rms)
     except LandynPostError as exc:
         p.error(str(exc))
+    # the output-file policy (docs/files.md) before any work: never replace an input
+    inputs = [a.result, a.reference, a.map]
+    if a.table_csv:
+        stem_, ext_ = os.path.splitext(a.table_csv)
+        for out in (a.table_csv, stem_ + "_timeseries" + (ext_ or ".csv")):
+            cli.refuse_overwrite(out, inputs)
+    if a.plots and not os.path.isdir(a.plots):
+        cli.refuse_overwrite(a.plots, inputs)
 
     res = load(a.result)
     rows: list[CrushRow] = []

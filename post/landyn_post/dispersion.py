@@ -100,17 +100,20 @@ def text(x):
     return "" if s == "(none)" else s
 
 
-def main(argv=None):
+def _main(argv=None):
     ap = cli.make_parser("landyn-dispersion", __doc__)
     ap.add_argument("summary", help="summary file of a campaign (landyn_batch)")
     ap.add_argument("-o", "--output", help="figure file (default <summary stem>_statistics.png)")
     ap.add_argument("--inputs", action="store_true", help="also histogram the sampled inputs")
     ap.add_argument("--sensitivity", action="store_true",
                     help="also write <stem>_sensitivity.png: inputs vs margin and overload, rank correlations")
-    ap.add_argument("--bins", type=int, default=0, help="histogram bins (default: about sqrt(cases))")
-    ap.add_argument("--dpi", type=int, default=150)
+    ap.add_argument("--bins", type=cli.nonnegative_int, default=0, help="histogram bins (default: about sqrt(cases))")
+    ap.add_argument("--dpi", type=cli.positive_int, default=150)
     ap.add_argument("--title")
     a = ap.parse_args(argv)
+    if a.output:                      # before the work: never an input, and a format matplotlib writes
+        cli.refuse_overwrite(a.output, [a.summary])
+        cli.figure_format(a.output)
     try:
         f = h5py.File(a.summary, "r")
     except OSError as exc:
@@ -345,3 +348,8 @@ def _wrap(label: str, width: int) -> str:
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+def main(argv=None):
+    """landyn-dispersion: one error line and exit status 2 for any input it cannot process."""
+    return cli.run("landyn-dispersion", _main, argv)

@@ -137,7 +137,7 @@ def envelope(xs, ys, ok):
     return out
 
 
-def main(argv=None):
+def _main(argv=None):
     ap = cli.make_parser("landyn-envelope", __doc__)
     ap.add_argument("summary", help="summary file of a grid campaign (landyn_batch)")
     ap.add_argument("-o", "--output", help="figure file (default <summary stem>_stability.png)")
@@ -147,9 +147,12 @@ def main(argv=None):
                     help="contoured metric (default min_stroke_margin)")
     ap.add_argument("--fix", action="append", default=[], metavar="LABEL=VALUE",
                     help="hold another grid parameter at a value instead of taking its worst case")
-    ap.add_argument("--dpi", type=int, default=150)
+    ap.add_argument("--dpi", type=cli.positive_int, default=150)
     ap.add_argument("--title")
     a = ap.parse_args(argv)
+    if a.output:                      # before the work: never an input, and a format matplotlib writes
+        cli.refuse_overwrite(a.output, [a.summary])
+        cli.figure_format(a.output)
     try:
         d = load(a.summary)
         if d["mode"] != "grid":
@@ -221,9 +224,9 @@ def main(argv=None):
     out = a.output or os.path.splitext(os.path.basename(a.summary))[0] + "_stability.png"
     try:
         cli.refuse_overwrite(out, [a.summary])
-    except cli.LandynPostError as exc:
+    except cli.LandynWriteError as exc:
         print(f"landyn-envelope: error: {exc}", file=sys.stderr)
-        return cli.EXIT_ERROR
+        return cli.EXIT_WRITE
     fig.tight_layout()
     try:
         cli.savefig(fig, out, dpi=a.dpi)
@@ -241,3 +244,8 @@ def main(argv=None):
 
 if __name__ == "__main__":
     sys.exit(main())
+
+
+def main(argv=None):
+    """landyn-envelope: one error line and exit status 2 for any input it cannot process."""
+    return cli.run("landyn-envelope", _main, argv)

@@ -57,6 +57,10 @@ def file_kind(path: str) -> str:
         ver = _text(f.attrs.get("schema_version", ""))
         prod = _text(f.attrs.get("producer", ""))
         if ver == CAMPAIGN_SCHEMA:
+            missing = [g for g in ("campaign", "parameters", "cases") if not isinstance(f.get(g), h5py.Group)]
+            if missing:
+                raise LandynPostError(f"{path}: a campaign summary without /{', /'.join(missing)}: the file is "
+                                      "damaged or incomplete")
             return "campaign"
         if ver.split(".")[0] == "1":
             return "run"
@@ -510,7 +514,7 @@ def write_xdmf(path: str, res) -> list[str]:
     foot = res.footpad_position * np.array([1.0, -1.0, -1.0])
     heavy = os.path.splitext(path)[0] + "_mesh.h5"
     hname = os.path.basename(heavy)
-    with cli.atomic_output(heavy, mode=None) as tmp:
+    with cli.atomic_output(heavy, mode=None, hdf5=True) as tmp:
         with h5py.File(tmp, "w") as f:
             f.attrs["producer"] = "landyn-export --xdmf"
             f.attrs["source"] = os.path.abspath(res.path)

@@ -154,7 +154,9 @@ def _main(argv=None) -> int:
     if a.mat is not None:
         written.append(write_mat(out_path(a.mat, base + ".mat"), a.file, a.units))
     if a.xdmf is not None:
-        written += write_xdmf(out_path(a.xdmf, base + ".xdmf"), res)
+        xdmf = out_path(a.xdmf, base + ".xdmf")
+        cli.refuse_overwrite(os.path.splitext(xdmf)[0] + "_mesh.h5", [a.file], hdf5=True)   # its heavy data
+        written += write_xdmf(xdmf, res)
     for fn in written:
         print(fn)
     return cli.EXIT_OK

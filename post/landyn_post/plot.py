@@ -668,7 +668,7 @@ def _main(argv=None) -> int:
     p.add_argument("-o", "--outdir", metavar="OUTDIR", help="output directory (default: <FILE stem>_plots)")
     p.add_argument("--format", nargs="+", choices=("png", "pdf"), default=["png"], metavar="{png,pdf}",
                    help="figure format(s), e.g. --format png pdf (default png)")
-    p.add_argument("--dpi", type=int, default=120, help="PNG resolution (default 120)")
+    p.add_argument("--dpi", type=cli.positive_int, default=120, help="PNG resolution (default 120)")
     p.add_argument("--only", nargs="+", choices=[n for n, _, _ in FIGURES], metavar="NAME",
                    help="write only these figures")
     p.add_argument("--report", action="store_true",

@@ -678,22 +678,36 @@ def load(path: str | os.PathLike) -> Result:
             if d.path not in f:
                 raise LandynFileError(f"{path}: missing dataset {d.path} (schema {ver}); "
                                       "the file is incomplete or not a LANDYN result")
-            obj = f[d.path]
+            try:
+                obj = f[d.path]
+            except (KeyError, OSError, ValueError) as exc:     # a damaged link or object header
+                raise LandynFileError(f"{path}: cannot read {d.path}: the file is damaged ({exc})") from None
             if not isinstance(obj, h5py.Dataset):
                 raise LandynFileError(f"{path}: {d.path} is a group, expected a dataset")
-            raw = obj[()]
-            if d.kind == "text" and np.ndim(raw) >= 1:
-                data[d.key] = tuple(_text(x) for x in np.ravel(raw))     # a list of names
-            elif d.kind == "text":
-                data[d.key] = _text(raw)
-            elif d.kind == "bool":
-                data[d.key] = bool(np.asarray(raw).item())
-            elif d.kind == "int":
-                data[d.key] = np.asarray(raw).astype(int) if np.ndim(raw) else int(raw)
-            else:
-                data[d.key] = np.asarray(raw, dtype=float) if np.ndim(raw) else float(raw)
+            data[d.key] = _read_dataset(path, d, obj)
     _check_shapes(path, data)
     return Result(path, attrs, data)
+
+
+def _read_dataset(path: str, d: DatasetSpec, obj):
+    """The value of dataset `obj` as `d` describes it; LandynFileError when it cannot be read (a
+    truncated or damaged file) or is not of its kind (text where numbers belong, say)."""
+    try:
+        raw = obj[()]
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise LandynFileError(f"{path}: cannot read {d.path}: the file is truncated or damaged ({exc})") from None
+    if d.kind != "text" and np.asarray(raw).dtype.kind not in "biuf":
+        raise LandynFileError(f"{path}: {d.path} holds {np.asarray(raw).dtype} data, expected numbers "
+                              f"({d.kind}); the file is damaged or not a LANDYN result")
+    if d.kind == "text" and np.ndim(raw) >= 1:
+        return tuple(_text(x) for x in np.ravel(raw))     # a list of names
+    if d.kind == "text":
+        return _text(raw)
+    if d.kind == "bool":
+        return bool(np.asarray(raw).item())
+    if d.kind == "int":
+        return np.asarray(raw).astype(int) if np.ndim(raw) else int(raw)
+    return np.asarray(raw, dtype=float) if np.ndim(raw) else float(raw)
 
 
 def _minor(version: str) -> int:

@@ -93,7 +93,7 @@ def test_run_tables_and_no_overwrite(lc1_short, tmp_path, run_tool):
     assert sc["/meta/git_revision"]["value"] == res.git_revision       # provenance travels along
     before = lc1_short.read_bytes()
     r = run_tool("export", lc1_short, "--mat", lc1_short)
-    assert r.returncode == 2 and "refusing to overwrite" in r.stderr, r
+    assert r.returncode == 4 and "refusing to overwrite" in r.stderr, r   # the output-file policy: exit 4
     assert lc1_short.read_bytes() == before
 
 
@@ -220,7 +220,7 @@ def test_envelope_installed_tool(grid_campaign, tmp_path, run_tool):
     assert out.stat().st_size > 20000
     assert "largest initial_state.velocity_1" in r.stdout
     r = run_tool("envelope", grid_campaign, "-o", grid_campaign)
-    assert r.returncode == 2 and "refusing to overwrite" in r.stderr
+    assert r.returncode == 4 and "refusing to overwrite" in r.stderr   # the output-file policy: exit 4
 
 
 def test_input_labels():

@@ -11,11 +11,12 @@
 !! is run as landyn runs it (landyn_run): its status in the result file has landyn's meaning.
 program landyn_study_main
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, &
                           status_no_touchdown, strut_names
-  use landyn_study_output, only: write_study_csv, write_study_h5
+  use landyn_study_output, only: write_study_csv, write_study_h5, table_value
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH, &
@@ -184,10 +185,12 @@ contains
         study%measure(2, m), strut_names(study%measure(3, m))
       do vv = 1, study%n_variants
         associate (r => study%run(study%measure(1, m), vv))
-          if (r%status == status_ok) then
-            write (u, '(f15.1)', advance='no') 1000.0_wp*r%crush(study%measure(3, m), study%measure(2, m))
-          else
+          if (r%status /= status_ok) then
             write (u, '(a15)', advance='no') 'failed'
+          else if (ieee_is_nan(table_value(study, m, vv))) then
+            write (u, '(a15)', advance='no') 'no such gear'   ! a variant that changes gears%n_gears
+          else
+            write (u, '(f15.1)', advance='no') 1000.0_wp*table_value(study, m, vv)
           end if
         end associate
       end do

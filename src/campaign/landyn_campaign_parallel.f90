@@ -49,7 +49,8 @@ module landyn_campaign_parallel
                                    results_init, results_add, results_rows, results_missing, &
                                    results_take_rows
   use landyn_campaign_journal, only: journal_open, journal_append, journal_flush, journal_read
-  use landyn_status, only: STAT_FAILED, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_files, only: lock_file, unlock_file
+  use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_tasks, only: load_or_report, report_probability, report_row
   implicit none
   private
@@ -132,8 +133,8 @@ contains
     type(input_errors_t) :: errors
     type(results_t) :: table
     type(summary_meta_t) :: meta
-    character(len=:), allocatable :: deck_name, deck_text, base_text, list_text, summary, journal
-    integer :: rank, nranks, st, ju, n_session
+    character(len=:), allocatable :: deck_name, deck_text, base_text, list_text, summary, journal, lock_why
+    integer :: rank, nranks, st, ju, n_session, lock
     logical :: stopped
     real(wp) :: t0, t1
     real(wp) :: prof(n_prof)
@@ -144,6 +145,7 @@ contains
     call MPI_Comm_size(MPI_COMM_WORLD, nranks)
     code = EXIT_OK
     ju = -1
+    lock = -1
     if (rank == 0) then
       call load_or_report(deck, camp, err_u, code)
       if (code == EXIT_OK) then
@@ -151,7 +153,17 @@ contains
         if (len(summary) == 0) summary = camp%summary_file
         journal = summary//'.journal'
         meta = meta_from_campaign(camp)
-        call prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
+        ! one process per campaign: two resumes of one journal would both append to it and
+        ! both write the summary file (the kernel releases the lock when the process ends)
+        call lock_file(summary//'.lock', lock, st, lock_why)
+        if (st /= STAT_OK) then
+          write (err_u, '(a)') 'landyn_batch: the campaign of '//summary//' is in use: '//summary//'.lock: '// &
+            lock_why//'; wait for that run to end (a killed run leaves no lock held)'
+          code = EXIT_FILE
+        else
+          call prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
+          if (code /= EXIT_OK) call unlock_file(summary//'.lock', lock)
+        end if
       end if
     end if
     call MPI_Bcast(code, 1, MPI_INTEGER, 0, MPI_COMM_WORLD)
@@ -197,7 +209,10 @@ contains
     allocate (prof_all(n_prof, merge(nranks, 1, rank == 0)))
     call MPI_Gather(prof, n_prof, MPI_DOUBLE_PRECISION, prof_all, n_prof, MPI_DOUBLE_PRECISION, 0, MPI_COMM_WORLD)
 
-    if (rank == 0) call finish(code)
+    if (rank == 0) then
+      call finish(code)
+      call unlock_file(summary//'.lock', lock)
+    end if
     call MPI_Finalize()
     if (rank /= 0) code = EXIT_OK
 

@@ -17,6 +17,10 @@
 !!   An existing writable result (HDF5, or a CSV table for landyn_study's --csv) is replaced; the
 !!   programs say so on stderr.
 !!
+!! * lock_file / unlock_file: an exclusive advisory lock (flock(2)) on a lock file, held until
+!!   unlock_file or the end of the process (also a killed one: the kernel releases it), so that two
+!!   processes never work on one campaign at once.
+!!
 !! Library code: nothing here stops or prints.
 module landyn_files
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long_long, c_null_char
@@ -27,7 +31,7 @@ module landyn_files
 
   public :: read_whole_file, normalize_line_ends, file_kind, output_file_problem
   public :: kind_missing, kind_regular, kind_directory, kind_other, kind_unknown
-  public :: base_name
+  public :: base_name, lock_file, unlock_file
 
   integer, parameter :: kind_unknown = -1   !! cannot tell (permission denied on the way, ...)
   integer, parameter :: kind_missing = 0    !! no such file
@@ -47,6 +51,22 @@ module landyn_files
       integer(c_long_long), intent(out) :: dev, ino              !! device and inode: the file's identity [-]
       integer(c_int), intent(out) :: writable                    !! 1: a write permission bit is set [-]
     end subroutine c_file_info
+
+    !> flock(2) of a lock file (landyn_fileinfo.c): 0 locked, 1 held by another process, -1 error.
+    function c_lock_file(path, fd, holder) bind(C, name='landyn_lock_file') result(rc)
+      import :: c_char, c_int, c_long_long
+      character(kind=c_char), dimension(*), intent(in) :: path   !! NUL-terminated file name [-]
+      integer(c_int), intent(out) :: fd                          !! descriptor holding the lock [-]
+      integer(c_long_long), intent(out) :: holder                !! pid of the holder when busy, 0 unknown [-]
+      integer(c_int) :: rc                                       !! 0, 1 or -1 [-]
+    end function c_lock_file
+
+    !> Remove the lock file and release its lock (landyn_fileinfo.c).
+    subroutine c_unlock_file(path, fd) bind(C, name='landyn_unlock_file')
+      import :: c_char, c_int
+      character(kind=c_char), dimension(*), intent(in) :: path   !! NUL-terminated file name [-]
+      integer(c_int), value :: fd                                !! descriptor holding the lock [-]
+    end subroutine c_unlock_file
   end interface
 
 contains
@@ -185,19 +205,37 @@ contains
     yes = da == db .and. ia == ib
   end function same_file
 
-  !> True when the file starts with the HDF5 signature.
+  !> True when the file starts with an HDF5 superblock: the 8-byte signature, then a superblock
+  !! version 0 to 3 with sizes of offsets and lengths of 2, 4, 8 or 16 bytes (and, for versions 0
+  !! and 1, the zero version and reserved bytes of the format specification, section II.A). Text
+  !! that merely begins with the signature is refused. Written here rather than with the HDF5
+  !! library because core/ does not use HDF5, and H5Fis_hdf5 checks the signature only.
   function is_hdf5_file(path) result(yes)
     character(len=*), intent(in) :: path   !! file name [-]
-    logical :: yes                         !! HDF5 signature found [-]
-    character(len=8) :: sig
-    integer :: u, ios
+    logical :: yes                         !! HDF5 superblock found [-]
+    character(len=16) :: head
+    integer :: u, ios, version, so, sl, k
     yes = .false.
     open (newunit=u, file=path, access='stream', form='unformatted', action='read', status='old', iostat=ios)
     if (ios /= 0) return
-    read (u, iostat=ios) sig
+    read (u, iostat=ios) head
     close (u)
     if (ios /= 0) return
-    yes = sig == char(137)//'HDF'//achar(13)//achar(10)//achar(26)//achar(10)
+    if (head(1:8) /= char(137)//'HDF'//achar(13)//achar(10)//achar(26)//achar(10)) return
+    version = ichar(head(9:9))
+    select case (version)
+    case (0, 1)   ! free-space, root group, reserved, shared-header versions: 0; sizes at 14, 15
+      if (any([(ichar(head(k:k)), k = 10, 13)] /= 0) .or. ichar(head(16:16)) /= 0) return
+      so = ichar(head(14:14))
+      sl = ichar(head(15:15))
+    case (2, 3)   ! sizes at 10, 11; consistency flags below 8
+      so = ichar(head(10:10))
+      sl = ichar(head(11:11))
+      if (ichar(head(12:12)) > 7) return
+    case default
+      return
+    end select
+    yes = any(so == [2, 4, 8, 16]) .and. any(sl == [2, 4, 8, 16])
   end function is_hdf5_file
 
   !> Directory part of a path ('.' when there is none).
@@ -244,8 +282,12 @@ contains
     integer :: k, w, i, p
 
     problem = ''
-    if (len(path) == 0) then
+    if (len_trim(path) == 0) then
       problem = what//': empty file name'
+      return
+    end if
+    if (path(len(path):) == ' ' .or. path(1:1) == ' ') then
+      problem = what//' '''//path//''': a file name that begins or ends with a blank is not supported'
       return
     end if
     p = index(path, '/', back=.true.)
@@ -304,6 +346,39 @@ contains
       end if
     end if
   end function output_file_problem
+
+  !> Take the exclusive lock `path` (created if missing) without waiting. stat = STAT_OK and `handle`
+  !! on success; otherwise STAT_FAILED and `problem` says why: another process holds it (its pid
+  !! when known), or the file cannot be created or locked.
+  subroutine lock_file(path, handle, stat, problem)
+    character(len=*), intent(in) :: path                  !! lock file name [-]
+    integer, intent(out) :: handle                        !! lock handle for unlock_file [-]
+    integer, intent(out) :: stat                          !! STAT_OK or STAT_FAILED [-]
+    character(len=:), allocatable, intent(out) :: problem !! '' or the reason [-]
+    integer(c_int) :: fd, rc
+    integer(c_long_long) :: holder
+    problem = ''
+    stat = STAT_OK
+    rc = c_lock_file(path//c_null_char, fd, holder)
+    handle = int(fd)
+    if (rc == 0) return
+    stat = STAT_FAILED
+    if (rc == 1) then
+      problem = 'it is locked by another process'
+      if (holder > 0) problem = problem//' (pid '//itoa(int(holder))//')'
+    else
+      problem = 'cannot create or lock it (is its directory writable?)'
+    end if
+  end subroutine lock_file
+
+  !> Remove the lock file `path` and release the lock `handle` of lock_file (nothing when handle < 0).
+  subroutine unlock_file(path, handle)
+    character(len=*), intent(in) :: path     !! lock file name [-]
+    integer, intent(inout) :: handle         !! lock handle; -1 afterwards [-]
+    if (handle < 0) return
+    call c_unlock_file(path//c_null_char, int(handle, c_int))
+    handle = -1
+  end subroutine unlock_file
 
   !> c_file_info for a Fortran file name, with default integers.
   subroutine info(path, kind, dev, ino, writable)

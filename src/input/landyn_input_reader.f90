@@ -401,24 +401,35 @@ contains
   pure function snippet_raw(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=:), allocatable :: s  !! text with blanks collapsed and trailing commas dropped [-]
-    integer :: i
+    character(len=len(t)) :: buf
+    integer :: i, n
     logical :: prev_blank
-    s = ''
+    ! one pass into a buffer of the text's length: linear in len(t) (a line of a million commas
+    ! took minutes when the result grew character by character)
+    n = 0
     prev_blank = .true.
     do i = 1, len(t)
       if (is_blank(t(i:i))) then
-        if (.not. prev_blank) s = s//' '
+        if (.not. prev_blank) then
+          n = n + 1
+          buf(n:n) = ' '
+        end if
         prev_blank = .true.
       else
-        s = s//t(i:i)
+        n = n + 1
+        buf(n:n) = t(i:i)
         prev_blank = .false.
       end if
     end do
-    do while (len(s) > 0)
-      if (s(len(s):len(s)) /= ' ' .and. s(len(s):len(s)) /= ',') exit
-      s = s(1:len(s) - 1)
+    do while (n > 0)
+      if (buf(n:n) /= ' ' .and. buf(n:n) /= ',') exit
+      n = n - 1
     end do
-    if (len(s) > 4*snippet_len) s = s(1:4*snippet_len - 3)//'...'
+    if (n > 4*snippet_len) then
+      s = buf(1:4*snippet_len - 3)//'...'
+    else
+      s = buf(1:n)
+    end if
   end function snippet_raw
 
 end module landyn_input_reader

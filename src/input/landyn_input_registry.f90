@@ -93,9 +93,10 @@ module landyn_input_registry
       doc='`''fixed''`: the integration time step (the paper used 5e-6 s); `''adaptive''`: the first step tried', &
       doc_valid='`0 < dt <= t_end`, and `t_end/dt <= 1e9` (at most 10⁹ steps)'), &
     input_var_t(g_simulation, 'tolerance', k_real, default="1.0e-7_wp", unit='m/s', takes='a real number', &
-      meaning='adaptive: local velocity error allowed per step', lo_op='>', lo='0', &
+      meaning='adaptive: local velocity error allowed per step', lo_op='>=', lo='1.0e-20', &
       doc='`''adaptive''`: local velocity error allowed per step (body velocities, angular ones times the lander'// &
-      '''s size, strut stroke rates, leg angle rates times the strut length)'), &
+      '''s size, strut stroke rates, leg angle rates times the strut length)', &
+      doc_valid='`>= 1e-20` (smaller ones are far below the round-off of any velocity)'), &
     input_var_t(g_simulation, 'dt_max', k_real, default="1.0e-3_wp", &
       unit='s', takes='a real number', meaning='adaptive: largest step', &
       doc='`''adaptive''`: largest step (also never longer than `&output interval`)', doc_valid='`>= dt_min`'), &
@@ -235,22 +236,24 @@ module landyn_input_registry
       unit='kg', takes='a real number', meaning='outer tube with lugs', &
       lo_op='>=', lo='0', doc='outer tube with its lugs'), &
     input_var_t(g_primary, 'outer_cm', k_real, default="1.0_wp", unit='m', takes='a real number', &
-      meaning='outer tube mass centre from the upper joint', lo_op='>=', lo='0', &
-      doc='distance of the outer tube''s mass centre from the upper joint a'), &
+      meaning='outer tube mass centre from the upper joint', lo_op='>=', lo='0', hi_op='<=', hi='100', &
+      doc='distance of the outer tube''s mass centre from the upper joint a', &
+      doc_valid='`0 <= outer_cm <= 100` (hard points lie within 100 m)'), &
     input_var_t(g_primary, 'outer_inertia', k_real, default="8.3_wp", unit='kg m^2', takes='a real number', &
       meaning='outer tube transverse inertia about its mass centre', lo_op='>=', lo='0', &
       doc='transverse inertia of the outer tube about its mass centre'), &
     input_var_t(g_primary, 'inner_mass', k_real, default="15.0_wp", unit='kg', takes='a real number', meaning='inner tube', &
       lo_op='>=', lo='0', doc='inner tube'), &
     input_var_t(g_primary, 'inner_cm', k_real, default="0.9_wp", unit='m', takes='a real number', &
-      meaning='inner tube mass centre from the footpad joint', lo_op='>=', lo='0', &
-      doc='distance of the inner tube''s mass centre from the footpad joint d'), &
+      meaning='inner tube mass centre from the footpad joint', lo_op='>=', lo='0', hi_op='<=', hi='100', &
+      doc='distance of the inner tube''s mass centre from the footpad joint d', &
+      doc_valid='`0 <= inner_cm <= 100` (hard points lie within 100 m)'), &
     input_var_t(g_primary, 'inner_inertia', k_real, default="4.05_wp", unit='kg m^2', takes='a real number', &
       meaning='inner tube transverse inertia about its mass centre', lo_op='>=', lo='0', &
       doc='transverse inertia of the inner tube about its mass centre'), &
     input_var_t(g_primary, 'footpad_mass', k_real, default="15.0_wp", unit='kg', takes='a real number', &
       meaning='footpad, lumped at the footpad joint', lo_op='>=', lo='0', &
-      doc='footpad, lumped at the footpad joint d', doc_valid='`>= 0`, and `footpad_mass + inner_mass > 0`'), &
+      doc='footpad, lumped at the footpad joint d', doc_valid='`>= 0`, and `footpad_mass + inner_mass >= 1e-6`'), &
     input_var_t(g_primary, 'tube_friction', k_logical, default=".false.", takes='a logical (.true. or .false.)', &
       meaning='friction between the tubes (eqs. 23-26)', &
       doc='friction between the outer and inner tubes (eqs. 23-26), below'), &
@@ -289,16 +292,18 @@ module landyn_input_registry
     input_var_t(g_secondary, 'outer_mass', k_real, default="6.0_wp", unit='kg', takes='a real number', meaning='upper part', &
       lo_op='>=', lo='0', doc='upper part'), &
     input_var_t(g_secondary, 'outer_cm', k_real, default="0.45_wp", unit='m', takes='a real number', &
-      meaning='upper part mass centre from the upper joint', lo_op='>=', lo='0', &
-      doc='distance of the upper part''s mass centre from the upper joint'), &
+      meaning='upper part mass centre from the upper joint', lo_op='>=', lo='0', hi_op='<=', hi='100', &
+      doc='distance of the upper part''s mass centre from the upper joint', &
+      doc_valid='`0 <= outer_cm <= 100` (hard points lie within 100 m)'), &
     input_var_t(g_secondary, 'outer_inertia', k_real, default="0.405_wp", unit='kg m^2', takes='a real number', &
       meaning='upper part transverse inertia about its mass centre', lo_op='>=', lo='0', &
       doc='transverse inertia of the upper part about its mass centre'), &
     input_var_t(g_secondary, 'inner_mass', k_real, default="4.0_wp", unit='kg', takes='a real number', meaning='lower part', &
-      lo_op='>=', lo='0', doc='lower part', doc_valid='`> 0` (the sliding lower part needs mass)'), &
+      lo_op='>=', lo='0', doc='lower part', doc_valid='`>= 1e-6` (the sliding lower part needs mass)'), &
     input_var_t(g_secondary, 'inner_cm', k_real, default="0.45_wp", unit='m', takes='a real number', &
-      meaning='lower part mass centre from the lower joint', lo_op='>=', lo='0', &
-      doc='distance of the lower part''s mass centre from the lower joint'), &
+      meaning='lower part mass centre from the lower joint', lo_op='>=', lo='0', hi_op='<=', hi='100', &
+      doc='distance of the lower part''s mass centre from the lower joint', &
+      doc_valid='`0 <= inner_cm <= 100` (hard points lie within 100 m)'), &
     input_var_t(g_secondary, 'inner_inertia', k_real, default="0.27_wp", unit='kg m^2', takes='a real number', &
       meaning='lower part transverse inertia about its mass centre', lo_op='>=', lo='0', &
       doc='transverse inertia of the lower part about its mass centre')]

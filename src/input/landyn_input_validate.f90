@@ -30,6 +30,8 @@ module landyn_input_validate
   real(wp), parameter :: min_body_inertia = 1.0e-3_wp  !! smallest principal moment of inertia [kg m^2] (registry: ixx >= 0.001)
   real(wp), parameter :: max_hard_point = 100.0_wp     !! largest |coordinate| of a gear hard point [m]
   real(wp), parameter :: coincide_tol = 1.0e-6_wp      !! hard points closer than this coincide [m]
+  real(wp), parameter :: min_node_mass = 1.0e-6_wp     !! lightest strut node (footpad, secondary lower part) [kg]: lighter
+                                                       !! ones (5e-324) overflow the mass-matrix scaling
 
 contains
 
@@ -274,9 +276,9 @@ contains
     character(len=*), parameter :: g = 'primary_strut'
     if (p%n_stages >= 1 .and. p%n_stages <= max_stages) call check_stages()
     if (p%footpad_mass >= 0.0_wp .and. p%inner_mass >= 0.0_wp) &
-      call require(errors, p%footpad_mass + p%inner_mass > 0.0_wp, pre, g, 'footpad_mass + inner_mass', &
-                   fmt_real(p%footpad_mass + p%inner_mass)//' kg', 'footpad_mass + inner_mass > 0 kg '// &
-                   '(the footpad node needs mass)')
+      call require(errors, p%footpad_mass + p%inner_mass >= min_node_mass, pre, g, 'footpad_mass + inner_mass', &
+                   fmt_real(p%footpad_mass + p%inner_mass)//' kg', 'footpad_mass + inner_mass >= '// &
+                   fmt_real(min_node_mass)//' kg (the footpad node needs mass)')
     if (p%tube_outer_length > 0.0_wp .and. p%tube_inner_length > 0.0_wp .and. p%tube_leg_length > 0.0_wp) &
       call require(errors, p%tube_outer_length + p%tube_inner_length > p%tube_leg_length, pre, g, &
                    'tube_leg_length', fmt_real(p%tube_leg_length)//' m', 'tube_leg_length < tube_outer_length + '// &
@@ -312,8 +314,9 @@ contains
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     character(len=*), parameter :: g = 'secondary_strut'
     if (s%inner_mass >= 0.0_wp) &
-      call require(errors, s%inner_mass > 0.0_wp, pre, g, 'inner_mass', fmt_real(s%inner_mass)//' kg', &
-                   'inner_mass > 0 kg (the sliding lower part of a secondary strut needs mass)')
+      call require(errors, s%inner_mass >= min_node_mass, pre, g, 'inner_mass', fmt_real(s%inner_mass)//' kg', &
+                   'inner_mass >= '//fmt_real(min_node_mass)//' kg (the sliding lower part of a secondary strut '// &
+                   'needs mass)')
   end subroutine validate_secondary
 
   !> Checks of &terrain and &initial_state against the number of gears.

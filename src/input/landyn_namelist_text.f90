@@ -288,11 +288,16 @@ contains
   pure function remove_blanks(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=:), allocatable :: s  !! t without blank characters [-]
-    integer :: i
-    s = ''
+    character(len=len(t)) :: buf
+    integer :: i, n
+    n = 0   ! into a buffer: linear in len(t), also for a name padded with a million blanks
     do i = 1, len(t)
-      if (.not. is_blank_char(t(i:i))) s = s//t(i:i)
+      if (.not. is_blank_char(t(i:i))) then
+        n = n + 1
+        buf(n:n) = t(i:i)
+      end if
     end do
+    s = buf(1:n)
   end function remove_blanks
 
   !> Blank every byte of `work` that is not printable ASCII (nor tab, line end or form feed) and

@@ -234,7 +234,10 @@ contains
     res%energy(k, 10) = ke0 + (pe0 - pe) + w_thrust
     res%energy(k, 11) = e_in - (ke + ke_legs + crush + w_normal + w_friction + w_impact)
     res%energy_input = max(ke0 + (pe0 - pe) + w_thrust, tiny(1.0_wp))
-    res%energy_residual = res%energy(k, 11)/res%energy_input
+    ! relative to the input, or to the energies moved when the input is (nearly) nothing: a lander
+    ! pushed up by its initial penetration has a negative input (issue 25: residual Infinity)
+    res%energy_residual = res%energy(k, 11)/max(res%energy_input, 1.0e-3_wp*(ke + ke_legs + abs(crush) + &
+                          abs(w_normal) + abs(w_friction) + abs(w_impact)))
   end subroutine record
 
   !> Fills the summary from the final model state.

@@ -46,8 +46,9 @@
 !! h5_create / h5_open_read initialise the HDF5 Fortran interface (h5open_f) only when it is not
 !! already initialised, which is detected from HDF5's own state (whether the Fortran predefined
 !! datatype ids are live), so this module keeps no global state of its own and repeated
-!! open/close cycles in one process are fine. h5close_f is never called: the C library releases
-!! its resources at program exit.
+!! open/close cycles in one process are fine. h5close_f is never called, and HDF5 registers no
+!! exit handler (h5dont_atexit_f): every file is closed explicitly, and after a close that failed
+!! (a full disk) HDF5 1.10's exit handler crashed the program instead of letting it report.
 !!
 !! ## Modules
 !! This module only gathers the public interface; the code is in landyn_h5_file (files, groups,

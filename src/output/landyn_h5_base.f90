@@ -8,7 +8,7 @@ module landyn_h5_base
   use landyn_kinds, only: wp, ip
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strings, only: int_text
-  use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, h5iis_valid_f, h5iget_type_f, &
+  use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5dont_atexit_f, h5eset_auto_f, h5iis_valid_f, h5iget_type_f, &
     h5kind_to_type, h5gclose_f, h5lexists_f, h5oopen_f, h5pcreate_f, h5pset_create_inter_group_f, &
     h5pclose_f, h5screate_f, h5screate_simple_f, h5sclose_f, h5sget_simple_extent_type_f, &
     h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, h5tcopy_f, h5tset_size_f, &
@@ -90,10 +90,16 @@ contains
   !> Initialise the HDF5 Fortran interface unless it is already (the Fortran predefined datatype
   !! ids are live exactly when h5open_f has run and h5close_f has not), then silence the
   !! automatic error-stack printing. Calling h5open_f again would leak its datatype copies.
+  !! First, before any other HDF5 call initialises the C library, h5dont_atexit_f: HDF5 then
+  !! registers no exit handler. Every file is closed explicitly (h5_close, h5_commit_partial);
+  !! the handler only mattered after a close that failed (a full disk: the file's data could not
+  !! be flushed), when HDF5 1.10's H5F__close_cb retried at exit and crashed with SIGSEGV instead
+  !! of the documented exit status 4 (issue 25). On later calls it fails harmlessly.
   subroutine init_library(hdferr)
     integer, intent(out) :: hdferr  !! 0 on success, negative on failure
     logical :: ready
 
+    call h5dont_atexit_f(hdferr)
     call h5iis_valid_f(H5T_NATIVE_DOUBLE, ready, hdferr)
     if (hdferr < 0 .or. .not. ready) call h5open_f(hdferr)
     if (hdferr < 0) return

@@ -4,10 +4,11 @@ module landyn_h5_file
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_null_char
   use landyn_kinds, only: msg_len
   use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_files, only: file_kind, kind_regular
   use landyn_h5_base, only: no_id, h5_file_t, h5_is_open, h5_exists, init_library, make_lcpl, &
     release, check_writable, fail, fail_file
   use hdf5, only: hid_t, h5fcreate_f, h5fopen_f, h5fclose_f, h5fis_hdf5_f, h5gcreate_f, h5gopen_f, &
-    H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F
+    H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F
   implicit none
   private
 
@@ -36,13 +37,15 @@ contains
 
   ! ============================================================== files
 
-  !> Create (truncate) an HDF5 file for writing.
-  subroutine h5_create(file, path, stat, errmsg)
+  !> Create (truncate) an HDF5 file for writing; with exclusive = .true., fail instead when a file
+  !! (or a link, also a dangling one) of that name exists, so nothing is written through a link.
+  subroutine h5_create(file, path, stat, errmsg, exclusive)
     type(h5_file_t), intent(inout) :: file     !! must not be open
     character(len=*), intent(in) :: path       !! file name
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! set on failure
-    integer :: hdferr
+    logical, intent(in), optional :: exclusive !! fail when `path` exists (default .false.) [-]
+    integer :: hdferr, mode
 
     stat = STAT_OK
     if (h5_is_open(file)) then
@@ -54,11 +57,15 @@ contains
       call fail_file(stat, errmsg, 'h5_create', 'cannot initialise the HDF5 library for file', path)
       return
     end if
-    call h5fcreate_f(trim(path), H5F_ACC_TRUNC_F, file%id, hdferr)
+    mode = H5F_ACC_TRUNC_F
+    if (present(exclusive)) then
+      if (exclusive) mode = H5F_ACC_EXCL_F
+    end if
+    call h5fcreate_f(trim(path), mode, file%id, hdferr)
     if (hdferr < 0) then
       file%id = no_id
       call fail_file(stat, errmsg, 'h5_create', 'cannot create file', path, &
-        ' (does its directory exist and is it writable?)')
+        ' (does its directory exist and is it writable? is a file of that name in the way?)')
       return
     end if
     file%path = trim(path)
@@ -179,7 +186,8 @@ contains
     end if
   end subroutine rename_file
 
-  !> Delete a file with C remove(3). A file that does not exist is not an error.
+  !> Delete a file with C remove(3). A file that does not exist is not an error. A symbolic link
+  !! is removed itself (also a dangling one), never the file it points to.
   subroutine delete_file(path, stat, errmsg)
     character(len=*), intent(in) :: path                 !! file name
     integer, intent(out) :: stat                         !! 0 on success
@@ -187,9 +195,9 @@ contains
     logical :: exists
 
     stat = STAT_OK
+    if (c_remove(trim(path)//c_null_char) == 0_c_int) return
     inquire(file=path, exist=exists)
     if (.not. exists) return
-    if (c_remove(trim(path)//c_null_char) == 0_c_int) return
     stat = STAT_FAILED
     if (present(errmsg)) errmsg = "delete_file: cannot delete '"//trim(path)//"'"
   end subroutine delete_file
@@ -199,12 +207,22 @@ contains
   !> Create `path`.partial for writing. Write the contents, then call h5_commit_partial with
   !! their status: the file appears under `path` only when it is complete, so a write that
   !! fails or is killed leaves nothing that looks like a result.
+  !! A `path`.partial left by a killed run is removed first, by name: when it is a symbolic or a
+  !! hard link, the link goes and the file it points to is untouched; the new one is then created
+  !! exclusively, so nothing is ever written through a link of that name.
   subroutine h5_create_partial(file, path, stat, errmsg)
     type(h5_file_t), intent(inout) :: file     !! must not be open; open on `path`.partial afterwards
     character(len=*), intent(in) :: path       !! final file name
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! set on failure
-    call h5_create(file, trim(path)//'.partial', stat, errmsg)
+    integer :: st2
+    character(len=msg_len) :: m2
+    call delete_file(trim(path)//'.partial', st2, m2)   ! its failure shows in the exclusive create
+    call h5_create(file, trim(path)//'.partial', stat, errmsg, exclusive=.true.)
+    ! a create that failed after making the file (a full disk: no room for the superblock) leaves
+    ! it empty; a regular file there now is that one (the stale one went above)
+    if (stat /= STAT_OK .and. file_kind(trim(path)//'.partial') == kind_regular) &
+      call delete_file(trim(path)//'.partial', st2, m2)
   end subroutine h5_create_partial
 
   !> Finish a file begun with h5_create_partial: with stat = 0 on entry (contents written), close

@@ -13,20 +13,26 @@ module landyn_study_output
   implicit none
   private
 
-  public :: write_study_csv, write_study_h5
+  public :: write_study_csv, write_study_h5, table_value
 
 contains
 
   ! ================================================================ writing
 
-  !> Crush length of table row m for variant v [m] (NaN when that run did not complete).
+  !> Crush length of table row m for variant v [m]: NaN when that run did not complete, or when
+  !! the variant's lander has no such gear (a variant may change gears%n_gears; the rows follow
+  !! the first variant's landers).
   pure function table_value(study, m, v) result(x)
     type(study_t), intent(in) :: study  !! study with results
     integer, intent(in) :: m            !! table row [-]
     integer, intent(in) :: v            !! variant [-]
     real(wp) :: x                       !! crush length [m]
+    logical :: has_gear
     associate (r => study%run(study%measure(1, m), v))
-      if (r%status == status_ok) then
+      has_gear = .false.
+      if (allocated(r%crush)) has_gear = study%measure(2, m) <= min(r%n_gears, size(r%crush, 2)) .and. &
+                                         study%measure(3, m) <= size(r%crush, 1)
+      if (r%status == status_ok .and. has_gear) then
         x = r%crush(study%measure(3, m), study%measure(2, m))
       else
         x = ieee_value(1.0_wp, ieee_quiet_nan)
@@ -47,7 +53,10 @@ contains
     real(wp) :: x, x0
 
     tmp = trim(path)//'.partial'
-    open (newunit=u, file=tmp, status='replace', action='write', iostat=ios, iomsg=msg)
+    ! a <path>.partial left by a killed run goes by name (a link: the link, never its target), and
+    ! the new one is created exclusively, so nothing is written through a link
+    call delete_file(tmp, st2)
+    open (newunit=u, file=tmp, status='new', action='write', iostat=ios, iomsg=msg)
     if (ios /= 0) then
       stat = STAT_FILE
       errmsg = 'cannot write '//trim(path)//': '//trim(msg)
@@ -153,7 +162,8 @@ contains
       end do
     end do
     call h5_write(f, '/table/crush_length', tab, 'm', stat, errmsg, description='shape (n_options, n_variants): '// &
-                  'signed net crush of each measure option (Table 3 sense) for each variant; NaN: run failed')
+                  'signed net crush of each measure option (Table 3 sense) for each variant; NaN: run failed, '// &
+                  'or that variant''s lander has no such gear')
     if (stat /= STAT_OK) return
     call h5_write(f, '/table/load_case', info, '-', stat, errmsg); if (stat /= STAT_OK) return
     call h5_write(f, '/table/gear', study%measure(2, 1:nm), '-', stat, errmsg); if (stat /= STAT_OK) return

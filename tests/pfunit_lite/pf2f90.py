@@ -36,6 +36,9 @@ ASSERTIONS = {
     "assertisfinite": ("assertIsFinite", 1, ("message",), ()),
 }
 MARKERS = ("test", "before", "after")
+# Fortran free form: gfortran (as used by the real pFUnit's generated code) stops with
+# "Line truncated" on a longer statement line.
+MAX_COLUMNS = 132
 
 RE_DIRECTIVE = re.compile(r"^\s*@(\w*)(.*)$", re.DOTALL)
 RE_COMMENT_OR_BLANK = re.compile(r"^\s*(!.*)?$")
@@ -46,6 +49,33 @@ RE_MODULE_START = re.compile(r"^\s*module\s+(?!(?:procedure|subroutine|function)
 RE_END_MODULE = re.compile(r"^\s*end\s*module\b", re.IGNORECASE)
 RE_USE_FUNIT = re.compile(r"^\s*use\s*(,\s*non_intrinsic\s*)?(::)?\s*funit\s*(!.*)?$", re.IGNORECASE)
 RE_KEYWORD = re.compile(r"^\s*([A-Za-z]\w*)\s*=(?!=)(.*)$", re.DOTALL)
+
+
+def pfunit_expansion(name, rest):
+    """First line of the real pFUnit 4.14 expansion of the assertion '@NAME REST'.
+
+    funitproc (bin/funit/pFUnitParser.py, class AtAssert) replaces the line by
+    '  call assertX(ARGS, &' followed by short location lines, ARGS being the text
+    between the outermost parentheses as written; that line reaches the compiler.
+    """
+    inner = rest.strip()
+    if inner.startswith("(") and inner.endswith(")"):
+        inner = inner[1:-1]
+    return "  call " + name + "(" + inner + (", " if inner.strip() else "") + "&"
+
+
+def check_columns(path, lineno, line, expansion=None):
+    """Refuse a line longer than MAX_COLUMNS, as written or as pFUnit expands it."""
+    width = len(line.rstrip("\r\n"))
+    if width > MAX_COLUMNS:
+        raise TranslationError(path, lineno,
+                               f"line is {width} columns, over the {MAX_COLUMNS} of Fortran free form "
+                               f"(the real pFUnit passes it on and the compiler stops with 'Line truncated')")
+    if expansion is not None and len(expansion) > MAX_COLUMNS:
+        raise TranslationError(path, lineno,
+                               f"directive expands to a line of {len(expansion)} columns in the real pFUnit "
+                               f"('{expansion[:40]}...'), over the {MAX_COLUMNS} of Fortran free form; "
+                               f"shorten it (e.g. a local variable for an argument)")
 
 
 class TranslationError(Exception):
@@ -194,6 +224,7 @@ def translate(path, lines):
     for lineno, line in enumerate(lines, start=1):
         if not line.endswith("\n"):
             line += "\n"
+        check_columns(path, lineno, line)
         m = RE_DIRECTIVE.match(line)
         if m:
             name = m.group(1)
@@ -222,6 +253,7 @@ def translate(path, lines):
             if lname in ASSERTIONS:
                 args = split_parenthesised(m.group(2), path, lineno)
                 routine, args = check_assert_args(lname, args, path, lineno)
+                check_columns(path, lineno, line, pfunit_expansion(name, m.group(2)))
                 indent = re.match(r"^\s*", line).group(0)
                 out.append(f'#line {lineno} "{path}"\n')
                 out.append(f"{indent}call {routine}( &\n")

@@ -61,6 +61,13 @@ def cases():
         ("no_use_funit", "module c\n   implicit none\ncontains\n" + GOOD_TEST + "end module c\n", 1, "must 'use funit'"),
         ("no_tests", body("c", "", with_test=False), 5, "no @test procedure found"),
         ("directive_before_module", "@test\n" + body("c", ""), 1, "before the module statement"),
+        # Fortran free form ends at column 132: pFUnit passes longer lines on and gfortran
+        # stops with "Line truncated"; a directive counts as the line pFUnit expands it to.
+        ("line_133_columns", body("c", t("      x = 1" + " " * 119 + "+ 1\n")), 7, "line is 133 columns"),
+        ("comment_133_columns", body("c", "   ! " + "c" * 128 + "\n"), 5, "line is 133 columns"),
+        ("directive_133_columns", body("c", t("      @assertTrue(" + "a" * 110 + " > 0)\n")), 7, "line is 133 columns"),
+        ("directive_expands_over_132", body("c", t("    @assertEqual(" + "a" * 91 + ", 1.0, tolerance=0.1)\n")), 7,
+         "expands to a line of 133 columns"),
         # valid forms
         ("valid_all_forms", body("c",
             "   @before\n   subroutine setup()\n   end subroutine setup\n"
@@ -70,6 +77,9 @@ def cases():
                 "      @assertFalse(.false., message=\"it's (fine)\")\n      @assertLessThan(f(1, 2), 3)\n"
                 "      @assertLessThanOrEqual(1, 1)\n      @assertGreaterThan(2, 1)\n      @assertGreaterThanOrEqual(a(1:2), b)\n"
                 "      @assertIsFinite(x)\n      @assertEqual('x!y', 'x!y')\n")), None, None),
+        ("valid_132_columns", body("c", "   ! " + "c" * 127 + "\n" + t("      x = 1" + " " * 118 + "+ 1\n"
+                                                                  "        @assertEqual(" + "a" * 90 + ", 1.0, tolerance=0.1)\n")),
+         None, None),
     ]
 
 
