@@ -221,8 +221,9 @@ contains
     call h5_create(file, trim(path)//'.partial', stat, errmsg, exclusive=.true.)
     ! a create that failed after making the file (a full disk: no room for the superblock) leaves
     ! it empty; a regular file there now is that one (the stale one went above)
-    if (stat /= STAT_OK .and. file_kind(trim(path)//'.partial') == kind_regular) &
-      call delete_file(trim(path)//'.partial', st2, m2)
+    if (stat /= STAT_OK) then
+      if (file_kind(trim(path)//'.partial') == kind_regular) call delete_file(trim(path)//'.partial', st2, m2)
+    end if
   end subroutine h5_create_partial
 
   !> Finish a file begun with h5_create_partial: with stat = 0 on entry (contents written), close
