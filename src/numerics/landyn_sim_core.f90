@@ -137,7 +137,7 @@ contains
                                                       !! taken with the stored velocities advanced by v_lead
                                                       !! times the committed accelerations (the leapfrog's
                                                       !! velocities lag the positions by half a step); default 0 [s]
-    integer :: ng, i, ns, nq
+    integer :: ng, i, ns, nq, pass, n_pass
     type(body_t) :: body
     logical :: thrusting, locked(max_struts)
     real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
@@ -204,43 +204,51 @@ contains
       ! evaluation's, an integrator may pass a better estimate.
       if (present(acc_field)) body%acc = acc_field
       if (present(alpha_field)) body%alpha = alpha_field
-      force = model%body%mass*model%g_vec
-      moment = 0.0_wp
-      ev%locks_changed = .false.
-      do i = 1, ng
-        rg = model%rot(:, :, i)
-        field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
-        ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
-        call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), sim%loads)
-        if (stat /= 0) then
-          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
-          return
+      ! With frame_field_passes > 1 the gears are evaluated again in the field of the body
+      ! acceleration the previous pass gave (a fixed-point iteration of the body-leg coupling,
+      ! contracting by about the legs' mass over the body's), so that a lock's stopping force
+      ! reaches the other legs in the step it acts (docs/theory.md, "Frame field").
+      n_pass = inp%simulation%frame_field_passes
+      do pass = 1, n_pass
+        force = model%body%mass*model%g_vec
+        moment = 0.0_wp
+        ev%locks_changed = .false.
+        do i = 1, ng
+          rg = model%rot(:, :, i)
+          field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
+          ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
+          call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
+                                       sim%loads .and. pass == n_pass)
+          if (stat /= 0) then
+            write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+            return
+          end if
+          ns = model%n_struts(i)
+          nq = model%n_q(i)
+          associate (ge => ev%gear(i), g => model%gear(i)%g)
+            call g%locks(locked(1:ns))
+            if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
+            gf(:, i) = mv3(rg, ge%f_body)
+            gm(:, i) = mv3(rg, ge%m_body)
+            ev%qdd(1:nq, i) = ge%qdd(1:nq)
+            call g%strut_modes(ev%mode(1:ns, i), ge)
+            call g%coordinate_weights(ev%q_weight(1:nq, i))
+            call g%law_segments(ev%segment(1:ns, i))
+          end associate
+          ev%contact(i) = ev%delta(i) > 0.0_wp
+          ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
+        end do
+        fb_l = symmetric_sum(gf, ng)
+        force = force + mv3(r, fb_l)
+        moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
+        ! engine thrust (computed with the footpad forces above)
+        if (thrusting) then
+          moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
         end if
-        ns = model%n_struts(i)
-        nq = model%n_q(i)
-        associate (ge => ev%gear(i), g => model%gear(i)%g)
-          call g%locks(locked(1:ns))
-          if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
-          gf(:, i) = mv3(rg, ge%f_body)
-          gm(:, i) = mv3(rg, ge%m_body)
-          ev%qdd(1:nq, i) = ge%qdd(1:nq)
-          call g%strut_modes(ev%mode(1:ns, i), ge)
-          call g%coordinate_weights(ev%q_weight(1:nq, i))
-          call g%law_segments(ev%segment(1:ns, i))
-        end associate
-        ev%contact(i) = ev%delta(i) > 0.0_wp
-        ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
+        force = force + ev%thrust_g
+        ! ---- Step 6: body accelerations
+        call body_accelerations(body, force, moment)
       end do
-      fb_l = symmetric_sum(gf, ng)
-      force = force + mv3(r, fb_l)
-      moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
-      ! engine thrust (computed with the footpad forces above)
-      if (thrusting) then
-        moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
-      end if
-      force = force + ev%thrust_g
-      ! ---- Step 6: body accelerations
-      call body_accelerations(body, force, moment)
       ev%acc = body%acc
       ev%alpha = body%alpha
       ev%ovl = mtv3(r, body%acc - model%g_vec)/g_earth
