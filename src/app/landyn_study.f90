@@ -17,6 +17,7 @@ program landyn_study_main
   use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, &
                           status_no_touchdown, strut_names
   use landyn_study_output, only: write_study_csv, write_study_h5, table_value
+  use landyn_outcome, only: outcome_name
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
   use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH, &
@@ -198,15 +199,18 @@ contains
     end do
   end subroutine write_table
 
-  !> The outcome of every run on a unit: peak overload, largest tilt, tip-over, energy residual
-  !! and how the run ended (the figures the CSV and the result file hold besides the crush lengths).
+  !> The outcome of every run on a unit: peak overload, largest tilt, smallest stroke margin,
+  !! energy residual, the outcome and how the run ended (the figures the CSV and the result file hold besides the crush lengths).
   subroutine write_outcomes(u)
     integer, intent(in) :: u               !! output unit
     integer :: c, vv
     character(len=24) :: lab
+    character(len=16) :: oname
     write (u, '(a)') ''
-    write (u, '(a)') 'Run outcomes: peak overload at the mass centre [g], largest tilt [deg], energy audit residual [%]'
-    write (u, '(a)') '  case         variant                   overload [g]  max tilt [deg]  residual [%]  end'
+    write (u, '(a)') 'Run outcomes: peak overload at the mass centre [g], largest tilt [deg], smallest stroke margin of any'
+    write (u, '(a)') 'strut [mm], energy audit residual [%], outcome (landyn_outcome) and how the run ended'
+    write (u, '(a)') '  case         variant                   overload [g]  max tilt [deg]  margin [mm]  residual [%]  '// &
+      'outcome         end'
     do c = 1, study%n_cases
       do vv = 1, study%n_variants
         lab = study%variant(vv)%label(1:min(24, len_trim(study%variant(vv)%label)))
@@ -214,9 +218,10 @@ contains
           if (r%status == status_failed) then
             write (u, '(2x,a12,1x,a24,a)') study%case_label(c), lab, '        failed: '//trim(r%message)
           else
-            write (u, '(2x,a12,1x,a24,f15.3,f16.2,f14.3,2x,a)') study%case_label(c), lab, r%peak_overload, &
-              r%max_tilt, 100.0_wp*r%energy_residual, trim(r%end_reason)//trim(merge(', TIPPED OVER', '             ', &
-              r%tipped_over))
+            oname = outcome_name(r%outcome)
+            write (u, '(2x,a12,1x,a24,f15.3,f16.2,f13.1,f14.3,2x,a16,a)') study%case_label(c), lab, r%peak_overload, &
+              r%max_tilt, 1000.0_wp*r%min_stroke_margin, 100.0_wp*r%energy_residual, oname, &
+              trim(r%end_reason)//trim(merge(', TIPPED OVER', '             ', r%tipped_over))
           end if
         end associate
       end do

@@ -81,6 +81,7 @@ module landyn_study
     logical :: tipped_over = .false.                 !! [-]
     integer :: outcome = 0                           !! outcome code (landyn_outcome) [-]
     real(wp) :: tipover_margin = 0.0_wp              !! tip-over margin at the end [deg]
+    real(wp) :: min_stroke_margin = 0.0_wp           !! smallest stroke margin of any strut [m]
     real(wp) :: t_final = 0.0_wp                     !! [s]
     real(wp) :: wall_time = 0.0_wp                   !! [s]
   end type run_record_t
@@ -416,6 +417,7 @@ contains
             r%energy_residual = res%energy_residual
             r%peak_overload = res%peak_overload
             r%max_tilt = res%max_tilt
+            r%min_stroke_margin = minval(res%stroke_margin)
             r%tipped_over = res%tipped_over
             r%end_reason = res%end_reason
             r%t_final = res%t_final

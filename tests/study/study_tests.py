@@ -63,6 +63,12 @@ def t_small_study(study_exe, exe, src, d):
     outcome = [ln for ln in out.splitlines() if ln.startswith("  LC-") and "end time reached" in ln]
     check("Run outcomes: peak overload" in out and len(outcome) == 8,
           "the outcome of each of the 8 runs (overload, tilt, residual, end) is printed (%d lines)" % len(outcome))
+    # from the right: margin [mm], residual [%], outcome, 'end time reached'
+    cols = [ln.split() for ln in outcome]
+    check(all(c[-4] == "still_moving" for c in cols),
+          "each run's outcome is named (still_moving: the 0.3 s runs end moving): %s" % [c[-4] for c in cols])
+    check(all(0.0 < float(c[-6]) < 500.0 for c in cols),
+          "each run's smallest stroke margin is printed in mm: %s" % [c[-6] for c in cols])
     if FAILS:
         return
     labels = ["Base result", "Hertz", "TY-1, stick", "eta"]
