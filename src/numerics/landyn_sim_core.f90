@@ -183,9 +183,11 @@ contains
         end if
         vslip = slip_velocity(model%plane(i), ev%vd(:, i))
         if (model%friction%has_stiction) then
-          ! stick state: advanced with the footpad's tangential displacement over the last step
+          ! stick state: advanced with the footpad's tangential displacement since the evaluation
+          ! whose footpad states were committed (not since the last booked one: after a rejected
+          ! step the state at t is evaluated again, and its committed stick state is still t - h's)
           dslip = 0.0_wp
-          if (sim%loop%n > 0) dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_prev(:, i))
+          if (sim%loop%n > 0) dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_stick(:, i))
           call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, ev%fn(i), ft)
         else
           ft = model%friction%friction_force(vslip, ev%fn(i))

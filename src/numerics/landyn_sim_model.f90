@@ -56,6 +56,8 @@ module landyn_sim_model
     real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
     real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
     real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
+    real(wp) :: xd_stick(3, max_gears) = 0.0_wp        !! footpad positions of the evaluation whose footpad states
+                                                       !! were committed last (the stick states' reference) [m]
     real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
     real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
     real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
