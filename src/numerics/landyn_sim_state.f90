@@ -3,7 +3,7 @@
 !!
 !! * gather and scatter the velocities (the body's mass-centre velocity and rates, every moving
 !!   gear's generalized velocities) and gather the accelerations of an evaluation, as one vector
-!!   laid out as vel_layout_t says;
+!!   laid out as vel_layout says;
 !! * increment the positions along a velocity vector (rotations through the Euler-angle rates);
 !! * the discrete decision of the rigid-plastic crush law over a step (sim_arrest);
 !! * project positions (each gear's constraints and locked strokes) and velocities (the plastic
@@ -137,7 +137,7 @@ contains
   end subroutine sim_arrest
 
   !> Moves the positions along the velocity vector v for h: the body (attitude through the Euler
-  !! rates; v(1:6) must be the body's stored velocities) and every moving gear (with its crush work).
+  !! rates) and every moving gear (with its crush work). The stored velocities are not changed.
   subroutine sim_increment_positions(sim, moving, v, h)
     type(sim_t), intent(inout) :: sim           !! simulation
     logical, intent(in) :: moving(max_gears)    !! gear i moves [-]
@@ -145,9 +145,7 @@ contains
     real(wp), intent(in) :: h                   !! duration [s]
     integer :: first(max_gears), nv, i
     call vel_layout(sim, first, nv)
-    sim%model%body%v = v(1:3)
-    sim%model%body%omega = v(4:6)
-    call body_increment(sim%model%body, h)
+    call body_increment(sim%model%body, v(1:3), v(4:6), h)
     do i = 1, sim%model%n_gears
       if (moving(i)) call sim%model%gear(i)%g%increment(v(first(i):first(i) + sim%model%n_q(i) - 1), h)
     end do

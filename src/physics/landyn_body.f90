@@ -95,16 +95,19 @@ contains
     body%alpha = mv3(body%inv_inertia, moment - cross3(body%omega, h))
   end subroutine body_accelerations
 
-  !> Moves the body along its stored velocities for h: x <- x + v h, Euler angles by their rates
-  !! at the present attitude (E(theta) omega h), the rotation matrix with them. The update formula
-  !! of a step is the integrator's (numerics/); this is the position increment it asks for.
-  pure subroutine body_increment(body, h)
+  !> Moves the body along the velocities v (mass centre, global) and omega (lander axes) for h:
+  !! x <- x + v h, Euler angles by their rates at the present attitude (E(theta) omega h), the
+  !! rotation matrix with them. The update formula of a step is the integrator's (numerics/); this
+  !! is the position increment it asks for. The body's stored velocities are not changed.
+  pure subroutine body_increment(body, v, omega, h)
     type(body_t), intent(inout) :: body   !! body
+    real(wp), intent(in) :: v(3)          !! mass-centre velocity to move with, global [m/s]
+    real(wp), intent(in) :: omega(3)      !! body rates to turn with, lander axes [rad/s]
     real(wp), intent(in) :: h             !! duration of the move [s]
     real(wp) :: e(3, 3)
-    body%x = body%x + body%v*h
+    body%x = body%x + v*h
     e = euler_rate_matrix(body%euler(2), body%euler(3))
-    body%euler = body%euler + mv3(e, body%omega)*h
+    body%euler = body%euler + mv3(e, omega)*h
     body%r = rot_zyx(body%euler(1), body%euler(2), body%euler(3))
   end subroutine body_increment
 
