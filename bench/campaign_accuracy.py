@@ -15,7 +15,9 @@ not store them).
                        [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
                        [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR] [--t-end 2]
 
-A scheme is NAME[:var=value,...]: &simulation integrator = NAME with those &simulation variables.
+A scheme is NAME[:var=value,...][@BATCH]: &simulation integrator = NAME with those &simulation
+variables, run by the landyn_batch BATCH when given (to compare builds in one interleaved run).
+--per-case prints every case's largest crush-length error and steps per scheme.
 The reference is expensive (about 7 s per case); --ref-cache keeps it between runs (keyed by the
 case count, the reference step and the base deck's text).
 """
@@ -30,6 +32,12 @@ import time
 
 import h5py
 import numpy as np
+
+
+def split_batch(spec, default):
+    """The scheme part of a spec and the landyn_batch that runs it."""
+    scheme, _, batch = spec.partition("@")
+    return scheme, os.path.abspath(batch) if batch else default
 
 
 def scheme_text(spec):
@@ -92,6 +100,7 @@ def main():
     ap.add_argument("--check-cases", type=int, default=5)
     ap.add_argument("--ref-cache", help="folder keeping the reference between runs")
     ap.add_argument("--t-end", type=float, help="simulated time per case [s] (default: the example's)")
+    ap.add_argument("--per-case", action="store_true", help="print each case's error and steps")
     a = ap.parse_args()
     batch = os.path.abspath(a.batch)
     src = os.path.abspath(a.src)
@@ -114,11 +123,12 @@ def main():
         conv = 1e3 * np.max(np.abs(ref_check - ref[:a.check_cases]))
         print("reference: fixed dt = %.3g s; against dt/2 on cases 1..%d: largest crush-length difference %.4f mm"
               % (a.ref_dt, a.check_cases, conv))
-        dirs = {s: make_dir(src, w, "s%d" % i, s, a.cases, a.t_end) for i, s in enumerate(a.schemes)}
+        dirs = {s: make_dir(src, w, "s%d" % i, split_batch(s, batch)[0], a.cases, a.t_end)
+                for i, s in enumerate(a.schemes)}
         best, results = {}, {}
         for r in range(a.rounds):
             for i, s in enumerate(a.schemes):
-                wall, crush, res = run(batch, dirs[s], "s%d" % i, a.cases)
+                wall, crush, res = run(split_batch(s, batch)[1], dirs[s], "s%d" % i, a.cases)
                 best[s] = min(best.get(s, wall), wall)
                 results[s] = (crush, res)
         print("%-34s %10s %11s %12s %8s %11s" % ("scheme", "cases/c-h", "largest", "<=0.1 mm", ">0.5 mm", "steps/case"))
@@ -128,6 +138,11 @@ def main():
             print("%-34s %10.0f %8.3f mm %7d of %d %8d %11.0f" % (
                 s, a.cases * 3600.0 / best[s], err.max(), np.sum(err <= 0.1), a.cases, np.sum(err > 0.5),
                 np.mean(steps)))
+        if a.per_case:
+            print("case " + " ".join("%17s" % ("s%d err/steps" % i) for i in range(len(a.schemes))))
+            errs = {s: 1e3 * np.max(np.abs(results[s][0] - ref).reshape(a.cases, -1), axis=1) for s in a.schemes}
+            for c in range(a.cases):
+                print("%4d " % (c + 1) + " ".join("%8.3f %8d" % (errs[s][c], results[s][1][c]) for s in a.schemes))
 
 
 if __name__ == "__main__":

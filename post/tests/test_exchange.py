@@ -130,10 +130,10 @@ def test_interface_loads_equilibrium_and_peak_table(lc3_short, tmp_path, run_too
         if q == "magnitude":
             own = np.linalg.norm([float(row[f"F{j}_{c}_kN"]) for c in "xyz"])
             assert own == pytest.approx(peak, rel=1e-9)
-            assert peak >= np.linalg.norm(hist, axis=1).max() / 1e3 * (1 - 1e-12)
+            assert peak >= np.linalg.norm(hist, axis=1).max() / 1e3 * (1 - 1e-11)   # CSV: 12 digits
         else:
             assert float(row[f"F{j}_{q}_kN"]) == pytest.approx(peak, rel=1e-9)
-            assert abs(peak) >= np.abs(hist[:, "xyz".index(q)]).max() / 1e3 * (1 - 1e-12)
+            assert abs(peak) >= np.abs(hist[:, "xyz".index(q)]).max() / 1e3 * (1 - 1e-11)   # CSV: 12 digits
         assert 0.0 <= float(row["time_s"]) <= 0.4
 
 

@@ -133,12 +133,12 @@ module landyn_input_registry
     input_var_t(g_simulation, 'constraint_tol', k_real, default="1.0e-10_wp", unit='m, m/s', takes='a real number', &
       meaning='tolerance of the constraint correction', lo_op='>', lo='0', msg_unit=0, &
       doc='tolerance of the constraint-violation correction'), &
-    input_var_t(g_simulation, 'frame_field_passes', k_int, default="1", takes='an integer', &
+    input_var_t(g_simulation, 'frame_field_passes', k_int, default="0", takes='an integer', &
       meaning='gear passes per force evaluation (frame field from the previous pass)', &
-      lo_op='>=', lo='1', hi_op='<=', hi='5', &
+      lo_op='>=', lo='0', hi_op='<=', hi='5', &
       doc='1: the legs'' frame field takes the last evaluation''s body acceleration (the paper''s scheme, '// &
-      'a step late); 2 to 5: the gears are evaluated again in the field of the previous pass '// &
-      '([theory](../theory.md#frame-field))'), &
+      'a step late); 2 to 5: the gears are evaluated again in the field of the previous pass; 0: the '// &
+      'integrator''s choice, 1 for ''fixed'' and 2 for the others ([theory](../theory.md#frame-field))'), &
     input_var_t(g_simulation, 'max_correction_iter', k_int, default="20", takes='an integer', &
       meaning='iteration cap of the constraint correction', lo_op='>=', lo='1', doc='iteration cap of the correction'), &
     input_var_t(g_simulation, 'max_constraint_drift', k_real, default="1.0e-6_wp", unit='m', takes='a real number', &

@@ -12,9 +12,13 @@
 !!   are those the next step needs anyway: one force evaluation per accepted step.
 !! * Events: a change of the discrete state over a step (a strut's mode: locked, crushing either
 !!   way or free; a stage end or end-of-stroke stop of its buffer law; a footpad touching down or
-!!   lifting off; a stick state; the tilt passing the tip-over angle) is located by bisection:
-!!   the step is retried at half length until the one that contains the change is no longer than
-!!   `event_resolution` [s].
+!!   lifting off; a stick state; the tilt passing the tip-over angle) is located as the zero of its
+!!   switching function (landyn_event_locator) by regula falsi with the Illinois modification on a
+!!   bracket of steps: the step that found it is its end, each retry from the current state aims
+!!   half of `event_resolution` [s] before the estimated zero (a rejected retry moves the end),
+!!   each accepted one is followed by a step aimed half of it past the zero, until the step that
+!!   contains the change is no longer than `event_resolution`; then the step that found the event
+!!   is tried again. Changes without a switching function (buffer-law segments) are bisected.
 !! * A step whose correction drifts or fails, or whose state is not finite, is retried at a
 !!   quarter of its length.
 !! * Steps end exactly on the output times and on t_end.
@@ -30,6 +34,7 @@ module landyn_integrator_adaptive
                              sim_evaluate, sim_book, sim_accept, finish, body_is_finite
   use landyn_integrator, only: integrator_t
   use landyn_scheme_leapfrog, only: leapfrog_advance
+  use landyn_event_locator, only: event_fraction
   implicit none
   private
 
@@ -61,6 +66,14 @@ module landyn_integrator_adaptive
     type(sim_snapshot_t) :: snap(2)        !! snap(ip): the current state before that evaluation;
                                            !! the other slot takes the next state (no copy on acceptance)
     integer :: ip = 1                      !! slot of the current state's snapshot [-]
+    ! Event bracket: an event lies between the current state and t_r, the end of a step tried from an
+    ! earlier state of this approach that contained it, evaluated in ev_r.
+    logical :: bracket = .false.           !! an event is being located [-]
+    real(wp) :: t_r = 0.0_wp               !! end of the bracket [s]
+    type(sim_eval_t) :: ev_r               !! evaluation at t_r [-]
+    integer :: side = 0                    !! the bracket's last move: +1 its end (a rejection), -1 its start [-]
+    integer :: n_same = 0                  !! moves of the same end in a row (Illinois) [-]
+    real(wp) :: h_resume = 0.0_wp          !! step tried when the event was found, taken again after it [s]
   contains
     procedure :: start => adaptive_start   !! evaluates and records the state at t = 0
     procedure :: step => adaptive_step     !! one accepted step (retries and event location inside)
@@ -152,11 +165,11 @@ contains
         call sim_restore(sim, self%snap(self%ip))
         if (.not. ok) then
           h = 0.25_wp*h
-        else if (err > 1.0_wp) then
-          h = h*max(0.1_wp, step_factor(err, self%smooth))
-          if (event) h = min(h, 0.5_wp*self%h)
+        else if (event) then
+          h = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
+                         inp%simulation%tipover_angle)
         else
-          h = 0.5_wp*h
+          h = h*max(0.1_wp, step_factor(err, self%smooth))
         end if
         if (ok) then
           self%h = clip(self, sim, self%t, max(h, self%h_event))
@@ -214,7 +227,15 @@ contains
     fac = 2.0_wp
     if (err > 0.0_wp) fac = min(2.0_wp, step_factor(err, self%smooth))
     if (rejected) fac = min(fac, 1.0_wp)
-    h = clip(self, sim, t_new, max(self%h_event, min(self%h_max, h*max(0.2_wp, fac))))
+    h = max(self%h_event, min(self%h_max, h*max(0.2_wp, fac)))
+    if (event .and. self%bracket) then
+      ! the located event is behind: back to the step that found it
+      self%bracket = .false.
+      h = max(h, min(self%h_resume, self%h_max))
+    else if (self%bracket) then
+      h = min(h, aim_after(self, t_new, self%evs(self%i_new), sim%model%n_gears, inp%simulation%tipover_angle))
+    end if
+    h = clip(self, sim, t_new, h)
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
     if (self%evs(self%i_new)%locks_changed) h = h_g
     self%h = h
@@ -227,6 +248,77 @@ contains
     self%ip = 3 - self%ip
     self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
   end subroutine adaptive_step
+
+  !> The step to retry after the step h from the current state (evaluated in e0) was rejected for
+  !! an event (found in e1): it becomes the end of the bracket, and the retry aims half the event
+  !! resolution before the zero of the switching functions (event_fraction; Illinois weight on e0
+  !! when the end moved twice in a row), so that an accepted retry leaves the event within reach
+  !! of one step of the event resolution. Half the step where the event cannot be located.
+  function aim_before(self, h, e0, e1, ng, tip) result(hn)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator (its bracket is set)
+    real(wp), intent(in) :: h                            !! the rejected step [s]
+    type(sim_eval_t), intent(in) :: e0                   !! evaluation of the current state
+    type(sim_eval_t), intent(in) :: e1                   !! evaluation at the end of the rejected step
+    integer, intent(in) :: ng                            !! number of gears [-]
+    real(wp), intent(in) :: tip                          !! tip-over angle [rad]
+    real(wp) :: hn                                       !! step to retry [s]
+    real(wp) :: theta
+    logical :: located
+    if (.not. self%bracket) then
+      self%h_resume = h
+      self%side = 0
+    end if
+    self%bracket = .true.
+    self%t_r = self%t + h
+    self%ev_r = e1
+    if (self%side == 1) then
+      self%n_same = self%n_same + 1
+    else
+      self%n_same = 1
+    end if
+    self%side = 1
+    call event_fraction(e0, e1, ng, tip, 0.5_wp**(self%n_same - 1), 1.0_wp, theta, located)
+    if (located) then
+      hn = min(theta*h - 0.5_wp*self%h_event, 0.5_wp*(h + theta*h))
+    else
+      hn = 0.5_wp*h
+    end if
+  end function aim_before
+
+  !> The next step after an accepted one that ended inside the bracket (the current state, evaluated
+  !! in e0): aimed half the event resolution past the zero of the switching functions between e0
+  !! and the bracket's end (Illinois weight on the end when the start moved twice in a row), never
+  !! beyond that end. The bracket is dropped when the state has reached its end or no longer
+  !! differs from it (the event did not happen on this path).
+  function aim_after(self, t, e0, ng, tip) result(hn)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator with its bracket
+    real(wp), intent(in) :: t                            !! time of the current state [s]
+    type(sim_eval_t), intent(in) :: e0                   !! evaluation of the current state
+    integer, intent(in) :: ng                            !! number of gears [-]
+    real(wp), intent(in) :: tip                          !! tip-over angle [rad]
+    real(wp) :: hn                                       !! largest next step [s]
+    real(wp) :: theta, span
+    logical :: located
+    hn = huge(1.0_wp)
+    span = self%t_r - t
+    if (span <= self%slack .or. .not. discrete_change(e0, self%ev_r, ng, tip)) then
+      self%bracket = .false.
+      return
+    end if
+    if (self%side == -1) then
+      self%n_same = self%n_same + 1
+    else
+      self%n_same = 1
+    end if
+    self%side = -1
+    call event_fraction(e0, self%ev_r, ng, tip, 1.0_wp, 0.5_wp**(self%n_same - 1), theta, located)
+    if (located) then
+      hn = min(span, theta*span + 0.5_wp*self%h_event)
+    else
+      hn = 0.5_wp*span
+    end if
+    hn = max(hn, self%h_event)
+  end function aim_after
 
   !> The usual step-size factor 0.9 err^(-1/p): p = 3 for the second-difference estimate (error
   !! ~ h^3), 2 for the first-order one (~ h^2).

@@ -188,8 +188,9 @@ contains
           ! step the state at t is evaluated again, and its committed stick state is still t - h's)
           dslip = 0.0_wp
           if (sim%loop%n > 0) dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_stick(:, i))
-          call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, ev%fn(i), ft)
+          call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, ev%fn(i), ft, ev%stick_margin(i))
         else
+          ev%stick_margin(i) = 0.0_wp
           ft = model%friction%friction_force(vslip, ev%fn(i))
         end if
         ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])

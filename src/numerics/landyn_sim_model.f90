@@ -105,6 +105,8 @@ module landyn_sim_model
     integer :: segment(max_struts, max_gears) = 0      !! piece of each buffer law (stage, stop) [-]
     logical :: contact(max_gears) = .false.            !! footpad in contact [-]
     logical :: stuck(max_gears) = .false.              !! footpad in its friction law's stick state [-]
+    real(wp) :: stick_margin(max_gears) = 0.0_wp       !! switching function of the stick state: stuck exactly
+                                                       !! where >= 0 (friction_law_t%stick_slip_force) [N]
     real(wp) :: tilt = 0.0_wp                          !! tilt of the lander z axis from vertical [rad]
   end type sim_eval_t
 

@@ -33,6 +33,7 @@ module landyn_buffer
     procedure(resistance_iface), deferred :: resistance  !! force bounds against motion toward +s and -s [N]
     procedure(capacity_iface), deferred :: capacity      !! stroke capacity toward +s and -s [m]
     procedure(segment_iface), deferred :: segment        !! piece of the force-stroke curve at s (for event location) [-]
+    procedure :: free_range => history_free_range        !! strokes between which the buffer offers no resistance [m]
   end type buffer_law_t
 
   abstract interface
@@ -95,6 +96,24 @@ module landyn_buffer
   end type secondary_honeycomb_t
 
 contains
+
+  !> The strokes between which the buffer offers no resistance in either direction (the crushed
+  !! range of eqs. 21-22; the event locator's switching function of a free strut): a stroke beyond
+  !! hi meets the bound toward +s, below lo the bound toward -s, as the laws' resistance decides
+  !! (tolerance history_tol). A law without stroke toward -s (capacity 0) has its rigid stop at s = 0.
+  pure subroutine history_free_range(self, s_hismin, s_hismax, lo, hi)
+    class(buffer_law_t), intent(in) :: self     !! the buffer law
+    real(wp), intent(in) :: s_hismin   !! most negative stroke reached so far [m]
+    real(wp), intent(in) :: s_hismax   !! most positive stroke reached so far [m]
+    real(wp), intent(out) :: lo        !! lower end of the free range [m]
+    real(wp), intent(out) :: hi        !! upper end [m]
+    real(wp) :: cap_pos, cap_neg
+    call self%capacity(cap_pos, cap_neg)
+    lo = s_hismin
+    if (cap_neg <= 0.0_wp) lo = max(0.0_wp, s_hismin)
+    lo = lo + history_tol
+    hi = s_hismax - history_tol
+  end subroutine history_free_range
 
   !> Primary bounds (eq. 21): the current stage's crush force against shortening at the crush front
   !! (plus the stop beyond the last stage), 0 inside the crushed range; rigid against extension at s <= 0.

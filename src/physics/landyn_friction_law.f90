@@ -145,13 +145,17 @@ contains
   !! (the caller passes a trial copy and commits it with the step; the law is not changed).
   !! dx_slip is the footpad's tangential displacement since the previous call (the slip velocity
   !! times the step in a semi-implicit Euler scheme). See the module documentation.
-  pure subroutine stick_slip_force(self, state, v_slip, dx_slip, f_normal, f_t)
+  pure subroutine stick_slip_force(self, state, v_slip, dx_slip, f_normal, f_t, margin)
     class(friction_law_t), intent(in) :: self     !! the law
     type(friction_state_t), intent(inout) :: state  !! stick state of the footpad, advanced by the step
     real(wp), intent(in) :: v_slip(2)             !! slip velocity, local (t1, t2) [m/s]
     real(wp), intent(in) :: dx_slip(2)            !! tangential displacement since the last call, local [m]
     real(wp), intent(in) :: f_normal              !! normal force magnitude [N]
     real(wp), intent(out) :: f_t(2)               !! friction force on the footpad, local (t1, t2) [N]
+    real(wp), intent(out), optional :: margin     !! switching function of the stick state: the yield limit of
+                                                  !! the state passed in minus the trial force; the state
+                                                  !! returned is stuck exactly when it is >= 0 (0 without
+                                                  !! contact) [N]
     real(wp) :: z_tr(2), f_tr(2), n, lim, slide, fmag, speed
     logical :: was_stuck
 
@@ -161,6 +165,7 @@ contains
       state%z = 0.0_wp
       state%stuck = .true.
       f_t = 0.0_wp
+      if (present(margin)) margin = 0.0_wp
       return
     end if
     was_stuck = state%stuck
@@ -181,6 +186,7 @@ contains
     else
       lim = slide
     end if
+    if (present(margin)) margin = lim - fmag
     if (fmag <= lim) then
       state%stuck = .true.
       state%z = z_tr

@@ -39,6 +39,18 @@ module landyn_gear_base
                                                   !! strut's Hooke-joint axis: its spin is constrained) [N m]
     real(wp) :: f_interface(3) = 0.0_wp           !! the gear's total force on the body from the
                                                   !! leg's momentum balance (= sum of the upper joints') [N]
+    ! Switching functions of the strut modes (strut_mode), for event location: each is >= 0 while
+    ! its mode holds and changes sign where the crush logic leaves it. margin_out is the function
+    ! of the mode the evaluation decided, margin_in that of the mode it started from (the committed
+    ! one), both at the evaluated state. 0 where a gear type does not provide them (the integrator
+    ! then halves the step). Units by mode: locked, the force left before the lock gives way [N];
+    ! crushing, the stroke rate in its direction after the step's velocity update [m/s]; free, the
+    ! stroke left to the nearer end of the free range [m].
+    real(wp) :: margin_in(max_struts) = 0.0_wp    !! switching function of the entry mode [N, m/s, m]
+    real(wp) :: margin_out(max_struts) = 0.0_wp   !! switching function of the decided mode [N, m/s, m]
+    real(wp) :: stroke(max_struts) = 0.0_wp       !! strokes of the evaluated state (event location) [m]
+    real(wp) :: free_lo(max_struts) = 0.0_wp      !! lower end of each buffer's free range (buffer_law_t%free_range) [m]
+    real(wp) :: free_hi(max_struts) = 0.0_wp      !! upper end [m]
   end type gear_eval_t
 
   !> A landing gear: struts, footpad and their state.

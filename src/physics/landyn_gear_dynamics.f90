@@ -27,11 +27,11 @@ contains
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q), q_alp(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
-    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand
+    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand, h_look
     real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
-    integer :: k, iter, nrow, row_of(3)
-    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads
+    integer :: k, iter, nrow, row_of(3), m_entry(3)
+    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3)
 
     stat = STAT_OK
     with_loads = .true.
@@ -46,6 +46,8 @@ contains
     ge%s_lock = gear%st%s_lock
     ge%tube_bound = gear%st%tube_bound
     ge%rigid = gear%st%rigid
+    ge%margin_in = 0.0_wp
+    ge%margin_out = 0.0_wp
     ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
     ! secondary forces (landyn_tube_friction). Off by default: then nothing here runs.
     if (gear%tube%on) ge%tube_bound = tube_bound_now(gear)
@@ -66,10 +68,16 @@ contains
     end if
     gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd)
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
+    ge%stroke(1:3) = s
     do k = 1, 3
+      call gear%buffer(k)%law%free_range(gear%st%s_hismin(k), gear%st%s_hismax(k), ge%free_lo(k), ge%free_hi(k))
       call gear%buffer(k)%law%resistance(s(k), sd(k), gear%st%s_hismin(k), gear%st%s_hismax(k), fpos(k), fneg(k))
     end do
     if (gear%tube%on) call add_tube_bound(ge%tube_bound, fpos(1), fneg(1))   ! tube friction (eq. 24)
+    h_look = 0.0_wp
+    if (present(dt)) h_look = dt
+    m_entry = strut_mode(gear%st%locked, gear%st%axial, gear%st%dir)
+    got_in = .false.
     ! Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
     ! into a rigid stop is locked (plastic impact on the stop).
     do k = 1, 3
@@ -116,6 +124,12 @@ contains
       q_tot = q_ine + q_grv + q_ext + q_buf + q_alp
       call solve_reduced(nrow, a, b, mdiag, q_tot, ge%qdd, lam, stat, errmsg)
       if (stat /= STAT_OK) return
+      if (iter == 1) then
+        do k = 1, 3
+          if (m_entry(k) /= 0) ge%margin_in(k) = mode_margin(m_entry(k), gear%st%dir(k), s(k), &
+            sd(k) + gear%sigma(k)*ge%qdd(idx_len(k))*h_look, ge%free_lo(k), ge%free_hi(k), 0.0_wp, 0.0_wp, 0.0_wp)
+        end do
+      end if
       ! Check each lock: the force it carries (the equivalent dynamic force) against the bound.
       changed = .false.
       if (present(dt)) then
@@ -139,6 +153,10 @@ contains
         ! Generalized force of the lock on the stroke s is sigma*axial: negative when it holds the
         ! strut against motion toward +s (bounded by f_pos), positive against -s (bounded by f_neg).
         demand = gear%sigma(k)*ge%axial(k)
+        if (m_entry(k) == 0 .and. .not. got_in(k)) then
+          ge%margin_in(k) = mode_margin(0, 0, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, fpos(k), fneg(k), demand)
+          got_in(k) = .true.
+        end if
         if (-demand > fpos(k)) then
           ge%locked(k) = .false.
           ge%dir(k) = 1
@@ -153,6 +171,11 @@ contains
         if (.not. ge%locked(k) .and. tried(k)) released(k) = .true.
       end do
       if (.not. changed) exit
+    end do
+    do k = 1, 3
+      ge%margin_out(k) = mode_margin(strut_mode(ge%locked(k), ge%axial(k), ge%dir(k)), ge%dir(k), s(k), &
+        sd(k) + gear%sigma(k)*ge%qdd(idx_len(k))*h_look, ge%free_lo(k), ge%free_hi(k), fpos(k), fneg(k), &
+        gear%sigma(k)*ge%axial(k))
     end do
 
     ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
@@ -238,6 +261,32 @@ contains
 
   end procedure gear_evaluate
 
+  !> The switching function of a strut's crush mode (gear_eval_t%margin_in, margin_out): >= 0
+  !! while the mode holds. Locked (mode 0): the force left before the lock gives way in either
+  !! direction, min(f_pos + demand, f_neg - demand); crushing (+1, -1): the stroke rate in the
+  !! crush direction after the step's velocity update (the crush logic locks the strut where it
+  !! reverses); free (2): the stroke left to the nearer end of the free range (either way: a free
+  !! strut's direction is not a mode).
+  pure real(wp) function mode_margin(mode, dir, s, sd_after, lo, hi, fpos, fneg, demand) result(g)
+    integer, intent(in) :: mode          !! strut_mode code [-]
+    integer, intent(in) :: dir           !! sliding direction [-]
+    real(wp), intent(in) :: s            !! stroke [m]
+    real(wp), intent(in) :: sd_after     !! stroke rate after the step's velocity update [m/s]
+    real(wp), intent(in) :: lo           !! lower end of the free range [m]
+    real(wp), intent(in) :: hi           !! upper end of the free range [m]
+    real(wp), intent(in) :: fpos         !! bound against motion toward +s [N]
+    real(wp), intent(in) :: fneg         !! bound against motion toward -s [N]
+    real(wp), intent(in) :: demand       !! generalized force of the lock on the stroke (sigma * axial) [N]
+    select case (mode)
+    case (0)
+      g = min(fpos + demand, fneg - demand)
+    case (1, -1)
+      g = real(dir, wp)*sd_after
+    case default
+      g = min(hi - s, s - lo)
+    end select
+  end function mode_margin
+
   !> alpha when given, else zero.
   pure function alpha_or_zero(alpha) result(a)
     real(wp), intent(in), optional :: alpha(3)   !! [rad/s^2]
@@ -301,6 +350,7 @@ contains
     ! the cached factor's solves in the order of operations of LAPACK's dpotrs (landyn_small_spd)
     call small_upper_solve_multi(nrow, 1, c%chol_c, max_rows, lam, max_rows)
     call strokes(gear, c%q, zero, s, sd)
+    ge%stroke(1:3) = s
     do k = 1, 3
       ge%axial(k) = -lam(n_phi + k)
       call gear%buffer(k)%law%resistance(s(k), 0.0_wp, c%s_hismin(k), c%s_hismax(k), fpos, fneg)
@@ -310,6 +360,8 @@ contains
         ge%rigid = .false.
         return
       end if
+      ge%margin_in(k) = mode_margin(0, 0, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, fpos, fneg, demand)
+      ge%margin_out(k) = ge%margin_in(k)
     end do
     ge%qdd = 0.0_wp
     ge%f_body = f_foot
