@@ -120,9 +120,15 @@ def main():
             if cached:
                 os.makedirs(a.ref_cache, exist_ok=True)
                 np.savez(cached, ref=ref, check=ref_check)
-        conv = 1e3 * np.max(np.abs(ref_check - ref[:a.check_cases]))
+        per = 1e3 * np.max(np.abs(ref_check - ref[:a.check_cases]).reshape(a.check_cases, -1), axis=1)
+        conv = per.max()
         print("reference: fixed dt = %.3g s; against dt/2 on cases 1..%d: largest crush-length difference %.4f mm"
               % (a.ref_dt, a.check_cases, conv))
+        if conv > 0.1:
+            # errors below 0.1 mm cannot be told apart from the reference's own error on those cases
+            print("WARNING: the reference is not converged to 0.1 mm on %d of the %d cases checked "
+                  "(per case: %s mm); the errors below are against an uncertain reference"
+                  % (np.sum(per > 0.1), a.check_cases, ", ".join("%.3f" % x for x in per)))
         dirs = {s: make_dir(src, w, "s%d" % i, split_batch(s, batch)[0], a.cases, a.t_end)
                 for i, s in enumerate(a.schemes)}
         best, results = {}, {}
