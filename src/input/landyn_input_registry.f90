@@ -136,9 +136,9 @@ module landyn_input_registry
     input_var_t(g_simulation, 'frame_field_passes', k_int, default="0", takes='an integer', &
       meaning='gear passes per force evaluation (frame field from the previous pass)', &
       lo_op='>=', lo='0', hi_op='<=', hi='5', &
-      doc='1: the legs'' frame field takes the last evaluation''s body acceleration (the paper''s scheme, '// &
-      'a step late); 2 to 5: the gears are evaluated again in the field of the previous pass; 0: the '// &
-      'integrator''s choice, 1 for ''fixed'' and 2 for the others ([theory](../theory.md#frame-field))'), &
+      doc='1: the legs'' frame field is the last evaluation''s body acceleration (the paper''s scheme); '// &
+      '2 to 5: the gears evaluated again in the previous pass''s field; 0: 1 for ''fixed'', 2 '// &
+      'otherwise ([theory](../theory.md#frame-field))'), &
     input_var_t(g_simulation, 'max_correction_iter', k_int, default="20", takes='an integer', &
       meaning='iteration cap of the constraint correction', lo_op='>=', lo='1', doc='iteration cap of the correction'), &
     input_var_t(g_simulation, 'max_constraint_drift', k_real, default="1.0e-6_wp", unit='m', takes='a real number', &
