@@ -87,7 +87,8 @@ module landyn_input_registry
       length='name_len', takes='a quoted character string', &
       meaning="time integrator, one of those built in (the default 'adaptive', 'fixed')", choices='integrator', &
       doc='time integrator ([theory](../theory.md#time-integrators)): `''adaptive''` chooses its steps from `toler'// &
-      'ance`, locates events and ends steps on the output times; `''fixed''` is the paper''s scheme with step `dt`'), &
+      'ance`, locates events and ends steps on the output times; `''fixed''` is the paper''s scheme with step `dt`; `'// &
+      '''imex''` (an opt-in experiment) is `''adaptive''` with the footpads'' normal contact forces linearly implicit'), &
     input_var_t(g_simulation, 'dt', k_real, default="5.0e-6_wp", unit='s', takes='a real number', &
       meaning='fixed: the time step; adaptive: the first step tried', lo_op='>', lo='0', &
       doc='`''fixed''`: the integration time step (the paper used 5e-6 s); `''adaptive''`: the first step tried', &
