@@ -14,6 +14,11 @@ not store them).
   campaign_accuracy.py --batch build/release/landyn_batch --src . [--cases 200] [--rounds 2]
                        [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
                        [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR] [--t-end 2]
+                       [--per-case] [--energy]
+
+--per-case prints every case's largest crush-length error and steps per scheme; --energy runs
+every scheme once more, untimed, with the cases' histories (landyn_batch --history) and prints
+each case's energy residual [%] from them.
 
 A scheme is NAME[:var=value,...]: &simulation integrator = NAME with those &simulation variables.
 The reference is expensive (about 7 s per case); --ref-cache keeps it between runs (keyed by the
@@ -81,6 +86,21 @@ def run(batch, d, tag, cases):
     return wall, crush[order], steps[order]
 
 
+def energy_residuals(batch, d, tag, cases):
+    """Each case's /summary/energy_residual [%] from a run with the cases' histories."""
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    out = os.path.join(d, tag + "_e.h5")
+    p = subprocess.run([batch, "dispersion.nml", "--case", "1:%d" % cases, "--history", "-o", out, "-q"], cwd=d,
+                       env=env, capture_output=True, text=True)
+    if p.returncode not in (0, 5):
+        raise SystemExit("%s: landyn_batch exit %d\n%s%s" % (tag, p.returncode, p.stdout, p.stderr))
+    res = []
+    for k in range(1, cases + 1):
+        with h5py.File(os.path.join(d, "%s_e_case%06d.h5" % (tag, k)), "r") as f:
+            res.append(100.0 * float(f["summary/energy_residual"][()]))
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--batch", required=True, help="landyn_batch executable")
@@ -92,6 +112,8 @@ def main():
     ap.add_argument("--check-cases", type=int, default=5)
     ap.add_argument("--ref-cache", help="folder keeping the reference between runs")
     ap.add_argument("--t-end", type=float, help="simulated time per case [s] (default: the example's)")
+    ap.add_argument("--per-case", action="store_true", help="print each case's error and steps")
+    ap.add_argument("--energy", action="store_true", help="print each case's energy residual (untimed extra run)")
     a = ap.parse_args()
     batch = os.path.abspath(a.batch)
     src = os.path.abspath(a.src)
@@ -128,6 +150,16 @@ def main():
             print("%-34s %10.0f %8.3f mm %7d of %d %8d %11.0f" % (
                 s, a.cases * 3600.0 / best[s], err.max(), np.sum(err <= 0.1), a.cases, np.sum(err > 0.5),
                 np.mean(steps)))
+        if a.per_case:
+            for s in a.schemes:
+                crush, steps = results[s]
+                err = 1e3 * np.max(np.abs(crush - ref).reshape(a.cases, -1), axis=1)
+                print("%-34s error [mm] %s" % (s, " ".join("%8.3f" % e for e in err)))
+                print("%-34s steps      %s" % ("", " ".join("%8d" % n for n in steps)))
+        if a.energy:
+            for i, s in enumerate(a.schemes):
+                print("%-34s residual [%%] %s" % (s, " ".join("%8.4f" % r for r in energy_residuals(
+                    batch, dirs[s], "s%d" % i, a.cases))))
 
 
 if __name__ == "__main__":
