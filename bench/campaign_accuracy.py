@@ -14,10 +14,14 @@ not store them).
   campaign_accuracy.py --batch build/release/landyn_batch --src . [--cases 200] [--rounds 2]
                        [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
                        [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR] [--t-end 2]
+                       [--per-case] [--energy]
+
+--per-case prints every case's largest crush-length error and steps per scheme; --energy runs
+every scheme once more, untimed, with the cases' histories (landyn_batch --history) and prints
+each case's energy residual [%] from them.
 
 A scheme is NAME[:var=value,...][@BATCH]: &simulation integrator = NAME with those &simulation
 variables, run by the landyn_batch BATCH when given (to compare builds in one interleaved run).
---per-case prints every case's largest crush-length error and steps per scheme.
 The reference is expensive (about 7 s per case); --ref-cache keeps it between runs (keyed by the
 case count, the reference step and the base deck's text).
 """
@@ -89,6 +93,21 @@ def run(batch, d, tag, cases):
     return wall, crush[order], steps[order]
 
 
+def energy_residuals(batch, d, tag, cases):
+    """Each case's /summary/energy_residual [%] from a run with the cases' histories."""
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    out = os.path.join(d, tag + "_e.h5")
+    p = subprocess.run([batch, "dispersion.nml", "--case", "1:%d" % cases, "--history", "-o", out, "-q"], cwd=d,
+                       env=env, capture_output=True, text=True)
+    if p.returncode not in (0, 5):
+        raise SystemExit("%s: landyn_batch exit %d\n%s%s" % (tag, p.returncode, p.stdout, p.stderr))
+    res = []
+    for k in range(1, cases + 1):
+        with h5py.File(os.path.join(d, "%s_e_case%06d.h5" % (tag, k)), "r") as f:
+            res.append(100.0 * float(f["summary/energy_residual"][()]))
+    return res
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--batch", required=True, help="landyn_batch executable")
@@ -101,6 +120,7 @@ def main():
     ap.add_argument("--ref-cache", help="folder keeping the reference between runs")
     ap.add_argument("--t-end", type=float, help="simulated time per case [s] (default: the example's)")
     ap.add_argument("--per-case", action="store_true", help="print each case's error and steps")
+    ap.add_argument("--energy", action="store_true", help="print each case's energy residual (untimed extra run)")
     a = ap.parse_args()
     batch = os.path.abspath(a.batch)
     src = os.path.abspath(a.src)
@@ -149,6 +169,10 @@ def main():
             errs = {s: 1e3 * np.max(np.abs(results[s][0] - ref).reshape(a.cases, -1), axis=1) for s in a.schemes}
             for c in range(a.cases):
                 print("%4d " % (c + 1) + " ".join("%8.3f %8d" % (errs[s][c], results[s][1][c]) for s in a.schemes))
+        if a.energy:
+            for i, s in enumerate(a.schemes):
+                print("%-34s residual [%%] %s" % (s, " ".join("%8.4f" % r for r in energy_residuals(
+                    split_batch(s, batch)[1], dirs[s], "s%d" % i, a.cases))))
 
 
 if __name__ == "__main__":

@@ -86,8 +86,9 @@ module landyn_input_registry
     input_var_t(g_simulation, 'integrator', k_string, default="'adaptive'", &
       length='name_len', takes='a quoted character string', &
       meaning="time integrator, one of those built in (the default 'adaptive', 'fixed')", choices='integrator', &
-      doc='time integrator ([theory](../theory.md#time-integrators)): `''adaptive''` chooses its steps from `toler'// &
-      'ance`, locates events and ends steps on the output times; `''fixed''` is the paper''s scheme with step `dt`'), &
+      doc='time integrator ([theory](../theory.md#time-integrators)): `''adaptive''`, steps from `tolerance`, '// &
+      'events located; `''fixed''`, the paper''s scheme with step `dt`; `''imex''` (an experiment), '// &
+      '`''adaptive''` with linearly implicit footpad contact'), &
     input_var_t(g_simulation, 'dt', k_real, default="5.0e-6_wp", unit='s', takes='a real number', &
       meaning='fixed: the time step; adaptive: the first step tried', lo_op='>', lo='0', &
       doc='`''fixed''`: the integration time step (the paper used 5e-6 s); `''adaptive''`: the first step tried', &
@@ -137,7 +138,7 @@ module landyn_input_registry
       meaning='gear passes per force evaluation (frame field from the previous pass)', &
       lo_op='>=', lo='0', hi_op='<=', hi='5', &
       doc='1: the legs'' frame field is the last evaluation''s body acceleration (the paper''s scheme); '// &
-      '2 to 5: the gears evaluated again in the previous pass''s field; 0: 1 for ''fixed'', 2 '// &
+      '2 to 5: the gears evaluated again in the previous pass''s field; 0: 2 for ''adaptive'', 1 '// &
       'otherwise ([theory](../theory.md#frame-field))'), &
     input_var_t(g_simulation, 'max_correction_iter', k_int, default="20", takes='an integer', &
       meaning='iteration cap of the constraint correction', lo_op='>=', lo='1', doc='iteration cap of the correction'), &

@@ -58,6 +58,7 @@ module landyn_contact_law
     procedure(spring_force_i), deferred :: spring_force      !! conservative part of F_Z, dE/d(delta) [N]
     procedure(elastic_energy_i), deferred :: elastic_energy  !! energy E(delta) stored in the spring part [J]
     procedure :: dissipation_power                           !! power the contact removes, (F_Z - spring) delta_dot [W]
+    procedure :: tangent                                     !! dF_Z/d(delta), dF_Z/d(delta_dot) [N/m, N s/m]
   end type contact_law_t
 
   abstract interface
@@ -167,6 +168,33 @@ contains
     real(wp) :: p                             !! dissipated power [W]
     p = (self%normal_force(delta, delta_dot, state) - self%spring_force(delta, state))*delta_dot
   end function dissipation_power
+
+  !> The tangent of the normal force at (delta, delta_dot): k = dF_Z/d(delta), c = dF_Z/d(delta_dot),
+  !! by differences of normal_force with the same contact history (every law; a law may override it
+  !! with its analytic derivatives). k is the one-sided derivative in the direction the penetration
+  !! moves (delta_dot >= 0: deeper), second order, step 1e-6 of the penetration (at least 1e-10 m),
+  !! so that a law whose branch changes there (regolith at its deepest sinkage) gives the branch the
+  !! step enters; c is a central difference, step 1e-6 of the rate (at least 1e-6 m/s). Outside
+  !! the ground (delta <= 0) both are 0. Used by the linearly implicit footpad contact
+  !! (landyn_scheme_imex).
+  pure subroutine tangent(self, delta, delta_dot, k, c, state)
+    class(contact_law_t), intent(in) :: self  !! the law
+    real(wp), intent(in) :: delta             !! penetration [m]
+    real(wp), intent(in) :: delta_dot         !! penetration rate [m/s]
+    real(wp), intent(out) :: k                !! dF_Z/d(delta) [N/m]
+    real(wp), intent(out) :: c                !! dF_Z/d(delta_dot) [N s/m]
+    type(contact_state_t), intent(in), optional :: state  !! contact history of the footpad
+    real(wp) :: hd, hv
+    k = 0.0_wp
+    c = 0.0_wp
+    if (delta <= 0.0_wp) return
+    hd = max(1.0e-6_wp*delta, 1.0e-10_wp)
+    if (delta_dot < 0.0_wp) hd = -min(hd, 0.25_wp*delta)   ! backward: stay inside the ground
+    k = (-3.0_wp*self%normal_force(delta, delta_dot, state) + 4.0_wp*self%normal_force(delta + hd, delta_dot, state) &
+         - self%normal_force(delta + 2.0_wp*hd, delta_dot, state))/(2.0_wp*hd)
+    hv = max(1.0e-6_wp*abs(delta_dot), 1.0e-6_wp)
+    c = (self%normal_force(delta, delta_dot + hv, state) - self%normal_force(delta, delta_dot - hv, state))/(2.0_wp*hv)
+  end subroutine tangent
 
   !> The Hertz spring force K delta^n (0 outside the ground).
   pure function hertz_spring_force(self, delta, state) result(f)

@@ -95,6 +95,7 @@ module landyn_gear_base
     procedure(new_snapshot_iface), deferred :: new_snapshot            !! allocates a snapshot of the gear's type
     procedure(save_iface), deferred :: save_state                      !! copies the evolving state out
     procedure(restore_iface), deferred :: restore_state                !! puts a saved state back
+    procedure :: footpad_response                                      !! response to a footpad force [m/s^2/N, ...]
   end type gear_base_t
 
   !> The evolving state of a gear (save_state, restore_state): each gear type extends it.
@@ -368,6 +369,46 @@ module landyn_gear_base
   end interface
 
 contains
+
+  !> The gear's linear response to a footpad force along `dir` at the decisions of an evaluation:
+  !! with the body's frame held (the same field), the changes of the generalized accelerations and of
+  !! the load on the body per newton of footpad force, and whether the decisions (locks, sliding
+  !! directions, rigid) stay those of `ge`. Default for every gear type: the difference of a second
+  !! evaluation with the footpad force increased by df = max(1 N, 1e-4 |f_foot|) (the DAE is linear
+  !! in the footpad force at fixed decisions; a gear type may override it with one more solve of its
+  !! factorised system). ok = .false. (and the responses 0) when the decisions differ.
+  subroutine footpad_response(self, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
+    class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+    type(gear_eval_t), intent(in) :: ge         !! its evaluation at f_foot and f_field
+    real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
+    real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame of that evaluation, gear frame [m/s^2]
+    real(wp), intent(in) :: dir(3)              !! unit direction of the added force, gear frame [-]
+    real(wp), intent(out) :: qdd_u(max_gear_q)  !! d qdd / dF [m/s^2/N, rad/s^2/N]
+    real(wp), intent(out) :: f_body_u(3)        !! d f_body / dF, gear frame [-]
+    real(wp), intent(out) :: m_body_u(3)        !! d m_body / dF, gear axes [m]
+    logical, intent(out) :: ok                  !! the decisions did not change [-]
+    integer, intent(out) :: stat                !! STAT_OK on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    real(wp), intent(in), optional :: dt        !! the step of that evaluation (velocity-level locking) [s]
+    real(wp), intent(in), optional :: alpha(3)  !! its body angular acceleration, gear axes [rad/s^2]
+    type(gear_eval_t) :: g2
+    real(wp) :: df
+    integer :: ns
+    df = max(1.0_wp, 1.0e-4_wp*norm2(f_foot))
+    call self%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
+    qdd_u = 0.0_wp
+    f_body_u = 0.0_wp
+    m_body_u = 0.0_wp
+    ok = .false.
+    if (stat /= 0) return
+    ns = self%strut_count()
+    ok = all(g2%locked(1:ns) .eqv. ge%locked(1:ns)) .and. all(g2%dir(1:ns) == ge%dir(1:ns)) &
+         .and. (g2%rigid .eqv. ge%rigid)
+    if (.not. ok) return
+    qdd_u = (g2%qdd - ge%qdd)/df
+    f_body_u = (g2%f_body - ge%f_body)/df
+    m_body_u = (g2%m_body - ge%m_body)/df
+  end subroutine footpad_response
 
   !> Crush mode of a strut, the same codes for every gear type (the simulation counts their
   !! switches): 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding against a nonzero
