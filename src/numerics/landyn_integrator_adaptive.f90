@@ -125,8 +125,7 @@ contains
     integer, intent(out) :: stat                         !! 0 on success
     character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
     integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
-    real(wp) :: h, h_g, t_new, err, fac, acc_t(3), alpha_t(3)
-    integer :: k
+    real(wp) :: h, h_g, t_new, err
     logical :: ok, event, rejected
     character(len=msg_len) :: m2
 
@@ -161,31 +160,8 @@ contains
       end if
       if ((.not. ok .and. h > self%h_min) .or. &
           (ok .and. h > self%h_event*(1.0_wp + 1.0e-9_wp) .and. (err > 1.0_wp .or. event))) then
-        ! reject: back to the state at t, retry shorter
-        call sim_restore(sim, self%snap(self%ip))
-        if (.not. ok) then
-          h = 0.25_wp*h
-        else if (event) then
-          h = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
-                         inp%simulation%tipover_angle)
-        else
-          h = h*max(0.1_wp, step_factor(err, self%smooth))
-        end if
-        if (ok) then
-          self%h = clip(self, sim, self%t, max(h, self%h_event))
-        else
-          self%h = clip(self, sim, self%t, max(h, self%h_min))
-        end if
-        res%n_rejected = res%n_rejected + 1
+        call retry(self, sim, inp, res, h, ok, err, event, stat, m2)
         rejected = .true.
-        ! the body's accelerations at t are known from the first evaluation of t (copied: ev is
-        ! intent(out) of sim_evaluate)
-        acc_t = self%evs(self%i_cur)%acc
-        alpha_t = self%evs(self%i_cur)%alpha
-        call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%evs(self%i_cur), stat, m2, acc_field=acc_t, &
-                          alpha_field=alpha_t, &
-                          v_lead=0.5_wp*self%h_last)
-        res%n_evaluations = res%n_evaluations + 1
         if (stat /= 0) then
           errmsg = m2
           exit
@@ -222,12 +198,68 @@ contains
       done = .true.
       return
     end if
-    ! next step: the usual controller (err ~ h^3 for the second-difference estimate, ~ h^2 for the
-    ! first-order one), growth at most 2, none right after a rejection
+    call next_step(self, sim, inp, t_new, h, h_g, err, event, rejected)
+  end subroutine adaptive_step
+
+  !> A rejected step h: back to the state at t, the step to retry (a quarter after a failure, aimed
+  !! at the event's zero after an event, from the error estimate otherwise), and the state at t
+  !! evaluated again for it (in the field of the body accelerations of its first evaluation).
+  subroutine retry(self, sim, inp, res, h, ok, err, event, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation, back at t
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res             !! counters
+    real(wp), intent(in) :: h                            !! the rejected step [s]
+    logical, intent(in) :: ok                            !! the step itself succeeded [-]
+    real(wp), intent(in) :: err                          !! its error / tolerance [-]
+    logical, intent(in) :: event                         !! it contained an event [-]
+    integer, intent(out) :: stat                         !! 0 on success (of the re-evaluation)
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    real(wp) :: hn, acc_t(3), alpha_t(3)
+    call sim_restore(sim, self%snap(self%ip))
+    if (.not. ok) then
+      hn = 0.25_wp*h
+    else if (event) then
+      hn = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
+                      inp%simulation%tipover_angle)
+    else
+      hn = h*max(0.1_wp, step_factor(err, self%smooth))
+    end if
+    if (ok) then
+      self%h = clip(self, sim, self%t, max(hn, self%h_event))
+    else
+      self%h = clip(self, sim, self%t, max(hn, self%h_min))
+    end if
+    res%n_rejected = res%n_rejected + 1
+    ! the body's accelerations at t are known from the first evaluation of t (copied: ev is
+    ! intent(out) of sim_evaluate)
+    acc_t = self%evs(self%i_cur)%acc
+    alpha_t = self%evs(self%i_cur)%alpha
+    call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
+                      alpha_field=alpha_t, v_lead=0.5_wp*self%h_last)
+    res%n_evaluations = res%n_evaluations + 1
+  end subroutine retry
+
+  !> After an accepted step h to t_new: the next step (the usual controller, err ~ h^3 for the
+  !! second-difference estimate and ~ h^2 for the first-order one, growth at most 2 and none right
+  !! after a rejection; within an event bracket the step aimed past the event's zero, after the
+  !! located event the step that found it), then the records rotated.
+  subroutine next_step(self, sim, inp, t_new, h_step, h_g, err, event, rejected)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation at t_new
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    real(wp), intent(in) :: t_new                        !! time reached [s]
+    real(wp), intent(in) :: h_step                       !! the accepted step [s]
+    real(wp), intent(in) :: h_g                          !! the step the evaluation at t_new was made for [s]
+    real(wp), intent(in) :: err                          !! its error / tolerance [-]
+    logical, intent(in) :: event                         !! it contained an event [-]
+    logical, intent(in) :: rejected                      !! a step was rejected before it [-]
+    real(wp) :: h, fac
+    integer :: k
     fac = 2.0_wp
     if (err > 0.0_wp) fac = min(2.0_wp, step_factor(err, self%smooth))
     if (rejected) fac = min(fac, 1.0_wp)
-    h = max(self%h_event, min(self%h_max, h*max(0.2_wp, fac)))
+    h = max(self%h_event, min(self%h_max, h_step*max(0.2_wp, fac)))
     if (event .and. self%bracket) then
       ! the located event is behind: back to the step that found it
       self%bracket = .false.
@@ -247,7 +279,7 @@ contains
     self%smooth = .not. event
     self%ip = 3 - self%ip
     self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
-  end subroutine adaptive_step
+  end subroutine next_step
 
   !> The step to retry after the step h from the current state (evaluated in e0) was rejected for
   !! an event (found in e1): it becomes the end of the bracket, and the retry aims half the event
