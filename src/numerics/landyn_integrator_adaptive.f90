@@ -38,7 +38,7 @@ module landyn_integrator_adaptive
   implicit none
   private
 
-  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change
+  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change, weighted_max
 
   integer, parameter :: NO_STEP = 4   !! from adaptive_step when no step down to dt_min succeeds (the value sim_accept
                                       !! gives a non-finite state, SIM_NON_FINITE) [-]
@@ -77,6 +77,10 @@ module landyn_integrator_adaptive
   contains
     procedure :: start => adaptive_start   !! evaluates and records the state at t = 0
     procedure :: step => adaptive_step     !! one accepted step (retries and event location inside)
+    ! the two parts a scheme on this step control replaces (landyn_integrator_imex)
+    procedure :: advance => adaptive_advance          !! the update formula: the step h from the current state
+    procedure :: local_error => adaptive_local_error  !! error / tolerance of the step just tried
+    procedure, non_overridable :: kick                !! velocity update length of a step [s]
   end type adaptive_integrator_t
 
 contains
@@ -103,7 +107,7 @@ contains
     self%ip = 1
     call sim_save(sim, self%snap(1))
     self%h_last = 0.0_wp
-    call sim_evaluate(sim, inp, 0.0_wp, kick(self, self%h), self%evs(self%i_cur), stat, errmsg)
+    call sim_evaluate(sim, inp, 0.0_wp, self%kick(self%h), self%evs(self%i_cur), stat, errmsg)
     res%n_evaluations = res%n_evaluations + 1
     if (stat /= 0) then
       call finish(sim%model, res, 0.0_wp)
@@ -138,7 +142,7 @@ contains
       if (t_new >= self%t_end - self%slack) t_new = self%t_end
       err = 0.0_wp
       event = .false.
-      call leapfrog_advance(sim, inp, self%evs(self%i_cur), h, stat, m2, kick=kick(self, h))
+      call self%advance(sim, inp, h, stat, m2)
       ok = stat == 0
       if (ok) ok = body_is_finite(sim%model%body)
       if (ok) then
@@ -149,12 +153,7 @@ contains
         ok = stat == 0
       end if
       if (ok) then
-        if (self%smooth) then
-          err = error_norm2(self%evs(self%i_prev), self%evs(self%i_cur), self%evs(self%i_new), self%h_last, h, &
-                            sim%l_char, self%tol, sim%model%n_gears)
-        else
-          err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%l_char, self%tol, sim%model%n_gears)
-        end if
+        err = self%local_error(sim, h)
         event = discrete_change(self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
                                 inp%simulation%tipover_angle)
       end if
@@ -170,7 +169,8 @@ contains
       end if
       if (.not. ok) then
         stat = max(stat, NO_STEP)
-        write (errmsg, '(a,es10.3,a,es12.5,a,a)') 'adaptive integrator: no step down to dt_min = ', self%h_min, &
+        write (errmsg, '(a,a,es10.3,a,es12.5,a,a)') trim(res%integrator), ' integrator: no step down to dt_min = ', &
+          self%h_min, &
           ' s succeeds at t = ', self%t, ' s: ', trim(m2)
       end if
       exit
@@ -235,7 +235,7 @@ contains
     ! intent(out) of sim_evaluate)
     acc_t = self%evs(self%i_cur)%acc
     alpha_t = self%evs(self%i_cur)%alpha
-    call sim_evaluate(sim, inp, self%t, kick(self, self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
+    call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
                       alpha_field=alpha_t, v_lead=0.5_wp*self%h_last)
     res%n_evaluations = res%n_evaluations + 1
   end subroutine retry
@@ -351,6 +351,32 @@ contains
     end if
     hn = max(hn, self%h_event)
   end function aim_after
+
+  !> The leapfrog step h from the current state (evaluated in evs(i_cur)), with the variable-step kick.
+  subroutine adaptive_advance(self, sim, inp, h, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation, advanced by h
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    real(wp), intent(in) :: h                            !! step [s]
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    call leapfrog_advance(sim, inp, self%evs(self%i_cur), h, stat, errmsg, kick=self%kick(h))
+  end subroutine adaptive_advance
+
+  !> The local error of the step h just tried (evaluated in evs(i_new)) over the tolerance:
+  !! error_norm2 from the last three evaluations, error_norm right after an event.
+  function adaptive_local_error(self, sim, h) result(err)
+    class(adaptive_integrator_t), intent(in) :: self     !! integrator (records)
+    type(sim_t), intent(in) :: sim                       !! simulation (counts, size)
+    real(wp), intent(in) :: h                            !! step tried [s]
+    real(wp) :: err                                      !! error / tolerance [-]
+    if (self%smooth) then
+      err = error_norm2(self%evs(self%i_prev), self%evs(self%i_cur), self%evs(self%i_new), self%h_last, h, &
+                        sim%l_char, self%tol, sim%model%n_gears)
+    else
+      err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%l_char, self%tol, sim%model%n_gears)
+    end if
+  end function adaptive_local_error
 
   !> The usual step-size factor 0.9 err^(-1/p): p = 3 for the second-difference estimate (error
   !! ~ h^3), 2 for the first-order one (~ h^2).

@@ -33,8 +33,8 @@ module landyn_scheme_imex
   use landyn_gear_base, only: gear_eval_t
   use landyn_sim_model, only: sim_t, sim_eval_t
   use landyn_sim_state, only: max_nv, vel_layout, sim_commit_evaluation, sim_moving, sim_gather_velocities, &
-                              sim_scatter_velocities, sim_gather_accelerations, sim_arrest, sim_increment_positions, &
-                              sim_project_positions, sim_project_velocities, sim_commit_discrete
+                              sim_gather_accelerations
+  use landyn_scheme_leapfrog, only: leapfrog_move
   implicit none
   private
 
@@ -57,14 +57,11 @@ module landyn_scheme_imex
 contains
 
   !> The responses of every footpad in contact to its normal force, at the evaluation ev of the
-  !! committed state (call before the evaluation is committed): the field the evaluation was made
-  !! in is that of the body accelerations acc_field, alpha_field, and its step dt_eval.
-  subroutine imex_responses(sim, ev, acc_field, alpha_field, dt_eval, rsp, stat, errmsg)
+  !! committed state (call before the evaluation is committed), in the field the evaluation was
+  !! made in (ev%acc_field, ev%alpha_field) and for its step (ev%dt).
+  subroutine imex_responses(sim, ev, rsp, stat, errmsg)
     type(sim_t), intent(in) :: sim              !! simulation (committed state of ev)
     type(sim_eval_t), intent(in) :: ev          !! evaluation of that state
-    real(wp), intent(in) :: acc_field(3)        !! body acceleration ev's gears were evaluated in, global [m/s^2]
-    real(wp), intent(in) :: alpha_field(3)      !! its angular acceleration, lander axes [rad/s^2]
-    real(wp), intent(in) :: dt_eval             !! the step ev was made for [s]
     type(imex_response_t), intent(inout) :: rsp !! the responses (previous contents replaced)
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
@@ -76,8 +73,8 @@ contains
     stat = 0
     rsp%n_off = 0
     body = sim%model%body
-    body%acc = acc_field
-    body%alpha = alpha_field
+    body%acc = ev%acc_field
+    body%alpha = ev%alpha_field
     r = body%r
     do i = 1, sim%model%n_gears
       rsp%on(i) = .false.
@@ -89,8 +86,8 @@ contains
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         rsp%n(:, i) = surface_normal(sim%model%plane(i))
         dir = mtv3(rg, mtv3(r, rsp%n(:, i)))
-        call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, dt_eval, &
-                                mtv3(rg, alpha_field))
+        call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, ev%dt, &
+                                mtv3(rg, ev%alpha_field))
         if (stat /= 0) then
           write (errmsg, '(a,i0,a,es12.5,a,a)') 'imex: gear ', i, ' at t = ', ev%t, ' s: ', trim(m2)
           return
@@ -147,14 +144,7 @@ contains
       ge%qdd(1:nq) = a(first(i):first(i) + nq - 1)
       call sim%model%gear(i)%g%commit(ge)
     end do
-    call sim_arrest(sim, moving, v)
-    call sim_scatter_velocities(sim, moving, v)
-    call sim_increment_positions(sim, moving, v, h)
-    call sim_project_positions(sim, inp, moving, ev%t + h, stat, errmsg)
-    if (stat /= 0) return
-    call sim_project_velocities(sim, inp, ev%t + h, stat, errmsg)
-    if (stat /= 0) return
-    call sim_commit_discrete(sim, ev, ev%t + h, stat, errmsg)
+    call leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
   end subroutine imex_advance
 
   !> The implicit normal-force change of each footpad in contact (one after the other, each with

@@ -17,7 +17,7 @@ module landyn_scheme_leapfrog
   implicit none
   private
 
-  public :: leapfrog_advance
+  public :: leapfrog_advance, leapfrog_move
 
 contains
 
@@ -44,6 +44,21 @@ contains
     call sim_gather_velocities(sim, v, nv)
     call sim_gather_accelerations(sim, ev, moving, a)
     v(1:nv) = v(1:nv) + a(1:nv)*hk
+    call leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
+  end subroutine leapfrog_advance
+
+  !> The rest of a leapfrog step once the end-of-step velocities v are known (every scheme written
+  !! on the leapfrog shares it): the crush decisions over the step, positions moved with v for h,
+  !! projected onto the constraints (positions, then velocities), the discrete state committed.
+  subroutine leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
+    type(sim_t), intent(inout) :: sim           !! simulation with ev committed, advanced to ev%t + h
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+    type(sim_eval_t), intent(in) :: ev          !! evaluation the step is taken with
+    logical, intent(in) :: moving(max_gears)    !! gear i moves [-]
+    real(wp), intent(in) :: v(max_nv)           !! end-of-step velocities [m/s, rad/s]
+    real(wp), intent(in) :: h                   !! step [s]
+    integer, intent(out) :: stat                !! 0 on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     call sim_arrest(sim, moving, v)
     call sim_scatter_velocities(sim, moving, v)
     call sim_increment_positions(sim, moving, v, h)
@@ -52,6 +67,6 @@ contains
     call sim_project_velocities(sim, inp, ev%t + h, stat, errmsg)
     if (stat /= 0) return
     call sim_commit_discrete(sim, ev, ev%t + h, stat, errmsg)
-  end subroutine leapfrog_advance
+  end subroutine leapfrog_move
 
 end module landyn_scheme_leapfrog

@@ -148,6 +148,7 @@ contains
     stat = STAT_OK
     ng = sim%model%n_gears
     ev%t = t
+    ev%dt = dt
     associate (model => sim%model)
       r = model%body%r
       ! the body as this evaluation sees it: its velocities led for the footpads, then its
@@ -216,6 +217,8 @@ contains
         force = model%body%mass*model%g_vec
         moment = 0.0_wp
         ev%locks_changed = .false.
+        ev%acc_field = body%acc
+        ev%alpha_field = body%alpha
         do i = 1, ng
           rg = model%rot(:, :, i)
           field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))

@@ -84,6 +84,10 @@ module landyn_sim_model
   !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
   type :: sim_eval_t
     real(wp) :: t = 0.0_wp                             !! time of the state [s]
+    real(wp) :: dt = 0.0_wp                            !! the step it was made for (lock decisions) [s]
+    real(wp) :: acc_field(3) = 0.0_wp                  !! body acceleration the gears were evaluated in (the
+                                                       !! legs' frame field, last pass), global [m/s^2]
+    real(wp) :: alpha_field(3) = 0.0_wp                !! its angular acceleration, lander axes [rad/s^2]
     real(wp) :: xd(3, max_gears) = 0.0_wp              !! footpad positions, global [m]
     real(wp) :: vd(3, max_gears) = 0.0_wp              !! footpad velocities, global [m/s]
     real(wp) :: delta(max_gears) = 0.0_wp              !! penetrations [m]
