@@ -87,7 +87,7 @@ contains
     n_changed = n_changed + 1
     a = w0*g0
     b = w1*g1
-    if ((a >= 0.0_wp .and. b < 0.0_wp) .or. (a < 0.0_wp .and. b >= 0.0_wp) .or. (a <= 0.0_wp .and. b > 0.0_wp)) then
+    if (((a >= 0.0_wp) .neqv. (b >= 0.0_wp)) .or. (a <= 0.0_wp .and. b > 0.0_wp)) then
       theta = min(theta, max(0.0_wp, min(1.0_wp, a/(a - b))))
     else
       located = .false.
