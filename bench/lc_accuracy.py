@@ -21,15 +21,16 @@ import tempfile
 import h5py
 import numpy as np
 
+from campaign_accuracy import scheme_text
+
 
 def deck_text(src, lc, spec):
     text = open(os.path.join(src, "input", "lc%d.nml" % lc)).read()
     text = re.sub(r"(?m)^\s*(integrator|dt|tolerance)\s*=.*$", "", text)
-    name, _, rest = spec.partition(":")
-    items = ["integrator = '%s'" % name] + [kv.strip() for kv in rest.split(",") if kv.strip()]
-    if name != "fixed" and not any(i.startswith("dt") for i in items):
-        items.append("dt = 5e-6")
-    text, n = re.subn(r"(?mi)^&simulation\b", "&simulation " + ", ".join(items) + ",", text)
+    items = scheme_text(spec)
+    if not spec.startswith("fixed") and "dt =" not in items:
+        items += ", dt = 5e-6"
+    text, n = re.subn(r"(?mi)^&simulation\b", "&simulation " + items + ",", text)
     assert n == 1
     return text
 
