@@ -1,9 +1,12 @@
-!> The one place where LANDYN calls LAPACK. Each wrapper turns LAPACK's INFO into a status
-!! and a message. Arrays are overwritten as LAPACK does (factorisation in A, solution in B).
-!! The matrix is passed with an explicit leading dimension so that callers hand over a whole
-!! (contiguous) work array and no temporary copy is made: no allocation in the time loop.
+!> The one place where LANDYN calls LAPACK (and the small unblocked Cholesky of landyn_small_spd,
+!! which replaces LAPACK's dpotf2 and BLAS dtrsv bit for bit at the orders of the time loop).
+!! Each wrapper turns LAPACK's INFO into a status and a message. Arrays are overwritten as LAPACK
+!! does (factorisation in A, solution in B). The matrix is passed with an explicit leading
+!! dimension so that callers hand over a whole (contiguous) work array and no temporary copy is
+!! made: no allocation in the time loop.
 module landyn_lapack
   use landyn_kinds, only: wp
+  use landyn_small_spd, only: small_upper_factor, small_upper_solve
   implicit none
   private
 
@@ -12,19 +15,16 @@ module landyn_lapack
 
   character(len=*), parameter :: constraint_hint = '; constraints redundant or singular configuration'  !! [-]
 
-  abstract interface
-    !> LAPACK's Cholesky factorisations (dpotrf blocked, dpotf2 unblocked) share one interface.
-    subroutine cholesky_iface(uplo, n, a, lda, info)
+  interface
+    !> LAPACK dpotrf: blocked Cholesky factorisation A = U^T U.
+    subroutine dpotrf(uplo, n, a, lda, info)
       import :: wp
       character(len=1), intent(in) :: uplo      !! 'U': upper triangle [-]
       integer, intent(in) :: n, lda             !! order, leading dimension [-]
       real(wp), intent(inout) :: a(lda, *)      !! matrix in, factor out [any]
       integer, intent(out) :: info              !! LAPACK INFO [-]
-    end subroutine cholesky_iface
+    end subroutine dpotrf
   end interface
-
-  !> LAPACK dpotrf (blocked) and dpotf2 (unblocked) Cholesky factorisations A = U^T U.
-  procedure(cholesky_iface) :: dpotrf, dpotf2
 
   interface
     !> LAPACK dgesv: solves A X = B for a general A by LU factorisation with partial pivoting.
@@ -35,14 +35,6 @@ module landyn_lapack
       integer, intent(out) :: ipiv(*)                  !! pivot indices (row i was swapped with ipiv(i)) [-]
       integer, intent(out) :: info                     !! LAPACK INFO: 0 ok, < 0 illegal argument, > 0 U(i,i) zero [-]
     end subroutine dgesv
-    !> BLAS dtrsv: solves a triangular system A x = b or A^T x = b in place.
-    subroutine dtrsv(uplo, trans, diag, n, a, lda, x, incx)
-      import :: wp
-      character(len=1), intent(in) :: uplo, trans, diag  !! 'U'|'L' triangle, 'N'|'T' transpose, 'N'|'U' unit diagonal [-]
-      integer, intent(in) :: n, lda, incx                !! order, leading dimension, stride of x [-]
-      real(wp), intent(in) :: a(lda, *)                  !! triangular matrix [any]
-      real(wp), intent(inout) :: x(*)                    !! right-hand side in, solution out [any]
-    end subroutine dtrsv
     !> LAPACK dposv: solves A X = B for a symmetric positive-definite A by Cholesky factorisation.
     subroutine dposv(uplo, n, nrhs, a, lda, b, ldb, info)
       import :: wp
@@ -88,24 +80,24 @@ contains
     integer :: info
     call dposv('U', n, 1, a, lda, b, n, info)
     stat = info
-    call spd_info(info, 'dposv', what, constraint_hint, errmsg)
+    call spd_info(info, 'LAPACK dposv', what, constraint_hint, errmsg)
   end subroutine solve_spd
 
-  !> Solves A x = b for a small symmetric positive-definite A with LAPACK's unblocked Cholesky
-  !! (dpotf2) and two BLAS triangular solves (dtrsv): the same arithmetic as dposv without the
-  !! blocking machinery, about half the cost at the sizes of a gear's DAE (order 6 to 9).
+  !> Solves A x = b for a small symmetric positive-definite A with the unblocked Cholesky factor and
+  !! triangular solves of landyn_small_spd: bit-identical to LAPACK's dpotf2 and BLAS dtrsv, without
+  !! their argument handling, which dominates at the sizes of a gear's DAE (order 6 to 9).
   subroutine solve_spd_unblocked(n, a, lda, b, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix (upper triangle used); overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
+    integer, intent(out) :: stat                   !! 0 on success, the failing minor's order otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     call cholesky(.true., n, a, lda, stat, errmsg, what, constraint_hint)
     if (stat /= 0) return
-    call dtrsv('U', 'T', 'N', n, a, lda, b, 1)
-    call dtrsv('U', 'N', 'N', n, a, lda, b, 1)
+    call small_upper_solve(n, a, lda, b, .true.)
+    call small_upper_solve(n, a, lda, b, .false.)
   end subroutine solve_spd_unblocked
 
   !> Cholesky factorisation of a symmetric positive-definite A (LAPACK dpotrf, upper triangle),
@@ -120,22 +112,23 @@ contains
     call cholesky(.false., n, a, lda, stat, errmsg, what, constraint_hint)
   end subroutine factor_spd
 
-  !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A with LAPACK's
-  !! unblocked dpotf2 (upper triangle), for the triangular solves of landyn_small_spd.
+  !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A, unblocked (upper
+  !! triangle; landyn_small_spd's small_upper_factor, bit-identical to LAPACK's dpotf2), for the
+  !! triangular solves of landyn_small_spd.
   subroutine factor_spd_unblocked(n, a, lda, stat, errmsg, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, its factor R out (upper triangle) [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
+    integer, intent(out) :: stat                   !! 0 on success, the failing minor's order otherwise [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     call cholesky(.true., n, a, lda, stat, errmsg, what, '')
   end subroutine factor_spd_unblocked
 
-  !> Upper Cholesky factor of A with LAPACK's dpotf2 (unblocked) or dpotrf (blocked); stat =
-  !! INFO and its message (spd_info, `hint` after the minor's number).
+  !> Upper Cholesky factor of A, unblocked (small_upper_factor, dpotf2's operations) or blocked
+  !! (LAPACK dpotrf); stat = INFO and its message (spd_info, `hint` after the minor's number).
   subroutine cholesky(unblocked, n, a, lda, stat, errmsg, what, hint)
-    logical, intent(in) :: unblocked               !! dpotf2 rather than dpotrf [-]
+    logical, intent(in) :: unblocked               !! small_upper_factor rather than dpotrf [-]
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, R out (upper triangle) [any]
@@ -144,23 +137,23 @@ contains
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number in the message [-]
     if (unblocked) then
-      call dpotf2('U', n, a, lda, stat)
-      if (stat /= 0) call spd_info(stat, 'dpotf2', what, hint, errmsg)
+      call small_upper_factor(n, a, lda, stat)
+      if (stat /= 0) call spd_info(stat, 'unblocked Cholesky', what, hint, errmsg)
     else
       call dpotrf('U', n, a, lda, stat)
-      if (stat /= 0) call spd_info(stat, 'dpotrf', what, hint, errmsg)
+      if (stat /= 0) call spd_info(stat, 'LAPACK dpotrf', what, hint, errmsg)
     end if
   end subroutine cholesky
 
   !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
   subroutine spd_info(info, routine, what, hint, errmsg)
     integer, intent(in) :: info                    !! LAPACK INFO [-]
-    character(len=*), intent(in) :: routine        !! LAPACK routine [-]
+    character(len=*), intent(in) :: routine        !! factorisation, e.g. 'LAPACK dpotrf' [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number [-]
     character(len=*), intent(inout) :: errmsg      !! message [-]
     if (info > 0) then
-      write (errmsg, '(a,a,a,a,i0,a,a,a)') trim(what), ': matrix is not positive definite (LAPACK ', routine, &
+      write (errmsg, '(a,a,a,a,i0,a,a,a)') trim(what), ': matrix is not positive definite (', routine, &
         ': leading minor ', info, ' is not positive', hint, ')'
     else if (info < 0) then
       call illegal_argument(info, routine, what, errmsg)

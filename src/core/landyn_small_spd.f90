@@ -10,12 +10,19 @@
 !! checks at orders <= 9. They do the same operations in the same order as dtrsv/dtrsm (upper,
 !! non-unit; the BLAS skip a column whose pivot entry is zero, which changes at most the sign of a zero),
 !! so that results are bit-identical to LAPACK's dpotrs.
+!!
+!! small_upper_factor is the Cholesky factorisation in the order of operations of the reference
+!! LAPACK dpotf2 (upper; its ddot, dgemv and dscal with unit or row stride): bit-identical to it,
+!! at a fraction of the cost at these orders (the reference routines' argument checks, lsame and
+!! disnan calls cost ~15 % of a run). Why not a library: no maintained Fortran library offers
+!! an unblocked small-matrix Cholesky that is bit-identical to the LAPACK factor it replaces.
 module landyn_small_spd
+  use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
   use landyn_kinds, only: wp
   implicit none
   private
 
-  public :: small_spd_solve, small_upper_solve, small_upper_solve_multi
+  public :: small_spd_solve, small_upper_solve, small_upper_solve_multi, small_upper_factor
 
 contains
 
@@ -59,6 +66,45 @@ contains
       b(i) = s/a(i, i)
     end do
   end subroutine small_spd_solve
+
+  !> Cholesky factor A = U^T U of an SPD matrix, upper triangle (A's strict lower triangle is not
+  !! touched), in the order of operations of the reference LAPACK dpotf2 ('U'): bit-identical to it.
+  !! stat = j > 0 when the leading minor of order j is not positive (or NaN); then a(j, j) holds the
+  !! non-positive pivot and the factor stops there, as in dpotf2.
+  pure subroutine small_upper_factor(n, a, lda, stat)
+    integer, intent(in) :: n               !! order [-]
+    integer, intent(in) :: lda             !! leading dimension of a [-]
+    real(wp), intent(inout) :: a(lda, n)   !! matrix in, factor U out (upper triangle) [any]
+    integer, intent(out) :: stat           !! 0 on success, else the order of the failing minor [-]
+    integer :: i, j, k
+    real(wp) :: ajj, r, s
+    stat = 0
+    do j = 1, n
+      ! dpotf2: ajj = a(j, j) - ddot(j - 1, a(1, j), 1, a(1, j), 1); ddot sums from zero, in order
+      s = 0.0_wp
+      do k = 1, j - 1
+        s = s + a(k, j)*a(k, j)
+      end do
+      ajj = a(j, j) - s
+      if (ajj <= 0.0_wp .or. ieee_is_nan(ajj)) then
+        a(j, j) = ajj
+        stat = j
+        return
+      end if
+      ajj = sqrt(ajj)
+      a(j, j) = ajj
+      ! dgemv('T', j - 1, n - j, -1, a(1, j + 1), lda, a(1, j), 1, 1, a(j, j + 1), lda), then
+      ! dscal(n - j, 1/ajj, a(j, j + 1), lda)
+      r = 1.0_wp/ajj
+      do i = j + 1, n
+        s = 0.0_wp
+        do k = 1, j - 1
+          s = s + a(k, i)*a(k, j)
+        end do
+        a(j, i) = r*(a(j, i) - s)
+      end do
+    end do
+  end subroutine small_upper_factor
 
   !> x <- U^-T x (transposed) or x <- U^-1 x for an upper triangular U (BLAS dtrsv 'U', 'T'|'N', 'N'
   !! with unit stride, same order of operations).
