@@ -152,10 +152,11 @@ contains
     inp%friction%law = lower(adjustl(inp%friction%law))
     if (.not. is_set(inp%friction%stribeck_speed)) &
       inp%friction%stribeck_speed = default_stribeck_speed(inp%friction%law)
-    ! the legs' frame field: coupled (2 passes) for the adaptive integrator, the paper's lagged one
-    ! for the others: its scheme 'fixed' and 'imex', measured with it (docs/theory.md, "Frame field passes")
-    if (inp%simulation%frame_field_passes == 0) inp%simulation%frame_field_passes = &
-      merge(2, 1, inp%simulation%integrator == 'adaptive')
+    ! the legs' frame field: the adaptive integrator's own (0: predicted, a second pass where a lock
+    ! changed), the paper's lagged one for the others: its scheme 'fixed' and 'imex', measured with it
+    ! (docs/theory.md, "Frame field passes")
+    if (inp%simulation%frame_field_passes == 0 .and. inp%simulation%integrator /= 'adaptive') &
+      inp%simulation%frame_field_passes = 1
     if (len_trim(inp%output%file) == 0) then
       if (allocated(inp%deck_name)) then
         inp%output%file = default_output_file(inp%deck_name)

@@ -138,8 +138,8 @@ module landyn_input_registry
       meaning='gear passes per force evaluation (frame field from the previous pass)', &
       lo_op='>=', lo='0', hi_op='<=', hi='5', &
       doc='1: the legs'' frame field is the last evaluation''s body acceleration (the paper''s scheme); '// &
-      '2 to 5: the gears evaluated again in the previous pass''s field; 0: 2 for ''adaptive'', 1 '// &
-      'otherwise ([theory](../theory.md#frame-field))'), &
+      '2 to 5: again in the previous pass''s field; 0: ''adaptive'' predicts it, a 2nd pass where a lock '// &
+      'changed; 1 otherwise ([theory](../theory.md#frame-field))'), &
     input_var_t(g_simulation, 'max_correction_iter', k_int, default="20", takes='an integer', &
       meaning='iteration cap of the constraint correction', lo_op='>=', lo='1', doc='iteration cap of the correction'), &
     input_var_t(g_simulation, 'max_constraint_drift', k_real, default="1.0e-6_wp", unit='m', takes='a real number', &

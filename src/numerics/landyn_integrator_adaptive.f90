@@ -38,7 +38,7 @@ module landyn_integrator_adaptive
   implicit none
   private
 
-  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change, weighted_max
+  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change, weighted_max, predicted_field
 
   integer, parameter :: NO_STEP = 4   !! from adaptive_step when no step down to dt_min succeeds (the value sim_accept
                                       !! gives a non-finite state, SIM_NON_FINITE) [-]
@@ -148,7 +148,7 @@ contains
       if (ok) then
         h_g = clip(self, sim, t_new, h)
         call sim_save(sim, self%snap(3 - self%ip))
-        call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, m2, v_lead=0.5_wp*h)
+        call evaluate_end(self, sim, inp, t_new, h, h_g, stat, m2)
         res%n_evaluations = res%n_evaluations + 1
         ok = stat == 0
       end if
@@ -200,6 +200,45 @@ contains
     end if
     call next_step(self, sim, inp, t_new, h, h_g, err, event, rejected)
   end subroutine adaptive_step
+
+  !> The evaluation at the end t_new of the step h just taken, made for the step h_g to follow. With
+  !! the adaptive integrator's own frame field (frame_field_passes = 0) the legs' field is predicted
+  !! from the last two accepted evaluations when no event lies between them (a second pass of the
+  !! gears follows only where a lock changed); otherwise it is sim_evaluate's default.
+  subroutine evaluate_end(self, sim, inp, t_new, h, h_g, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator (its work record is filled)
+    type(sim_t), intent(in) :: sim                       !! simulation at t_new
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    real(wp), intent(in) :: t_new                        !! time of the state [s]
+    real(wp), intent(in) :: h                            !! the step just taken [s]
+    real(wp), intent(in) :: h_g                          !! the step the evaluation is made for [s]
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    real(wp) :: acc(3), alpha(3)
+    if (inp%simulation%frame_field_passes == 0 .and. self%smooth .and. self%h_last > 0.0_wp) then
+      associate (e1 => self%evs(self%i_cur), e0 => self%evs(self%i_prev))
+        acc = predicted_field(e1%acc, e0%acc, h, self%h_last)
+        alpha = predicted_field(e1%alpha, e0%alpha, h, self%h_last)
+      end associate
+      call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, errmsg, acc_field=acc, &
+                        alpha_field=alpha, v_lead=0.5_wp*h)
+    else
+      call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, errmsg, v_lead=0.5_wp*h)
+    end if
+  end subroutine evaluate_end
+
+  !> Linear extrapolation of a body acceleration h past the current evaluation (value a1) from it
+  !! and the previous accepted one (a0, h_last before it): the frame field the adaptive integrator
+  !! predicts for the evaluation at the end of its step, with an error O(h h_last) instead of the
+  !! lagged field's O(h).
+  pure function predicted_field(a1, a0, h, h_last) result(a)
+    real(wp), intent(in) :: a1(3)       !! acceleration at the current state [m/s^2 or rad/s^2]
+    real(wp), intent(in) :: a0(3)       !! acceleration at the previous accepted state [m/s^2 or rad/s^2]
+    real(wp), intent(in) :: h           !! step from the current state [s]
+    real(wp), intent(in) :: h_last      !! step from the previous state to the current one, > 0 [s]
+    real(wp) :: a(3)                    !! predicted acceleration at the end of h [m/s^2 or rad/s^2]
+    a = a1 + (h/h_last)*(a1 - a0)
+  end function predicted_field
 
   !> A rejected step h: back to the state at t, the step to retry (a quarter after a failure, aimed
   !! at the event's zero after an event, from the error estimate otherwise), and the state at t

@@ -130,7 +130,9 @@ contains
     integer, intent(out) :: stat                !! 0 on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     real(wp), intent(in), optional :: acc_field(3)    !! body acceleration for the legs' frame field, global;
-                                                      !! default: the committed (last step's) one [m/s^2]
+                                                      !! default: the committed (last step's) one; with
+                                                      !! frame_field_passes = 0 a prediction, evaluated again
+                                                      !! only where the first pass changed a lock [m/s^2]
     real(wp), intent(in), optional :: alpha_field(3)  !! body angular acceleration for it, lander axes;
                                                       !! default: the committed one [rad/s^2]
     real(wp), intent(in), optional :: v_lead          !! the footpad velocities (contact damping, friction) are
@@ -138,6 +140,7 @@ contains
                                                       !! times the committed accelerations (the leapfrog's
                                                       !! velocities lag the positions by half a step); default 0 [s]
     integer :: ng, i, ns, nq, pass, n_pass
+    logical :: on_demand
     type(body_t) :: body
     logical :: thrusting, locked(max_struts)
     real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
@@ -211,9 +214,16 @@ contains
       ! With frame_field_passes > 1 the gears are evaluated again in the field of the body
       ! acceleration the previous pass gave (a fixed-point iteration of the body-leg coupling,
       ! contracting by about the legs' mass over the body's), so that a lock's stopping force
-      ! reaches the other legs in the step it acts (docs/theory.md, "Frame field").
+      ! reaches the other legs in the step it acts (docs/theory.md, "Frame field"). With 0 (the
+      ! adaptive integrator's own field) the field passed in is a prediction: a second pass only
+      ! where the first changed a lock; without one, two passes.
       n_pass = inp%simulation%frame_field_passes
+      on_demand = n_pass == 0 .and. present(acc_field)
+      if (n_pass == 0) n_pass = 2
       do pass = 1, n_pass
+        if (on_demand .and. pass == 2) then
+          if (.not. ev%locks_changed) exit
+        end if
         force = model%body%mass*model%g_vec
         moment = 0.0_wp
         ev%locks_changed = .false.
@@ -224,7 +234,7 @@ contains
           field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
           ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
           call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
-                                       sim%loads .and. pass == n_pass)
+                                       sim%loads .and. (pass == n_pass .or. on_demand))
           if (stat /= 0) then
             write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
             return
