@@ -183,7 +183,7 @@ contains
       call system_clock(c0, rate)
       do k = 1, n_samples
         if (law%has_stiction) then
-          call law%stick_slip_force(fst, vslip(:, k), 5.0e-6_wp*vslip(:, k), fn(k), ft)
+          call law%stick_slip_force(fst, vslip(:, k), 5.0e-6_wp*vslip(:, k), 5.0e-6_wp, fn(k), ft)
         else
           ft = law%friction_force(vslip(:, k), fn(k))
         end if

@@ -144,7 +144,7 @@ contains
     type(body_t) :: body
     logical :: thrusting, locked(max_struts)
     real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
-    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2)
+    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), hslip
     real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
 
@@ -191,8 +191,13 @@ contains
           ! whose footpad states were committed (not since the last booked one: after a rejected
           ! step the state at t is evaluated again, and its committed stick state is still t - h's)
           dslip = 0.0_wp
-          if (sim%loop%n > 0) dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_stick(:, i))
-          call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, ev%fn(i), ft, ev%stick_margin(i))
+          hslip = 0.0_wp
+          if (sim%loop%n > 0) then
+            dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_stick(:, i))
+            hslip = t - sim%loop%t_stick
+          end if
+          call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, hslip, ev%fn(i), ft, &
+                                              ev%stick_margin(i))
         else
           ev%stick_margin(i) = 0.0_wp
           ft = model%friction%friction_force(vslip, ev%fn(i))

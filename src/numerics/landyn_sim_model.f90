@@ -58,6 +58,7 @@ module landyn_sim_model
     real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
     real(wp) :: xd_stick(3, max_gears) = 0.0_wp        !! footpad positions of the evaluation whose footpad states
                                                        !! were committed last (the stick states' reference) [m]
+    real(wp) :: t_stick = 0.0_wp                       !! time of that evaluation [s]
     real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
     real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
     real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]

@@ -207,6 +207,7 @@ contains
     ng = sim%model%n_gears
     sim%model%footpad(1:ng) = ev%trial(1:ng)
     sim%loop%xd_stick(:, 1:ng) = ev%xd(:, 1:ng)   ! the positions those stick states belong to
+    sim%loop%t_stick = ev%t                       ! and their time
     do i = 1, ng
       call sim%model%gear(i)%g%settle()
       call sim%model%gear(i)%g%prepare(stat, m2)

@@ -29,9 +29,12 @@
 !! copy of it that it commits with the step. While stuck the ground holds the footpad with the
 !! spring-damper -k z - c v; when that force would exceed mu_s N the footpad slips with the law's
 !! sliding force mu(|v|) N + C_v |v|, directed as that trial force (a return mapping: -v/|v| in
-!! steady sliding, the held force's direction at break-away), the anchor being dragged along
-!! (z = -f/k); it sticks again when the trial force falls back inside the sliding force (a
-!! reversal or stop of the slip). A footpad at rest
+!! steady sliding, the held force's direction at break-away), the anchor being dragged along by
+!! what the bristle cannot hold: spring and damper act on the bristle's deflection rate, the slip
+!! velocity less the anchor's, so the deflection relaxes toward -f/k over c/k (implicit Euler over
+!! the step h; at once without damping), and every state changes by O(h) in a step; it sticks
+!! again when the trial force falls back inside the sliding force (a reversal or stop of the
+!! slip). A footpad at rest
 !! therefore stays at rest exactly (its anchor does not creep; the deflection is bounded by
 !! mu_s N/k), and the switch happens on a force criterion, so nothing chatters.
 !! coulomb_step, ty3 and ty6 are continuous through zero slip (regularised): the friction force
@@ -144,19 +147,21 @@ contains
   !> Friction force of a law with stiction, advancing the footpad's stick state `state` by one step
   !! (the caller passes a trial copy and commits it with the step; the law is not changed).
   !! dx_slip is the footpad's tangential displacement since the previous call (the slip velocity
-  !! times the step in a semi-implicit Euler scheme). See the module documentation.
-  pure subroutine stick_slip_force(self, state, v_slip, dx_slip, f_normal, f_t, margin)
+  !! times the step in a semi-implicit Euler scheme), made over the time h. See the module
+  !! documentation.
+  pure subroutine stick_slip_force(self, state, v_slip, dx_slip, h, f_normal, f_t, margin)
     class(friction_law_t), intent(in) :: self     !! the law
     type(friction_state_t), intent(inout) :: state  !! stick state of the footpad, advanced by the step
     real(wp), intent(in) :: v_slip(2)             !! slip velocity, local (t1, t2) [m/s]
     real(wp), intent(in) :: dx_slip(2)            !! tangential displacement since the last call, local [m]
+    real(wp), intent(in) :: h                     !! time over which dx_slip was made (>= 0) [s]
     real(wp), intent(in) :: f_normal              !! normal force magnitude [N]
     real(wp), intent(out) :: f_t(2)               !! friction force on the footpad, local (t1, t2) [N]
     real(wp), intent(out), optional :: margin     !! switching function of the stick state: the yield limit of
                                                   !! the state passed in minus the trial force; the state
                                                   !! returned is stuck exactly when it is >= 0 (0 without
                                                   !! contact) [N]
-    real(wp) :: z_tr(2), f_tr(2), n, lim, slide, fmag, speed
+    real(wp) :: z_tr(2), f_tr(2), n, lim, slide, fmag, speed, slid
     logical :: was_stuck
 
     n = max(f_normal, 0.0_wp)
@@ -197,7 +202,15 @@ contains
       ! direction meaningless, it is the direction of the force the footpad was held with.
       state%stuck = .false.
       f_t = (slide/fmag)*f_tr
-      state%z = -f_t/self%stick_stiffness    ! the anchor is dragged along
+      ! the anchor is dragged along by what the bristle (spring k and damper c in parallel)
+      ! cannot hold: f = -k z - c (v - anchor rate) = f_tr - (k + c/h) slid (f_tr/fmag) gives the
+      ! distance slid over h, (fmag - slide) h/(k h + c). Without damping z = -f_t/k.
+      if (self%stick_damping > 0.0_wp) then
+        slid = (fmag - slide)*max(h, 0.0_wp)/(self%stick_stiffness*max(h, 0.0_wp) + self%stick_damping)
+      else
+        slid = (fmag - slide)/self%stick_stiffness
+      end if
+      state%z = z_tr + (slid/fmag)*f_tr
     end if
     if (state%stuck .neqv. was_stuck) state%n_transitions = state%n_transitions + 1
   end subroutine stick_slip_force
