@@ -418,9 +418,6 @@ contains
     m_body_u = (g2%m_body - ge%m_body)/df
   end subroutine footpad_response
 
-  !> Crush mode of a strut, the same codes for every gear type (the simulation counts their
-  !! switches): 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding against a nonzero
-  !! bound), 2 sliding freely inside the crushed range (no force; its direction is not a mode).
   !> The crush mode a strut has after the step of an evaluation (strut_mode of the mode it leaves the
   !! step in: a strut stopped in the step and leaving it sliding, gear_eval_t%dir_after /= 0, is not
   !! locked after it).
@@ -437,6 +434,9 @@ contains
     end if
   end function strut_mode_after
 
+  !> Crush mode of a strut, the same codes for every gear type (the simulation counts their
+  !! switches): 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding against a nonzero
+  !! bound), 2 sliding freely inside the crushed range (no force; its direction is not a mode).
   elemental integer function strut_mode(locked, axial, dir) result(m)
     logical, intent(in) :: locked     !! strut locked [-]
     real(wp), intent(in) :: axial     !! axial buffer force [N]

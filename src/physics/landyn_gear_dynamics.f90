@@ -5,8 +5,10 @@
 !! at rest is LOCKED (its length rate is constrained to zero; the multiplier of that constraint is
 !! the equivalent dynamic force F of eq. 12). When F exceeds the buffer's bound in its direction,
 !! the strut crushes: it is released and the buffer transmits N = bound, the excess F - N drives
-!! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero locks again.
-!! This replaces the literal reading in which a strut keeps sliding with no force on it.
+!! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero within a step
+!! is stopped by a lock row for that step; the mode it leaves the step in (locked again, or sliding
+!! toward its holding force when that exceeds a bound) is decided by the force that holds it once
+!! stopped (after_stop; docs/theory.md, "The mode after a stop"). This replaces the literal reading in which a strut keeps sliding with no force on it.
 !!
 !! The augmented system [[M, A^T], [A, 0]] [qdd; lambda] = [Q; b] (eqs. 14-16, A = Phi_q plus the
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
