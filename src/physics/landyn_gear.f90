@@ -27,7 +27,7 @@
 module landyn_gear
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
-  use landyn_gear_base, only: gear_eval_t, strut_mode   ! the evaluation record and mode codes of every gear type
+  use landyn_gear_base, only: gear_eval_t, strut_mode, strut_mode_after   ! the evaluation record and mode codes of every gear type
   use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
@@ -96,6 +96,10 @@ module landyn_gear
     real(wp) :: max_drift = 0.0_wp                !! largest violation before correction [m]
     integer :: n_correction_iter = 0              !! largest number of correction iterations [-]
     real(wp) :: tube_bound = 0.0_wp               !! tube-friction bound of this step [N]
+    ! A strut stopped in this step by its lock row leaves it in the mode its holding force decided
+    ! (gear_eval_t%dir_after): applied by gear_settle after the step's projections
+    integer :: dir_after(n_struts) = 0                   !! direction it leaves the step in, 0: none [-]
+    real(wp) :: axial_after(n_struts) = 0.0_wp           !! its axial buffer force after the step [N]
     ! Rigid state: all three struts locked. The gear then has no degree of freedom: qd = qdd = 0
     ! exactly, q and the constraint matrix stay constant, and the Cholesky factor of A M^-1 A^T is
     ! computed once and reused until a strut breaks loose.

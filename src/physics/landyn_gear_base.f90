@@ -15,7 +15,8 @@ module landyn_gear_base
   implicit none
   private
 
-  public :: gear_base_t, gear_eval_t, gear_snapshot_t, gear_slot_t, gear_snapshot_slot_t, strut_name_len, strut_mode
+  public :: gear_base_t, gear_eval_t, gear_snapshot_t, gear_slot_t, gear_snapshot_slot_t, strut_name_len, strut_mode, &
+            strut_mode_after
 
   integer, parameter :: strut_name_len = 15     !! length of a strut's name [-]
 
@@ -46,6 +47,13 @@ module landyn_gear_base
     ! then halves the step). Units by mode: locked, the force left before the lock gives way [N];
     ! crushing, the stroke rate in its direction after the step's velocity update [m/s]; free, the
     ! stroke left to the nearer end of the free range [m].
+    ! A strut stopped within the step by its lock row (velocity level) is locked for the step
+    ! (locked, axial, s_lock above: the stopping force); the mode it leaves the step in is decided
+    ! by the force that holds it once stopped (docs/theory.md, "Mode switches"): dir_after = 0 when
+    ! it stays locked (and for every strut not stopped in the step), +1 / -1 when it leaves sliding
+    ! toward +s / -s with the bound of that side as its axial force, axial_after.
+    integer :: dir_after(max_struts) = 0          !! direction a stopped strut leaves the step in, 0: none [-]
+    real(wp) :: axial_after(max_struts) = 0.0_wp  !! its axial buffer force after the step [N]
     real(wp) :: margin_in(max_struts) = 0.0_wp    !! switching function of the entry mode [N, m/s, m]
     real(wp) :: margin_out(max_struts) = 0.0_wp   !! switching function of the decided mode [N, m/s, m]
     real(wp) :: stroke(max_struts) = 0.0_wp       !! strokes of the evaluated state (event location) [m]
@@ -409,6 +417,22 @@ contains
     f_body_u = (g2%f_body - ge%f_body)/df
     m_body_u = (g2%m_body - ge%m_body)/df
   end subroutine footpad_response
+
+  !> The crush mode a strut has after the step of an evaluation (strut_mode of the mode it leaves the
+  !! step in: a strut stopped in the step and leaving it sliding, gear_eval_t%dir_after /= 0, is not
+  !! locked after it).
+  elemental integer function strut_mode_after(locked, axial, dir, dir_after, axial_after) result(m)
+    logical, intent(in) :: locked       !! strut locked for the step [-]
+    real(wp), intent(in) :: axial       !! axial buffer force of the step [N]
+    integer, intent(in) :: dir          !! sliding direction of the step [-]
+    integer, intent(in) :: dir_after    !! direction it leaves a stop in, 0: none [-]
+    real(wp), intent(in) :: axial_after !! axial buffer force after the stop [N]
+    if (dir_after /= 0) then
+      m = strut_mode(.false., axial_after, dir_after)
+    else
+      m = strut_mode(locked, axial, dir)
+    end if
+  end function strut_mode_after
 
   !> Crush mode of a strut, the same codes for every gear type (the simulation counts their
   !! switches): 0 locked, +1 crushing toward +s, -1 crushing toward -s (sliding against a nonzero

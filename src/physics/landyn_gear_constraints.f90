@@ -145,6 +145,19 @@ contains
   end subroutine min_norm_correction
 
   module procedure gear_settle
+    integer :: k
+    ! A strut stopped in the step by its lock row leaves it in the mode its holding force decided
+    ! (gear_evaluate): at rest (the rate the lock row held at zero, up to round-off, is set to zero,
+    ! so that its sliding direction is the decided one and not the sign of a round-off).
+    do k = 1, 3
+      if (gear%st%dir_after(k) /= 0) then
+        gear%st%locked(k) = .false.
+        gear%st%dir(k) = gear%st%dir_after(k)
+        gear%st%axial(k) = gear%st%axial_after(k)
+        gear%st%qd(idx_len(k)) = 0.0_wp
+        gear%st%dir_after(k) = 0
+      end if
+    end do
     if (all(gear%st%locked) .and. .not. gear%st%rigid) then
       gear%st%qd = 0.0_wp
       gear%st%qdd = 0.0_wp

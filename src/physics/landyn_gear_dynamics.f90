@@ -5,8 +5,10 @@
 !! at rest is LOCKED (its length rate is constrained to zero; the multiplier of that constraint is
 !! the equivalent dynamic force F of eq. 12). When F exceeds the buffer's bound in its direction,
 !! the strut crushes: it is released and the buffer transmits N = bound, the excess F - N drives
-!! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero locks again.
-!! This replaces the literal reading in which a strut keeps sliding with no force on it.
+!! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero within a step
+!! is stopped by a lock row for that step; the mode it leaves the step in (locked again, or sliding
+!! toward its holding force when that exceeds a bound) is decided by the force that holds it once
+!! stopped (after_stop; docs/theory.md, "The mode after a stop"). This replaces the literal reading in which a strut keeps sliding with no force on it.
 !!
 !! The augmented system [[M, A^T], [A, 0]] [qdd; lambda] = [Q; b] (eqs. 14-16, A = Phi_q plus the
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
@@ -27,11 +29,11 @@ contains
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q), q_alp(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
-    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand, h_look
+    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand, h_look, demand0(3)
     real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3), m_entry(3)
-    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3)
+    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3), stopped(3)
 
     stat = STAT_OK
     with_loads = .true.
@@ -48,6 +50,8 @@ contains
     ge%rigid = gear%st%rigid
     ge%margin_in = 0.0_wp
     ge%margin_out = 0.0_wp
+    ge%dir_after = 0
+    ge%axial_after = 0.0_wp
     ! Tube friction (eqs. 23-26): the primary's extra bound, explicit from the previous step's
     ! secondary forces (landyn_tube_friction). Off by default: then nothing here runs.
     if (gear%tube%on) ge%tube_bound = tube_bound_now(gear)
@@ -172,11 +176,15 @@ contains
       end do
       if (.not. changed) exit
     end do
-    do k = 1, 3
-      ge%margin_out(k) = mode_margin(strut_mode(ge%locked(k), ge%axial(k), ge%dir(k)), ge%dir(k), s(k), &
-        sd(k) + gear%sigma(k)*ge%qdd(idx_len(k))*h_look, ge%free_lo(k), ge%free_hi(k), fpos(k), fneg(k), &
-        gear%sigma(k)*ge%axial(k))
-    end do
+    ! A strut this step's lock row stops (a crushing strut locked for the step, not one on a rigid
+    ! stop) leaves the step in the mode decided by the force that holds it once stopped.
+    stopped = tried .and. ge%locked(1:3) .and. .not. stop_hit .and. .not. changed
+    demand0 = 0.0_wp
+    if (any(stopped)) then
+      call after_stop(nrow, a, b, row_of, mdiag, q_tot, stopped, fpos, fneg, ge, demand0, stat, errmsg)
+      if (stat /= STAT_OK) return
+    end if
+    call margins_out(stopped, demand0)
 
     ! Loads on the body: the leg's momentum balance. The body (which carries the total mass, legs
     ! included) receives the ground force minus the rate of the legs' relative momentum; in the
@@ -197,6 +205,69 @@ contains
       call strut_kinematics(gear, gear%st%q, sk)
       bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
     end function tube_bound_now
+
+    !> The mode each strut stopped by its lock row leaves the step in (docs/theory.md, "Mode
+    !! switches"). The lock row demands sd(t + dt) = 0: its force holds the strut and, on top, stops
+    !! it within the step (b = -sd/dt). Once stopped, only the holding force is needed: the same
+    !! system with every lock row at acceleration level (b = 0). Within the bounds, -f_pos <=
+    !! -demand0 and demand0 <= f_neg, the strut stays locked; beyond one it leaves the step sliding
+    !! toward that side with the bound as its force (into its free crushed range where that bound is 0).
+    subroutine after_stop(nrow, a, b, row_of, mdiag, q_tot, stopped, fpos, fneg, ge, demand0, stat, errmsg)
+      integer, intent(in) :: nrow                  !! constraint rows of the step's system [-]
+      real(wp), intent(in) :: a(:, :)              !! its rows (nrow x n_q) [-, m]
+      real(wp), intent(in) :: b(:)                 !! its right-hand side [m/s^2, rad/s^2]
+      integer, intent(in) :: row_of(3)             !! row of each locked strut, 0 if none [-]
+      real(wp), intent(in) :: mdiag(n_q)           !! mass matrix diagonal [kg, kg m^2]
+      real(wp), intent(in) :: q_tot(n_q)           !! generalized force [N, N m]
+      logical, intent(in) :: stopped(3)            !! strut stopped by its lock row in this step [-]
+      real(wp), intent(in) :: fpos(3)              !! bounds against motion toward +s [N]
+      real(wp), intent(in) :: fneg(3)              !! bounds against motion toward -s [N]
+      type(gear_eval_t), intent(inout) :: ge       !! evaluation: dir_after, axial_after set
+      real(wp), intent(out) :: demand0(3)          !! holding force of each stopped strut's lock on s [N]
+      integer, intent(out) :: stat                 !! STAT_OK on success
+      character(len=*), intent(inout) :: errmsg    !! message
+      real(wp) :: b0(max_rows), lam0(max_rows), qdd0(n_q)
+      integer :: j
+      b0(1:nrow) = b(1:nrow)
+      do j = 1, 3
+        if (row_of(j) > 0) b0(row_of(j)) = 0.0_wp
+      end do
+      call solve_reduced(nrow, a, b0, mdiag, q_tot, qdd0, lam0, stat, errmsg)
+      if (stat /= STAT_OK) return
+      demand0 = 0.0_wp
+      do j = 1, 3
+        if (.not. stopped(j)) cycle
+        demand0(j) = -gear%sigma(j)*lam0(row_of(j))
+        if (-demand0(j) > fpos(j)) then
+          ge%dir_after(j) = 1
+          ge%axial_after(j) = -gear%sigma(j)*fpos(j)
+        else if (demand0(j) > fneg(j)) then
+          ge%dir_after(j) = -1
+          ge%axial_after(j) = gear%sigma(j)*fneg(j)
+        end if
+      end do
+    end subroutine after_stop
+
+    !> The switching functions of the modes decided (margin_out): a strut stopped in the step by its
+    !! lock row has those of the mode it leaves the step in, at rest (a lock's with its holding force
+    !! demand0, not the stopping force; a sliding mode's with the rate zero it leaves the step with).
+    subroutine margins_out(stopped, demand0)
+      logical, intent(in) :: stopped(3)            !! strut stopped by its lock row in this step [-]
+      real(wp), intent(in) :: demand0(3)           !! their holding forces on s [N]
+      integer :: j
+      do j = 1, 3
+        if (stopped(j) .and. ge%dir_after(j) /= 0) then
+          ge%margin_out(j) = mode_margin(strut_mode(.false., ge%axial_after(j), ge%dir_after(j)), ge%dir_after(j), &
+            s(j), 0.0_wp, ge%free_lo(j), ge%free_hi(j), fpos(j), fneg(j), gear%sigma(j)*ge%axial_after(j))
+        else if (stopped(j)) then
+          ge%margin_out(j) = mode_margin(0, 0, s(j), 0.0_wp, ge%free_lo(j), ge%free_hi(j), fpos(j), fneg(j), demand0(j))
+        else
+          ge%margin_out(j) = mode_margin(strut_mode(ge%locked(j), ge%axial(j), ge%dir(j)), ge%dir(j), s(j), &
+            sd(j) + gear%sigma(j)*ge%qdd(idx_len(j))*h_look, ge%free_lo(j), ge%free_hi(j), fpos(j), fneg(j), &
+            gear%sigma(j)*ge%axial(j))
+        end if
+      end do
+    end subroutine margins_out
 
     !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
     subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
@@ -382,6 +453,8 @@ contains
   end procedure gear_dynamics
 
   module procedure gear_commit
+    gear%st%dir_after = ge%dir_after(1:n_struts)
+    gear%st%axial_after = ge%axial_after(1:n_struts)
     gear%st%qdd = ge%qdd
     gear%st%axial = ge%axial
     gear%st%f_body = ge%f_body

@@ -4,7 +4,7 @@
 !! defines it. tripod_init builds one from its geometry, strut masses and buffer laws.
 module landyn_tripod_gear
   use landyn_kinds, only: wp, max_gear_rows, max_gear_q
-  use landyn_gear_base, only: gear_base_t, gear_eval_t, gear_snapshot_t, strut_name_len
+  use landyn_gear_base, only: gear_base_t, gear_eval_t, gear_snapshot_t, strut_name_len, strut_mode_after
   use landyn_kinematics, only: gear_geometry_t
   use landyn_buffer, only: buffer_law_t
   use landyn_tube_friction, only: tube_friction_t
@@ -269,7 +269,9 @@ contains
     integer, intent(out) :: m(:)                    !! [-]
     type(gear_eval_t), intent(in), optional :: ge   !! the evaluation
     if (present(ge)) then
-      m(1:n_struts) = strut_modes(ge%locked, ge%axial, ge%dir)
+      ! the mode each strut leaves the step in (a strut stopped by its lock row may leave it sliding)
+      m(1:n_struts) = strut_mode_after(ge%locked(1:n_struts), ge%axial(1:n_struts), ge%dir(1:n_struts), &
+                                       ge%dir_after(1:n_struts), ge%axial_after(1:n_struts))
     else
       m(1:n_struts) = gear_strut_modes(self%gear)
     end if
