@@ -145,27 +145,10 @@ contains
     real(wp), intent(in) :: u(ldu, n)      !! upper triangular Cholesky factor [any]
     integer, intent(in) :: ldb             !! leading dimension of b [-]
     real(wp), intent(inout) :: b(ldb, nrhs)  !! right-hand sides in, solutions out [any]
-    integer :: i, j, k
-    real(wp) :: s
-    ! U^T Y = B, then U X = Y; the columns are independent, each gets small_upper_solve's
-    ! operations in its order (the loop over the columns is innermost, for speed only)
-    do j = 1, n
-      do k = 1, nrhs
-        s = b(j, k)
-        do i = 1, j - 1
-          s = s - u(i, j)*b(i, k)
-        end do
-        b(j, k) = s/u(j, j)
-      end do
-    end do
-    do j = n, 1, -1
-      do k = 1, nrhs
-        b(j, k) = b(j, k)/u(j, j)
-        s = b(j, k)
-        do i = j - 1, 1, -1
-          b(i, k) = b(i, k) - s*u(i, j)
-        end do
-      end do
+    integer :: j
+    do j = 1, nrhs
+      call small_upper_solve(n, u, ldu, b(1:n, j), .true.)
+      call small_upper_solve(n, u, ldu, b(1:n, j), .false.)
     end do
   end subroutine small_upper_solve_multi
 

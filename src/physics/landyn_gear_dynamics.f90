@@ -8,7 +8,8 @@
 !! the sliding coordinate (eq. 13). A crushing strut whose sliding speed reaches zero within a step
 !! is stopped by a lock row for that step; the mode it leaves the step in (locked again, or sliding
 !! toward its holding force when that exceeds a bound) is decided by the force that holds it once
-!! stopped (after_stop; docs/theory.md, "The mode after a stop"). This replaces the literal reading in which a strut keeps sliding with no force on it.
+!! stopped (after_stop; docs/theory.md, "The mode after a stop"). This replaces the literal
+!! reading in which a strut keeps sliding with no force on it.
 !!
 !! The augmented system [[M, A^T], [A, 0]] [qdd; lambda] = [Q; b] (eqs. 14-16, A = Phi_q plus the
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
