@@ -7,16 +7,21 @@ round (the machine is noisy: every scheme sees the same load), and a converged r
 fixed scheme at --ref-dt (default 1.25e-6 s), checked against the same scheme at half that step on
 the first --check-cases cases. For each scheme it prints cases per core-hour (cases * 3600 / wall
 time of the best round, one rank), the largest crush-length error over all struts and cases, the
-share of cases within 0.1 mm in every crush length and the number beyond 0.5 mm, and the mean
+share of cases within 0.1 mm in every crush length and the number beyond 0.5 mm, the mean
 number of steps per case (the energy residuals are bench/integrator_study.py's: campaign rows do
-not store them).
+not store them), and the largest difference of the crush lengths' 5/50/95 % quantiles over the
+cases from the reference's (what a Monte Carlo campaign reports).
 
   campaign_accuracy.py --batch build/release/landyn_batch --src . [--cases 200] [--rounds 2]
                        [--schemes "fixed:dt=4e-5" "adaptive" "adaptive:tolerance=1e-6"]
                        [--ref-dt 1.25e-6] [--check-cases 5] [--ref-cache DIR] [--t-end 2]
-                       [--per-case] [--energy]
+                       [--per-case] [--energy] [--sensitivity 1e-6 [--sens-dt 5e-6]]
 
---per-case prints every case's largest crush-length error and steps per scheme; --energy runs
+--per-case prints every case's largest crush-length error and steps per scheme; --sensitivity DV
+runs every case again with its vertical touchdown velocity changed by +DV and -DV (a case list made
+from `landyn_batch --list-cases`, fixed scheme at --sens-dt) and counts the cases whose crush
+lengths move by more than 0.1 mm under it: for those the inputs do not decide the crush lengths to
+0.1 mm, and the criterion is reported apart over the others. --energy runs
 every scheme once more, untimed, with the cases' histories (landyn_batch --history) and prints
 each case's energy residual [%] from them.
 
@@ -26,7 +31,9 @@ The reference is expensive (about 7 s per case); --ref-cache keeps it between ru
 case count, the reference step and the base deck's text).
 """
 import argparse
+import csv
 import hashlib
+import io
 import os
 import re
 import shutil
@@ -74,6 +81,31 @@ def make_dir(src, workdir, tag, spec, cases, t_end=None):
     return d
 
 
+def perturb_dir(batch, src, workdir, tag, spec, cases, t_end, dv):
+    """A copy of the campaign example as a case list (the Monte Carlo cases 1..cases as
+    `landyn_batch --list-cases` lists them) with DV [m/s] added to every case's vertical touchdown
+    velocity: the same landings, perturbed far below any measurement of them."""
+    d = make_dir(src, workdir, tag, spec, cases, t_end)
+    p = subprocess.run([batch, "dispersion.nml", "--list-cases"], cwd=d, capture_output=True, text=True)
+    if p.returncode != 0:
+        raise SystemExit("%s: landyn_batch --list-cases exit %d\n%s" % (tag, p.returncode, p.stderr))
+    rows = list(csv.reader(io.StringIO(p.stdout)))
+    head, rows = rows[0], rows[1:cases + 1]
+    col = head.index("initial_state%velocity(3)")
+    with open(os.path.join(d, "cases.csv"), "w") as f:
+        f.write(",".join(head[1:]) + "\n")   # a case list has no case_id column
+        for r in rows:
+            r[col] = repr(float(r[col]) + dv)
+            f.write(",".join(r[1:]) + "\n")
+    deck = open(os.path.join(d, "dispersion.nml")).read()
+    deck = re.sub(r"(?ms)^&parameter\b.*?^/\s*$\n?", "", deck)
+    deck = re.sub(r"(?m)^\s*(n_samples|seed)\s*=.*$", "", deck)
+    deck, n = re.subn(r"(?m)^\s*mode\s*=.*$", "  mode = 'list'\n  list_file = 'cases.csv'", deck)
+    assert n == 1, "dispersion.nml must set mode once"
+    open(os.path.join(d, "dispersion.nml"), "w").write(deck)
+    return d
+
+
 def run(batch, d, tag, cases):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     out = os.path.join(d, tag + ".h5")
@@ -108,6 +140,32 @@ def energy_residuals(batch, d, tag, cases):
     return res
 
 
+def sensitivity(a, batch, src, w, ref):
+    """Each case's largest crush-length change [mm] when its vertical touchdown velocity changes by
+    +-a.sensitivity, run with the fixed scheme at a.sens_dt (against the same scheme unperturbed;
+    that is the reference when a.sens_dt is --ref-dt). Cached in a.ref_cache."""
+    dt = a.sens_dt or a.ref_dt
+    key = hashlib.sha1((open(os.path.join(src, "examples/campaign/lander.nml")).read()
+                        + open(os.path.join(src, "examples/campaign/dispersion.nml")).read()
+                        + "%d %r %r %r" % (a.cases, dt, a.t_end, a.sensitivity)).encode()).hexdigest()[:12]
+    cached = os.path.join(a.ref_cache, "sens_%s.npz" % key) if a.ref_cache else None
+    if cached and os.path.exists(cached):
+        return np.load(cached)["spread"]
+    spec = "fixed:dt=%r" % dt
+    runs = []
+    for k, dv in enumerate((0.0, a.sensitivity, -a.sensitivity)):
+        if dv == 0.0 and dt == a.ref_dt:
+            runs.append(ref)
+            continue
+        d = perturb_dir(batch, src, w, "sens%d" % k, spec, a.cases, a.t_end, dv)
+        runs.append(run(batch, d, "sens%d" % k, a.cases)[1])
+    spread = 1e3 * np.max(np.abs(np.stack(runs[1:]) - runs[0]).reshape(2, a.cases, -1), axis=(0, 2))
+    if cached:
+        os.makedirs(a.ref_cache, exist_ok=True)
+        np.savez(cached, spread=spread)
+    return spread
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--batch", required=True, help="landyn_batch executable")
@@ -121,6 +179,9 @@ def main():
     ap.add_argument("--t-end", type=float, help="simulated time per case [s] (default: the example's)")
     ap.add_argument("--per-case", action="store_true", help="print each case's error and steps")
     ap.add_argument("--energy", action="store_true", help="print each case's energy residual (untimed extra run)")
+    ap.add_argument("--sensitivity", type=float, metavar="DV",
+                    help="also run every case with its vertical touchdown velocity +-DV [m/s] (e.g. 1e-6)")
+    ap.add_argument("--sens-dt", type=float, help="fixed step of the sensitivity runs [s] (default: --ref-dt)")
     a = ap.parse_args()
     batch = os.path.abspath(a.batch)
     src = os.path.abspath(a.src)
@@ -149,6 +210,7 @@ def main():
             print("WARNING: the reference is not converged to 0.1 mm on %d of the %d cases checked "
                   "(per case: %s mm); the errors below are against an uncertain reference"
                   % (np.sum(per > 0.1), a.check_cases, ", ".join("%.3f" % x for x in per)))
+        spread = sensitivity(a, batch, src, w, ref) if a.sensitivity else None
         dirs = {s: make_dir(src, w, "s%d" % i, split_batch(s, batch)[0], a.cases, a.t_end)
                 for i, s in enumerate(a.schemes)}
         best, results = {}, {}
@@ -164,11 +226,31 @@ def main():
             print("%-34s %10.0f %8.3f mm %7d of %d %8d %11.0f" % (
                 s, a.cases * 3600.0 / best[s], err.max(), np.sum(err <= 0.1), a.cases, np.sum(err > 0.5),
                 np.mean(steps)))
+        q = (5, 50, 95)
+        print("distribution: largest difference of a crush length's %s %% quantiles over the cases, "
+              "against the reference" % "/".join(str(x) for x in q))
+        for s in a.schemes:
+            crush = results[s][0].reshape(a.cases, -1)
+            dq = 1e3 * np.abs(np.percentile(crush, q, axis=0) - np.percentile(ref.reshape(a.cases, -1), q, axis=0))
+            print("%-34s %8.3f mm" % (s, dq.max()))
+        if spread is not None:
+            well = spread <= 0.1
+            print("cases whose crush lengths the inputs decide to 0.1 mm (change <= 0.1 mm for a vertical touchdown"
+                  " velocity +-%g m/s): %d of %d; the others: %s"
+                  % (a.sensitivity, np.sum(well), a.cases,
+                     " ".join(str(c + 1) for c in np.flatnonzero(~well)) or "none"))
+            for s in a.schemes:
+                err = 1e3 * np.max(np.abs(results[s][0] - ref).reshape(a.cases, -1), axis=1)
+                print("%-34s on those %d: largest %.3f mm, within 0.1 mm %d, beyond 0.5 mm %d" % (
+                    s, np.sum(well), err[well].max() if well.any() else 0.0, np.sum(err[well] <= 0.1),
+                    np.sum(err[well] > 0.5)))
         if a.per_case:
-            print("case " + " ".join("%17s" % ("s%d err/steps" % i) for i in range(len(a.schemes))))
+            print("case " + " ".join("%17s" % ("s%d err/steps" % i) for i in range(len(a.schemes)))
+                  + ("  spread" if spread is not None else ""))
             errs = {s: 1e3 * np.max(np.abs(results[s][0] - ref).reshape(a.cases, -1), axis=1) for s in a.schemes}
             for c in range(a.cases):
-                print("%4d " % (c + 1) + " ".join("%8.3f %8d" % (errs[s][c], results[s][1][c]) for s in a.schemes))
+                print("%4d " % (c + 1) + " ".join("%8.3f %8d" % (errs[s][c], results[s][1][c]) for s in a.schemes)
+                      + ("  %6.3f" % spread[c] if spread is not None else ""))
         if a.energy:
             for i, s in enumerate(a.schemes):
                 print("%-34s residual [%%] %s" % (s, " ".join("%8.4f" % r for r in energy_residuals(
