@@ -4,7 +4,8 @@
 !!
 !! * a footpad's contact: its penetration (in contact exactly where > 0);
 !! * a footpad's stick state: the friction law's yield limit minus the trial force (stuck exactly
-!!   where >= 0; friction_law_t%stick_slip_force);
+!!   where >= 0; friction_law_t%stick_slip_force); a sliding footpad whose normal force vanishes
+!!   becomes stuck with the margin 0 of zero load, a jump rather than a zero, and is not located;
 !! * a strut's crush mode: the mode's margin (gear_eval_t%margin_out at the start of the step,
 !!   margin_in, the same function, at its end): the force left before a lock gives way, the stroke
 !!   rate in the crush direction; for a free strut the stroke left to the nearer end of its free
@@ -47,6 +48,11 @@ contains
     do i = 1, ng
       if (e0%contact(i) .neqv. e1%contact(i)) then
         call crossing(e0%delta(i), e1%delta(i), w0, w1, theta, located, n_changed)
+      else if ((e0%stuck(i) .neqv. e1%stuck(i)) .and. e1%stuck(i) .and. .not. (abs(e1%stick_margin(i)) > 0.0_wp)) then
+        ! stuck at the end because the normal force vanished (stick_slip_force: margin 0 at zero
+        ! load): the margin jumps from the sliding value to 0 and has no zero to interpolate
+        n_changed = n_changed + 1
+        located = .false.
       else if (e0%stuck(i) .neqv. e1%stuck(i)) then
         call crossing(e0%stick_margin(i), e1%stick_margin(i), w0, w1, theta, located, n_changed)
       end if
