@@ -48,13 +48,15 @@ contains
     do i = 1, ng
       if (e0%contact(i) .neqv. e1%contact(i)) then
         call crossing(e0%delta(i), e1%delta(i), w0, w1, theta, located, n_changed)
-      else if ((e0%stuck(i) .neqv. e1%stuck(i)) .and. e1%stuck(i) .and. .not. (abs(e1%stick_margin(i)) > 0.0_wp)) then
-        ! stuck at the end because the normal force vanished (stick_slip_force: margin 0 at zero
-        ! load): the margin jumps from the sliding value to 0 and has no zero to interpolate
-        n_changed = n_changed + 1
-        located = .false.
       else if (e0%stuck(i) .neqv. e1%stuck(i)) then
-        call crossing(e0%stick_margin(i), e1%stick_margin(i), w0, w1, theta, located, n_changed)
+        if (e1%stuck(i) .and. .not. (abs(e1%stick_margin(i)) > 0.0_wp)) then
+          ! stuck at the end because the normal force vanished (stick_slip_force: margin 0 at zero
+          ! load): the margin jumps from the sliding value to 0 and has no zero to interpolate
+          n_changed = n_changed + 1
+          located = .false.
+        else
+          call crossing(e0%stick_margin(i), e1%stick_margin(i), w0, w1, theta, located, n_changed)
+        end if
       end if
       do k = 1, size(e0%mode, 1)
         if (e0%segment(k, i) /= e1%segment(k, i)) then

@@ -30,10 +30,10 @@ contains
     real(wp) :: mdiag(n_q), q_ine(n_q), q_grv(n_q), q_ext(n_q), q_tot(n_q), q_buf(n_q), q_alp(n_q)
     real(wp) :: phq(n_phi, n_q), gam(n_phi)
     real(wp) :: a(max_rows, n_q), b(max_rows), lam(max_rows)
-    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand, h_look, demand0(3)
+    real(wp) :: s(3), sd(3), fpos(3), fneg(3), demand, h_look, demand0(3), axial_go
     real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
-    integer :: k, iter, nrow, row_of(3), m_entry(3)
+    integer :: k, iter, nrow, row_of(3), m_entry(3), dir_go
     logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3), stopped(3)
 
     stat = STAT_OK
@@ -162,15 +162,11 @@ contains
           ge%margin_in(k) = mode_margin(0, 0, 0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, fpos(k), fneg(k), demand)
           got_in(k) = .true.
         end if
-        if (-demand > fpos(k)) then
+        call lock_gives_way(demand, fpos(k), fneg(k), gear%sigma(k), dir_go, axial_go)
+        if (dir_go /= 0) then
           ge%locked(k) = .false.
-          ge%dir(k) = 1
-          ge%axial(k) = -gear%sigma(k)*fpos(k)
-          changed = .true.
-        else if (demand > fneg(k)) then
-          ge%locked(k) = .false.
-          ge%dir(k) = -1
-          ge%axial(k) = gear%sigma(k)*fneg(k)
+          ge%dir(k) = dir_go
+          ge%axial(k) = axial_go
           changed = .true.
         end if
         if (.not. ge%locked(k) .and. tried(k)) released(k) = .true.
@@ -239,13 +235,7 @@ contains
       do j = 1, 3
         if (.not. stopped(j)) cycle
         demand0(j) = -gear%sigma(j)*lam0(row_of(j))
-        if (-demand0(j) > fpos(j)) then
-          ge%dir_after(j) = 1
-          ge%axial_after(j) = -gear%sigma(j)*fpos(j)
-        else if (demand0(j) > fneg(j)) then
-          ge%dir_after(j) = -1
-          ge%axial_after(j) = gear%sigma(j)*fneg(j)
-        end if
+        call lock_gives_way(demand0(j), fpos(j), fneg(j), gear%sigma(j), ge%dir_after(j), ge%axial_after(j))
       end do
     end subroutine after_stop
 
@@ -332,6 +322,27 @@ contains
     end subroutine rigid_dynamics
 
   end procedure gear_evaluate
+
+  !> Whether a lock that holds its strut with the generalized force demand on the stroke gives way:
+  !! beyond f_pos it slides toward +s, beyond f_neg toward -s, with that bound as its axial force;
+  !! dir = 0 (axial 0) while the lock holds.
+  pure subroutine lock_gives_way(demand, fpos, fneg, sigma, dir, axial)
+    real(wp), intent(in) :: demand       !! generalized force of the lock on the stroke (sigma * axial) [N]
+    real(wp), intent(in) :: fpos         !! bound against motion toward +s [N]
+    real(wp), intent(in) :: fneg         !! bound against motion toward -s [N]
+    real(wp), intent(in) :: sigma        !! ds/dL, the stroke sign convention of the strut [-]
+    integer, intent(out) :: dir          !! direction it slides in, 0: the lock holds [-]
+    real(wp), intent(out) :: axial       !! its axial buffer force when it slides, else 0 [N]
+    dir = 0
+    axial = 0.0_wp
+    if (-demand > fpos) then
+      dir = 1
+      axial = -sigma*fpos
+    else if (demand > fneg) then
+      dir = -1
+      axial = sigma*fneg
+    end if
+  end subroutine lock_gives_way
 
   !> The switching function of a strut's crush mode (gear_eval_t%margin_in, margin_out): >= 0
   !! while the mode holds. Locked (mode 0): the force left before the lock gives way in either
