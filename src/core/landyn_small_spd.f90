@@ -4,12 +4,14 @@
 !! handling; this unblocked version needs a few hundred. It is checked against LAPACK in
 !! tests/unit/test_small_spd.pf. The gear DAE itself (eq. 14) is solved with LAPACK.
 !!
-!! small_upper_solve and small_upper_solve_multi are the triangular solves with a Cholesky factor
-!! from LAPACK (landyn_lapack's factor_spd_unblocked) for the whole-system velocity projection,
-!! which runs at every step: the reference BLAS dtrsm/dtrsv spend most of their time on argument
-!! checks at orders <= 9. They do the same operations in the same order as dtrsv/dtrsm (upper,
-!! non-unit; the BLAS skip a column whose pivot entry is zero, which changes at most the sign of a zero),
-!! so that results are bit-identical to LAPACK's dpotrs.
+!! small_upper_solve, small_upper_solve_multi and small_upper_solve_rows are the triangular solves
+!! with a Cholesky factor from LAPACK (landyn_lapack's factor_spd_unblocked) for the whole-system
+!! velocity projection, which runs at every step: the reference BLAS dtrsm/dtrsv spend most of
+!! their time on argument checks at orders <= 9. They do the same operations in the same order as
+!! dtrsv/dtrsm (upper, non-unit; the BLAS skip a column whose pivot entry is zero, which changes at
+!! most the sign of a zero), so that results are bit-identical to LAPACK's dpotrs.
+!! small_upper_solve_rows takes solve_rows_width right-hand sides stored as rows, so that their
+!! operations run side by side in vector instructions (the projection's D_i^-1 [g_i, U_i]).
 !!
 !! small_upper_factor is the Cholesky factorisation in the order of operations of the reference
 !! LAPACK dpotf2 (upper; its ddot, dgemv and dscal with unit or row stride): bit-identical to it,
@@ -22,7 +24,9 @@ module landyn_small_spd
   implicit none
   private
 
-  public :: small_spd_solve, small_upper_solve, small_upper_solve_multi, small_upper_factor
+  public :: small_spd_solve, small_upper_solve, small_upper_solve_multi, small_upper_solve_rows, small_upper_factor
+
+  integer, parameter, public :: solve_rows_width = 8  !! right-hand sides of one small_upper_solve_rows call
 
 contains
 
@@ -151,5 +155,32 @@ contains
       call small_upper_solve(n, u, ldu, b(1:n, j), .false.)
     end do
   end subroutine small_upper_solve_multi
+
+  !> X <- (U^T U)^-1 X for the Cholesky factor U of an SPD matrix and solve_rows_width right-hand
+  !! sides stored as rows: x(:, i) holds component i of each. Each right-hand side gets the
+  !! operations of small_upper_solve (U^T, then U) in their order; the eight are done side by side
+  !! in fixed-length row operations, which the compiler turns into vector instructions (each lane
+  !! the same IEEE operation as the scalar one).
+  pure subroutine small_upper_solve_rows(n, u, ldu, x)
+    integer, intent(in) :: n               !! order [-]
+    integer, intent(in) :: ldu             !! leading dimension of u [-]
+    real(wp), intent(in) :: u(ldu, n)      !! upper triangular Cholesky factor [any]
+    real(wp), intent(inout) :: x(solve_rows_width, n)  !! right-hand sides in, solutions out [any]
+    real(wp) :: s(solve_rows_width)
+    integer :: i, j
+    do j = 1, n
+      s = x(:, j)
+      do i = 1, j - 1
+        s = s - u(i, j)*x(:, i)
+      end do
+      x(:, j) = s/u(j, j)
+    end do
+    do j = n, 1, -1
+      x(:, j) = x(:, j)/u(j, j)
+      do i = j - 1, 1, -1
+        x(:, i) = x(:, i) - x(:, j)*u(i, j)
+      end do
+    end do
+  end subroutine small_upper_solve_rows
 
 end module landyn_small_spd

@@ -36,7 +36,7 @@ module landyn_impact
   use landyn_kinematics, only: mv3
   use landyn_status, only: STAT_OK
   use landyn_lapack, only: factor_spd_unblocked
-  use landyn_small_spd, only: small_upper_solve, small_upper_solve_multi
+  use landyn_small_spd, only: small_upper_solve, small_upper_solve_rows, solve_rows_width
   implicit none
   private
 
@@ -46,27 +46,80 @@ module landyn_impact
 
 contains
 
-  !> Coupling block C_i (6 x coordinate count, in a 6 x max_gear_q array) of gear i: rows 1-3 map
-  !! qd_i to the legs' relative linear momentum in global axes, rows 4-6 to their relative angular
-  !! momentum about the mass centre in lander axes.
-  pure function coupling_matrix(body, gear, nq) result(c)
-    type(body_t), intent(in) :: body     !! body (attitude r, mass centre mc)
+  !> Coupling block C_i (6 x max_gear_q, zero beyond the gear's coordinates) of gear i: rows 1-3
+  !! map qd_i to the legs' relative linear momentum in global axes, rows 4-6 to their relative
+  !! angular momentum about the mass centre in lander axes. Written in place; the 3 x 3 products
+  !! are landyn_kinematics' mv3 written out (the same operations in the same order).
+  subroutine coupling_block(body, gear, nq, c)
+    type(body_t), intent(in) :: body        !! body (attitude r, mass centre mc)
     class(gear_base_t), intent(in) :: gear  !! gear
-    integer, intent(in) :: nq            !! its coordinate count [-]
-    real(wp) :: c(6, max_gear_q)         !! coupling [kg, kg m, kg m^2]
+    integer, intent(in) :: nq               !! its coordinate count [-]
+    real(wp), intent(out) :: c(6, max_gear_q)  !! coupling [kg, kg m, kg m^2]
     real(wp) :: pm(3, max_gear_q), hm(3, max_gear_q), pl(3), hl(3), rot(3, 3)
     integer :: j
     call gear%momentum_maps(pm, hm)
     rot = gear%rotation()
     if (nq < max_gear_q) c = 0.0_wp      ! the columns beyond the gear's coordinates
-    do j = 1, nq
-      pl = mv3(rot, pm(:, j))
-      hl = mv3(rot, hm(:, j))
-      c(1:3, j) = mv3(body%r, pl)
-      c(4:6, j) = hl - [body%mc(2)*pl(3) - body%mc(3)*pl(2), body%mc(3)*pl(1) - body%mc(1)*pl(3), &
-                        body%mc(1)*pl(2) - body%mc(2)*pl(1)]
+    associate (r => body%r, mc => body%mc)
+      do j = 1, nq
+        pl(1) = rot(1, 1)*pm(1, j) + rot(1, 2)*pm(2, j) + rot(1, 3)*pm(3, j)
+        pl(2) = rot(2, 1)*pm(1, j) + rot(2, 2)*pm(2, j) + rot(2, 3)*pm(3, j)
+        pl(3) = rot(3, 1)*pm(1, j) + rot(3, 2)*pm(2, j) + rot(3, 3)*pm(3, j)
+        hl(1) = rot(1, 1)*hm(1, j) + rot(1, 2)*hm(2, j) + rot(1, 3)*hm(3, j)
+        hl(2) = rot(2, 1)*hm(1, j) + rot(2, 2)*hm(2, j) + rot(2, 3)*hm(3, j)
+        hl(3) = rot(3, 1)*hm(1, j) + rot(3, 2)*hm(2, j) + rot(3, 3)*hm(3, j)
+        c(1, j) = r(1, 1)*pl(1) + r(1, 2)*pl(2) + r(1, 3)*pl(3)
+        c(2, j) = r(2, 1)*pl(1) + r(2, 2)*pl(2) + r(2, 3)*pl(3)
+        c(3, j) = r(3, 1)*pl(1) + r(3, 2)*pl(2) + r(3, 3)*pl(3)
+        c(4, j) = hl(1) - (mc(2)*pl(3) - mc(3)*pl(2))
+        c(5, j) = hl(2) - (mc(3)*pl(1) - mc(1)*pl(3))
+        c(6, j) = hl(3) - (mc(1)*pl(2) - mc(2)*pl(1))
+      end do
+    end associate
+  end subroutine coupling_block
+
+  !> One gear's blocks of the elimination: S -= C_i Mq_i^-1 C_i^T (upper triangle), U_i^T =
+  !! C_i Mq_i^-1 A_i^T and D_i = A_i Mq_i^-1 A_i^T (upper triangle). Each entry is the sum over all
+  !! max_gear_q columns m, from zero and in column order, of (x_m / Mq_m) y_m (the scaled rows are
+  !! formed once); the six entries of a column of S or U_i^T are summed side by side.
+  pure subroutine gear_blocks(n, a, minv, c, s, ut, d)
+    integer, intent(in) :: n                               !! the gear's constraint rows [-]
+    real(wp), intent(in) :: a(max_gear_rows, max_gear_q)   !! rows A_i [m/rad, -]
+    real(wp), intent(in) :: minv(max_gear_q)               !! Mq_i^-1, 0 beyond the coordinates [1/kg, 1/(kg m^2)]
+    real(wp), intent(in) :: c(6, max_gear_q)               !! coupling C_i [kg, kg m, kg m^2]
+    real(wp), intent(inout) :: s(6, 6)                     !! body Schur complement [kg, kg m, kg m^2]
+    real(wp), intent(out) :: ut(6, max_gear_rows)          !! U_i^T, columns 1 to n [A Mq^-1 C^T]
+    real(wp), intent(out) :: d(max_gear_rows, max_gear_rows)  !! D_i, upper triangle of order n [A Mq^-1 A^T]
+    real(wp) :: cm(6, max_gear_q), am(max_gear_rows, max_gear_q), t6(6), t
+    integer :: ii, jj, k, m
+    do m = 1, max_gear_q
+      cm(:, m) = c(:, m)*minv(m)
+      am(1:n, m) = a(1:n, m)*minv(m)
     end do
-  end function coupling_matrix
+    do jj = 1, 6
+      t6 = 0.0_wp
+      do m = 1, max_gear_q
+        t6 = t6 + cm(:, m)*c(jj, m)
+      end do
+      s(1:jj, jj) = s(1:jj, jj) - t6(1:jj)
+    end do
+    do k = 1, n
+      t6 = 0.0_wp
+      do m = 1, max_gear_q
+        t6 = t6 + c(:, m)*am(k, m)
+      end do
+      ut(:, k) = t6
+    end do
+    do jj = 1, n
+      do ii = 1, jj
+        t = 0.0_wp
+        do m = 1, max_gear_q
+          t = t + am(ii, m)*a(jj, m)
+        end do
+        d(ii, jj) = t
+      end do
+    end do
+  end subroutine gear_blocks
 
   !> Projects the velocities of the body and all non-rigid gears onto the gears' velocity
   !! constraints in the kinetic metric of the whole system (a plastic impact, see the module
@@ -80,18 +133,16 @@ contains
     integer, intent(out) :: stat                 !! 0 on success
     character(len=*), intent(inout) :: errmsg    !! message on failure
     real(wp) :: a(max_gear_rows, max_gear_q, max_gears), c(6, max_gear_q, max_gears), minv(max_gear_q, max_gears)
-    real(wp) :: g(max_sys_rows), lam(max_sys_rows), u(max_sys_rows, 6), z(max_sys_rows), zz(max_sys_rows, 6)
-    real(wp) :: d(max_gear_rows, max_gear_rows, max_gears), s(6, 6), kk(6, 6), rr(6), y(6), dq(max_gear_q), qd(max_gear_q)
-    real(wp) :: db(6), resid, rhs(max_gear_rows, 7)
-    integer :: nrow(max_gears), off(max_gears), nq(max_gears), i, j, k, ii, jj, nr, n_act
-    integer :: act(max_gears)
+    real(wp) :: g(max_gear_rows, max_gears), ut(6, max_gear_rows, max_gears)
+    real(wp) :: w(solve_rows_width, max_gear_rows, max_gears), d(max_gear_rows, max_gear_rows)
+    real(wp) :: s(6, 6), kk(6, 6), rr(6), t6(6), dq(max_gear_q), qd(max_gear_q), resid
+    integer :: nrow(max_gears), nq(max_gears), act(max_gears), i, j, k, jj, n, n_act
     character(len=msg_len) :: m2
 
     stat = STAT_OK
     dissipated = 0.0_wp
-    ! Active gears and their residuals.
+    ! Active gears and their residuals g_i = A_i qd_i (the system's rows gear by gear).
     n_act = 0
-    nr = 0
     resid = 0.0_wp
     do i = 1, ng
       if (gear(i)%g%is_rigid()) cycle
@@ -100,15 +151,13 @@ contains
       nq(n_act) = gear(i)%g%coordinate_count()
       ! (the gear may keep the rows, e.g. Phi_q at this configuration, for its next evaluation)
       call gear(i)%g%velocity_rows(a(:, :, n_act), nrow(n_act))
-      off(n_act) = nr
       ! (a gear with fewer coordinates than max_gear_q has zero columns and rates beyond them)
       if (nq(n_act) < max_gear_q) qd = 0.0_wp
       call gear(i)%g%rates(qd(1:nq(n_act)))
       do k = 1, nrow(n_act)
-        g(nr + k) = dot_product(a(k, :, n_act), qd)
+        g(k, n_act) = dot_product(a(k, :, n_act), qd)
       end do
-      resid = max(resid, maxval(abs(g(nr + 1:nr + nrow(n_act)))))
-      nr = nr + nrow(n_act)
+      resid = max(resid, maxval(abs(g(1:nrow(n_act), n_act))))
     end do
     if (n_act == 0 .or. resid <= tol) return
 
@@ -125,46 +174,38 @@ contains
     rr = 0.0_wp
     do j = 1, n_act
       i = act(j)
+      n = nrow(j)
       ! zero inverse masses beyond the gear's coordinates: those columns take no part
       if (nq(j) < max_gear_q) minv(:, j) = 0.0_wp
       call gear(i)%g%mass_diagonal(dq(1:nq(j)))
       minv(1:nq(j), j) = 1.0_wp/dq(1:nq(j))
-      c(:, :, j) = coupling_matrix(body, gear(i)%g, nq(j))
-      do jj = 1, 6
-        do ii = 1, jj
-          s(ii, jj) = s(ii, jj) - sum(c(ii, :, j)*minv(:, j)*c(jj, :, j))
-        end do
+      call coupling_block(body, gear(i)%g, nq(j), c(:, :, j))
+      call gear_blocks(n, a(:, :, j), minv(:, j), c(:, :, j), s, ut(:, :, j), d)
+      call factor_spd_unblocked(n, d, max_gear_rows, stat, m2, 'system velocity projection (A M^-1 A^T)')
+      if (stat /= 0) then
+        errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
+        return
+      end if
+      ! [z_i, Z_i] = D_i^-1 [g_i, U_i], stored transposed (row 1 z_i^T, rows 2-7 Z_i^T, row 8 zero)
+      do k = 1, n
+        w(1, k, j) = g(k, j)
+        w(2:7, k, j) = ut(:, k, j)
+        w(8, k, j) = 0.0_wp
       end do
-      associate (n => nrow(j), o => off(j))
+      call small_upper_solve_rows(n, d, max_gear_rows, w(:, :, j))
+      ! K += U_i^T Z_i, r += U_i^T z_i (each entry summed over the gear's rows from zero)
+      do jj = 1, 6
+        t6 = 0.0_wp
         do k = 1, n
-          do ii = 1, 6
-            u(o + k, ii) = sum(a(k, :, j)*minv(:, j)*c(ii, :, j))
-          end do
+          t6 = t6 + ut(:, k, j)*w(1 + jj, k, j)
         end do
-        do jj = 1, n
-          do ii = 1, jj
-            d(ii, jj, j) = sum(a(ii, :, j)*minv(:, j)*a(jj, :, j))
-          end do
-        end do
-        call factor_spd_unblocked(n, d(:, :, j), max_gear_rows, stat, m2, 'system velocity projection (A M^-1 A^T)')
-        if (stat /= 0) then
-          errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
-          return
-        end if
-        ! [z, Z] = D_i^-1 [g_i, U_i] (one multi-column solve)
-        rhs(1:n, 1) = g(o + 1:o + n)
-        rhs(1:n, 2:7) = u(o + 1:o + n, :)
-        call small_upper_solve_multi(n, 7, d(:, :, j), max_gear_rows, rhs, max_gear_rows)
-        z(o + 1:o + n) = rhs(1:n, 1)
-        zz(o + 1:o + n, :) = rhs(1:n, 2:7)
-        ! K += U_i^T Z_i, r += U_i^T z_i
-        do jj = 1, 6
-          do ii = 1, jj
-            kk(ii, jj) = kk(ii, jj) + dot_product(u(o + 1:o + n, ii), zz(o + 1:o + n, jj))
-          end do
-          rr(jj) = rr(jj) + dot_product(u(o + 1:o + n, jj), z(o + 1:o + n))
-        end do
-      end associate
+        kk(1:jj, jj) = kk(1:jj, jj) + t6(1:jj)
+      end do
+      t6 = 0.0_wp
+      do k = 1, n
+        t6 = t6 + ut(:, k, j)*w(1, k, j)
+      end do
+      rr = rr + t6
     end do
     kk = kk + s
     call factor_spd_unblocked(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
@@ -174,28 +215,75 @@ contains
     end if
     call factor_spd_unblocked(6, kk, 6, stat, m2, 'system velocity projection (Woodbury capacitance)')
     if (stat /= 0) then; errmsg = m2; return; end if
-    ! t = K^-1 r;  lam = z - Z t
+    ! t = K^-1 r
     call small_upper_solve(6, kk, 6, rr, .true.)
     call small_upper_solve(6, kk, 6, rr, .false.)
-    lam(1:nr) = z(1:nr) - matmul(zz(1:nr, :), rr)
-    dissipated = 0.5_wp*dot_product(lam(1:nr), g(1:nr))
-    ! y = S^-1 U^T lam;  dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y);  dv_b = -Mb^-1 sum C_i dqd_i.
-    y = matmul(lam(1:nr), u(1:nr, :))
+    call apply_impulses(body, gear, n_act, act, nrow, nq, a, c, minv, g, ut, w, s, rr, dissipated)
+  end subroutine system_velocity_projection
+
+  !> The last steps of the projection, with t = K^-1 r at hand: lam = z - Z t, the energy lost
+  !! 1/2 lam^T g, y = S^-1 U^T lam, dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y) and
+  !! dv_b = -Mb^-1 sum C_i dqd_i. Every sum over the system's rows runs gear by gear in row order
+  !! from zero, every other sum from zero in index order.
+  subroutine apply_impulses(body, gear, n_act, act, nrow, nq, a, c, minv, g, ut, w, s, t6, dissipated)
+    type(body_t), intent(inout) :: body            !! body; v and omega are updated
+    type(gear_slot_t), intent(inout) :: gear(:)    !! gears; qd of the active ones is updated
+    integer, intent(in) :: n_act                   !! number of active gears [-]
+    integer, intent(in) :: act(max_gears)          !! their indices in gear [-]
+    integer, intent(in) :: nrow(max_gears)         !! their constraint rows [-]
+    integer, intent(in) :: nq(max_gears)           !! their coordinate counts [-]
+    real(wp), intent(in) :: a(max_gear_rows, max_gear_q, max_gears)  !! rows A_i [m/rad, -]
+    real(wp), intent(in) :: c(6, max_gear_q, max_gears)  !! couplings C_i [kg, kg m, kg m^2]
+    real(wp), intent(in) :: minv(max_gear_q, max_gears)  !! Mq_i^-1 [1/kg, 1/(kg m^2)]
+    real(wp), intent(in) :: g(max_gear_rows, max_gears)  !! residuals g_i = A_i qd_i [m/s, rad/s]
+    real(wp), intent(in) :: ut(6, max_gear_rows, max_gears)  !! U_i^T [A Mq^-1 C^T]
+    real(wp), intent(in) :: w(solve_rows_width, max_gear_rows, max_gears)  !! [z_i, Z_i]^T [D^-1 g, D^-1 U]
+    real(wp), intent(in) :: s(6, 6)                !! Cholesky factor of S [kg^1/2, ...]
+    real(wp), intent(in) :: t6(6)                  !! t = K^-1 r [m/s, rad/s]
+    real(wp), intent(out) :: dissipated            !! kinetic energy lost [J]
+    real(wp) :: lam(max_gear_rows, max_gears), y(6), dq(max_gear_q), qd(max_gear_q), db(6), e, p, r6(6)
+    integer :: i, j, k, ii, m
+    y = 0.0_wp
+    e = 0.0_wp
+    do j = 1, n_act
+      do k = 1, nrow(j)
+        p = 0.0_wp
+        do ii = 1, 6
+          p = p + w(1 + ii, k, j)*t6(ii)
+        end do
+        lam(k, j) = w(1, k, j) - p
+        e = e + lam(k, j)*g(k, j)
+        y = y + lam(k, j)*ut(:, k, j)
+      end do
+    end do
+    dissipated = 0.5_wp*e
     call small_upper_solve(6, s, 6, y, .true.)
     call small_upper_solve(6, s, 6, y, .false.)
     db = 0.0_wp
     do j = 1, n_act
       i = act(j)
-      dq = matmul(lam(off(j) + 1:off(j) + nrow(j)), a(1:nrow(j), :, j)) + matmul(y, c(:, :, j))
-      dq = -minv(:, j)*dq
-      associate (m => nq(j))
-        call gear(i)%g%rates(qd(1:m))
-        call gear(i)%g%set_rates(qd(1:m) + dq(1:m))
-      end associate
-      db = db + matmul(c(:, :, j), dq)
+      do m = 1, max_gear_q
+        p = 0.0_wp
+        do k = 1, nrow(j)
+          p = p + lam(k, j)*a(k, m, j)
+        end do
+        e = 0.0_wp
+        do ii = 1, 6
+          e = e + y(ii)*c(ii, m, j)
+        end do
+        dq(m) = -minv(m, j)*(p + e)
+      end do
+      call gear(i)%g%rates(qd(1:nq(j)))
+      qd(1:nq(j)) = qd(1:nq(j)) + dq(1:nq(j))
+      call gear(i)%g%set_rates(qd(1:nq(j)))
+      r6 = 0.0_wp
+      do m = 1, max_gear_q
+        r6 = r6 + c(:, m, j)*dq(m)
+      end do
+      db = db + r6
     end do
     body%v = body%v - db(1:3)/body%mass
     body%omega = body%omega - mv3(body%inv_inertia, db(4:6))
-  end subroutine system_velocity_projection
+  end subroutine apply_impulses
 
 end module landyn_impact
