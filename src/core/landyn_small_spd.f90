@@ -168,6 +168,7 @@ contains
     real(wp), intent(inout) :: x(solve_rows_width, n)  !! right-hand sides in, solutions out [any]
     real(wp) :: s(solve_rows_width)
     integer :: i, j
+    ! U^T y = b
     do j = 1, n
       s = x(:, j)
       do i = 1, j - 1
@@ -175,11 +176,14 @@ contains
       end do
       x(:, j) = s/u(j, j)
     end do
-    do j = n, 1, -1
-      x(:, j) = x(:, j)/u(j, j)
-      do i = j - 1, 1, -1
-        x(:, i) = x(:, i) - x(:, j)*u(i, j)
+    ! U x = y by rows: component i gets small_upper_solve's updates x(i) - x(j) u(i, j) in its order
+    ! (j = n down to i + 1), then the division
+    do i = n, 1, -1
+      s = x(:, i)
+      do j = n, i + 1, -1
+        s = s - x(:, j)*u(i, j)
       end do
+      x(:, i) = s/u(i, i)
     end do
   end subroutine small_upper_solve_rows
 

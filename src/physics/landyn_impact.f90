@@ -94,7 +94,6 @@ contains
     integer :: ii, jj, k, m
     do m = 1, max_gear_q
       cm(:, m) = c(:, m)*minv(m)
-      am(1:n, m) = a(1:n, m)*minv(m)
     end do
     do jj = 1, 6
       t6 = 0.0_wp
@@ -106,6 +105,7 @@ contains
     do k = 1, n
       t6 = 0.0_wp
       do m = 1, max_gear_q
+        am(k, m) = a(k, m)*minv(m)
         t6 = t6 + c(:, m)*am(k, m)
       end do
       ut(:, k) = t6
