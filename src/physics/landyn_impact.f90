@@ -135,7 +135,7 @@ contains
     real(wp) :: a(max_gear_rows, max_gear_q, max_gears), c(6, max_gear_q, max_gears), minv(max_gear_q, max_gears)
     real(wp) :: g(max_gear_rows, max_gears), ut(6, max_gear_rows, max_gears)
     real(wp) :: w(solve_rows_width, max_gear_rows, max_gears), d(max_gear_rows, max_gear_rows)
-    real(wp) :: s(6, 6), kk(6, 6), rr(6), t6(6), dq(max_gear_q), qd(max_gear_q), resid
+    real(wp) :: s(6, 6), kk(6, 6), rr(6), tk(6, 7), dq(max_gear_q), qd(max_gear_q), resid
     integer :: nrow(max_gears), nq(max_gears), act(max_gears), i, j, k, jj, n, n_act
     character(len=msg_len) :: m2
 
@@ -194,18 +194,16 @@ contains
       end do
       call small_upper_solve_rows(n, d, max_gear_rows, w(:, :, j))
       ! K += U_i^T Z_i, r += U_i^T z_i (each entry summed over the gear's rows from zero)
-      do jj = 1, 6
-        t6 = 0.0_wp
-        do k = 1, n
-          t6 = t6 + ut(:, k, j)*w(1 + jj, k, j)
-        end do
-        kk(1:jj, jj) = kk(1:jj, jj) + t6(1:jj)
-      end do
-      t6 = 0.0_wp
+      tk = 0.0_wp
       do k = 1, n
-        t6 = t6 + ut(:, k, j)*w(1, k, j)
+        do jj = 1, 7
+          tk(:, jj) = tk(:, jj) + ut(:, k, j)*w(jj, k, j)
+        end do
       end do
-      rr = rr + t6
+      rr = rr + tk(:, 1)
+      do jj = 1, 6
+        kk(1:jj, jj) = kk(1:jj, jj) + tk(1:jj, 1 + jj)
+      end do
     end do
     kk = kk + s
     call factor_spd_unblocked(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
@@ -262,16 +260,16 @@ contains
     db = 0.0_wp
     do j = 1, n_act
       i = act(j)
+      dq = 0.0_wp
+      do k = 1, nrow(j)
+        dq = dq + lam(k, j)*a(k, :, j)
+      end do
       do m = 1, max_gear_q
-        p = 0.0_wp
-        do k = 1, nrow(j)
-          p = p + lam(k, j)*a(k, m, j)
-        end do
         e = 0.0_wp
         do ii = 1, 6
           e = e + y(ii)*c(ii, m, j)
         end do
-        dq(m) = -minv(m, j)*(p + e)
+        dq(m) = -minv(m, j)*(dq(m) + e)
       end do
       call gear(i)%g%rates(qd(1:nq(j)))
       qd(1:nq(j)) = qd(1:nq(j)) + dq(1:nq(j))
