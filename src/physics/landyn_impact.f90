@@ -29,6 +29,12 @@
 !! so that only the blocks D_i and two 6 x 6 matrices are factored (LAPACK's unblocked Cholesky).
 !! Gears that are rigid (all struts locked, qd = 0) take no part: their square regular A_i holds
 !! qd_i = 0.
+!!
+!! Every sum is formed in one fixed order: from zero, in index order (over the system's rows gear
+!! by gear, in row order), as gfortran forms sum, dot_product and matmul; the results depend on it
+!! bit for bit (the fixed integrator reproduces the paper's scheme). The loops are arranged so that
+!! the compiler can use vector instructions (independent sums side by side), never by reordering a
+!! sum.
 module landyn_impact
   use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q, max_gear_rows
   use landyn_body, only: body_t
@@ -42,15 +48,13 @@ module landyn_impact
 
   public :: system_velocity_projection
 
-  integer, parameter :: max_sys_rows = max_gear_rows*max_gears   !! constraint rows of all gears at most
-
 contains
 
   !> Coupling block C_i (6 x max_gear_q, zero beyond the gear's coordinates) of gear i: rows 1-3
   !! map qd_i to the legs' relative linear momentum in global axes, rows 4-6 to their relative
   !! angular momentum about the mass centre in lander axes. Written in place; the 3 x 3 products
   !! are landyn_kinematics' mv3 written out (the same operations in the same order).
-  subroutine coupling_block(body, gear, nq, c)
+  pure subroutine coupling_block(body, gear, nq, c)
     type(body_t), intent(in) :: body        !! body (attitude r, mass centre mc)
     class(gear_base_t), intent(in) :: gear  !! gear
     integer, intent(in) :: nq               !! its coordinate count [-]
@@ -186,11 +190,11 @@ contains
         errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
         return
       end if
-      ! [z_i, Z_i] = D_i^-1 [g_i, U_i], stored transposed (row 1 z_i^T, rows 2-7 Z_i^T, row 8 zero)
+      ! [z_i, Z_i] = D_i^-1 [g_i, U_i], stored transposed (row 1 z_i^T, rows 2-7 Z_i^T, the rest zero)
       do k = 1, n
         w(1, k, j) = g(k, j)
         w(2:7, k, j) = ut(:, k, j)
-        w(8, k, j) = 0.0_wp
+        w(8:, k, j) = 0.0_wp
       end do
       call small_upper_solve_rows(n, d, max_gear_rows, w(:, :, j))
       ! K += U_i^T Z_i, r += U_i^T z_i (each entry summed over the gear's rows from zero)
@@ -223,7 +227,7 @@ contains
   !! 1/2 lam^T g, y = S^-1 U^T lam, dqd_i = -Mq_i^-1 (A_i^T lam_i + C_i^T y) and
   !! dv_b = -Mb^-1 sum C_i dqd_i. Every sum over the system's rows runs gear by gear in row order
   !! from zero, every other sum from zero in index order.
-  subroutine apply_impulses(body, gear, n_act, act, nrow, nq, a, c, minv, g, ut, w, s, t6, dissipated)
+  subroutine apply_impulses(body, gear, n_act, act, nrow, nq, a, c, minv, g, ut, w, s, kr, dissipated)
     type(body_t), intent(inout) :: body            !! body; v and omega are updated
     type(gear_slot_t), intent(inout) :: gear(:)    !! gears; qd of the active ones is updated
     integer, intent(in) :: n_act                   !! number of active gears [-]
@@ -237,9 +241,9 @@ contains
     real(wp), intent(in) :: ut(6, max_gear_rows, max_gears)  !! U_i^T [A Mq^-1 C^T]
     real(wp), intent(in) :: w(solve_rows_width, max_gear_rows, max_gears)  !! [z_i, Z_i]^T [D^-1 g, D^-1 U]
     real(wp), intent(in) :: s(6, 6)                !! Cholesky factor of S [kg^1/2, ...]
-    real(wp), intent(in) :: t6(6)                  !! t = K^-1 r [m/s, rad/s]
+    real(wp), intent(in) :: kr(6)                  !! t = K^-1 r [m/s, rad/s]
     real(wp), intent(out) :: dissipated            !! kinetic energy lost [J]
-    real(wp) :: lam(max_gear_rows, max_gears), y(6), dq(max_gear_q), qd(max_gear_q), db(6), e, p, r6(6)
+    real(wp) :: lam(max_gear_rows, max_gears), y(6), dq(max_gear_q), qd(max_gear_q), db(6), r6(6), e, p
     integer :: i, j, k, ii, m
     y = 0.0_wp
     e = 0.0_wp
@@ -247,7 +251,7 @@ contains
       do k = 1, nrow(j)
         p = 0.0_wp
         do ii = 1, 6
-          p = p + w(1 + ii, k, j)*t6(ii)
+          p = p + w(1 + ii, k, j)*kr(ii)
         end do
         lam(k, j) = w(1, k, j) - p
         e = e + lam(k, j)*g(k, j)
@@ -265,11 +269,11 @@ contains
         dq = dq + lam(k, j)*a(k, :, j)
       end do
       do m = 1, max_gear_q
-        e = 0.0_wp
+        p = 0.0_wp
         do ii = 1, 6
-          e = e + y(ii)*c(ii, m, j)
+          p = p + y(ii)*c(ii, m, j)
         end do
-        dq(m) = -minv(m, j)*(dq(m) + e)
+        dq(m) = -minv(m, j)*(dq(m) + p)
       end do
       call gear(i)%g%rates(qd(1:nq(j)))
       qd(1:nq(j)) = qd(1:nq(j)) + dq(1:nq(j))
