@@ -6,8 +6,9 @@
 !!
 !! small_upper_solve, small_upper_solve_multi and small_upper_solve_rows are the triangular solves
 !! with a Cholesky factor from LAPACK (landyn_lapack's factor_spd_unblocked) for the whole-system
-!! velocity projection, which runs at every step: the reference BLAS dtrsm/dtrsv spend most of
-!! their time on argument checks at orders <= 9. They do the same operations in the same order as
+!! velocity projection, which runs at every step (small_upper_solve, small_upper_solve_rows), and
+!! the gear's cached constraint factor (small_upper_solve_multi): the reference BLAS dtrsm/dtrsv
+!! spend most of their time on argument checks at orders <= 9. They do the same operations in the same order as
 !! dtrsv/dtrsm (upper, non-unit; the BLAS skip a column whose pivot entry is zero, which changes at
 !! most the sign of a zero), so that results are bit-identical to LAPACK's dpotrs.
 !! small_upper_solve_rows takes solve_rows_width right-hand sides stored as rows, so that their
