@@ -5,7 +5,8 @@
 of the whole process, the time-step loop, steps and force evaluations, the largest crush-length
 difference between the two, and the speed-up of the adaptive integrator over the fixed one.
 Targets: fixed <= 1 s wall (issue "Touchdown dynamics"); adaptive >= 5x faster than fixed
-(issue "Non-smooth time integration done right").
+(issue "Non-smooth time integration done right") and >= 20x in the loop (issue "Integrators that
+own the time step"; docs/theory.md, "LC-1's 20x and the default tolerance", says why it is not met).
 
   bench_lc1.py --exe build/release/landyn --src . [--runs 3]
 """
@@ -66,8 +67,9 @@ def main():
     print("  speed-up of the fixed scheme over the paper (290 s): %.0fx" % (PAPER_SECONDS / f["wall"]))
     print("  target fixed <= 1 s wall: %s" % ("MET" if f["wall"] <= 1.0 else "MISSED by %.0f %%" % (100 * (f["wall"] - 1.0))))
     ratio_wall, ratio_loop = f["wall"] / g["wall"], f["loop"] / g["loop"]
-    print("  adaptive speed-up: %.1fx (whole process), %.1fx (loop); target >= 5x: %s"
-          % (ratio_wall, ratio_loop, "MET" if ratio_wall >= 5.0 else "MISSED"))
+    print("  adaptive speed-up: %.1fx (whole process), %.1fx (loop); target >= 5x: %s; target >= 20x (loop): %s"
+          % (ratio_wall, ratio_loop, "MET" if ratio_wall >= 5.0 else "MISSED",
+             "MET" if ratio_loop >= 20.0 else "MISSED"))
 
 
 if __name__ == "__main__":
