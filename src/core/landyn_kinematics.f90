@@ -73,6 +73,7 @@ module landyn_kinematics
   public :: gear_geometry_t, build_gear_geometry
   ! --- strut kinematics
   public :: strut_orientation, strut_axis, strut_axis_derivs
+  public :: joint_trig_t, joint_trig, gear_trig, strut_axis_derivs_trig
   public :: strut_angles_from_point
   ! --- gear kinematics, constraints and Jacobians
   public :: gear_points, gear_constraints, gear_constraint_jacobian, gear_constraint_gamma
@@ -104,6 +105,17 @@ module landyn_kinematics
 
   !> |ey x z0| below which ex replaces ey in building a nominal strut frame [-].
   real(wp), parameter :: parallel_tol = 1.0e-2_wp
+
+  !> cos and sin of the two universal-joint angles of one strut at one configuration (`joint_trig`).
+  !! Computed once and passed to the routines that need them (their `_trig` forms and the optional
+  !! `trig` arguments): cos and sin give the same bits however often they are called, so every
+  !! result is the same to the last bit as from the angles themselves.
+  type :: joint_trig_t
+    real(wp) :: c1 = 1.0_wp  !! cos t1 [-]
+    real(wp) :: s1 = 0.0_wp  !! sin t1 [-]
+    real(wp) :: c2 = 1.0_wp  !! cos t2 [-]
+    real(wp) :: s2 = 0.0_wp  !! sin t2 [-]
+  end type joint_trig_t
 
   !> Geometry of one landing gear in its own gear frame, built once by `build_gear_geometry`.
   type :: gear_geometry_t
@@ -450,10 +462,27 @@ contains
   ! Strut kinematics
   ! =====================================================================================
 
-  !> Local universal-joint rotation W = rot_x(t1) rot_y(t2) and its first and second partials.
-  pure subroutine joint_rotation_derivs(t1, t2, w, w1, w2, w11, w12, w22)
+  !> cos and sin of a strut's joint angles (t1, t2), for the `_trig` routines.
+  pure function joint_trig(t1, t2) result(tr)
     real(wp), intent(in) :: t1       !! first joint angle (about x0) [rad]
     real(wp), intent(in) :: t2       !! second joint angle (about rotated y) [rad]
+    type(joint_trig_t) :: tr         !! cos and sin of t1 and t2 [-]
+    tr%c1 = cos(t1); tr%s1 = sin(t1); tr%c2 = cos(t2); tr%s2 = sin(t2)
+  end function joint_trig
+
+  !> cos and sin of the joint angles of the three struts of a gear at coordinates q.
+  pure function gear_trig(q) result(tr)
+    real(wp), intent(in) :: q(n_gear_q)    !! generalized coordinates [m, rad]
+    type(joint_trig_t) :: tr(3)            !! primary, left and right secondary [-]
+    tr(1) = joint_trig(q(iq_th1), q(iq_th2))
+    tr(2) = joint_trig(q(iq_thb1), q(iq_thb2))
+    tr(3) = joint_trig(q(iq_thc1), q(iq_thc2))
+  end function gear_trig
+
+  !> Local universal-joint rotation W = rot_x(t1) rot_y(t2) and its first and second partials,
+  !! from cos and sin of (t1, t2).
+  pure subroutine joint_rotation_derivs(tr, w, w1, w2, w11, w12, w22)
+    type(joint_trig_t), intent(in) :: tr  !! cos and sin of the joint angles [-]
     real(wp), intent(out) :: w(3,3)    !! rot_x(t1) rot_y(t2) [-]
     real(wp), intent(out) :: w1(3,3)   !! dW/dt1 [1/rad]
     real(wp), intent(out) :: w2(3,3)   !! dW/dt2 [1/rad]
@@ -461,7 +490,7 @@ contains
     real(wp), intent(out) :: w12(3,3)  !! d2W/dt1dt2 [1/rad^2]
     real(wp), intent(out) :: w22(3,3)  !! d2W/dt2^2 [1/rad^2]
     real(wp) :: c1, s1, c2, s2
-    c1 = cos(t1); s1 = sin(t1); c2 = cos(t2); s2 = sin(t2)
+    c1 = tr%c1; s1 = tr%s1; c2 = tr%c2; s2 = tr%s2
     w(1,:) = [c2, 0.0_wp, s2]
     w(2,:) = [s1*s2, c1, -s1*c2]
     w(3,:) = [-c1*s2, s1, c1*c2]
@@ -488,13 +517,21 @@ contains
     real(wp), intent(in) :: t1       !! first joint angle (about x0) [rad]
     real(wp), intent(in) :: t2       !! second joint angle (about rotated y) [rad]
     real(wp) :: r(3,3)               !! strut orientation in the gear frame [-]
+    r = strut_orientation_trig(r0, joint_trig(t1, t2))
+  end function strut_orientation
+
+  !> strut_orientation from cos and sin of the joint angles.
+  pure function strut_orientation_trig(r0, tr) result(r)
+    real(wp), intent(in) :: r0(3,3)          !! nominal strut frame [-]
+    type(joint_trig_t), intent(in) :: tr     !! cos and sin of the joint angles [-]
+    real(wp) :: r(3,3)                       !! strut orientation in the gear frame [-]
     real(wp) :: w(3,3), c1, s1, c2, s2
-    c1 = cos(t1); s1 = sin(t1); c2 = cos(t2); s2 = sin(t2)
+    c1 = tr%c1; s1 = tr%s1; c2 = tr%c2; s2 = tr%s2
     w(1,:) = [c2, 0.0_wp, s2]
     w(2,:) = [s1*s2, c1, -s1*c2]
     w(3,:) = [-c1*s2, s1, c1*c2]
     r = matmul(r0, w)
-  end function strut_orientation
+  end function strut_orientation_trig
 
   !> Unit axis of a strut: u = R0 (sin t2, -sin t1 cos t2, cos t1 cos t2).
   pure function strut_axis(r0, t1, t2) result(u)
@@ -502,10 +539,18 @@ contains
     real(wp), intent(in) :: t1       !! first joint angle [rad]
     real(wp), intent(in) :: t2       !! second joint angle [rad]
     real(wp) :: u(3)                 !! unit vector upper -> lower joint, gear frame [-]
-    real(wp) :: c1, s1, c2, s2
-    c1 = cos(t1); s1 = sin(t1); c2 = cos(t2); s2 = sin(t2)
-    u = matmul(r0, [s2, -s1*c2, c1*c2])
+    u = strut_axis_trig(r0, joint_trig(t1, t2))
   end function strut_axis
+
+  !> strut_axis from cos and sin of the joint angles.
+  pure function strut_axis_trig(r0, tr) result(u)
+    real(wp), intent(in) :: r0(3,3)          !! nominal strut frame [-]
+    type(joint_trig_t), intent(in) :: tr     !! cos and sin of the joint angles [-]
+    real(wp) :: u(3)                         !! unit vector upper -> lower joint, gear frame [-]
+    real(wp) :: c1, s1, c2, s2
+    c1 = tr%c1; s1 = tr%s1; c2 = tr%c2; s2 = tr%s2
+    u = matmul(r0, [s2, -s1*c2, c1*c2])
+  end function strut_axis_trig
 
   !> Strut axis and its first and second partial derivatives with respect to (t1, t2).
   pure subroutine strut_axis_derivs(r0, t1, t2, u, u1, u2, u11, u12, u22)
@@ -518,15 +563,28 @@ contains
     real(wp), intent(out) :: u11(3)   !! d2u/dt1^2 [1/rad^2]
     real(wp), intent(out) :: u12(3)   !! d2u/dt1dt2 [1/rad^2]
     real(wp), intent(out) :: u22(3)   !! d2u/dt2^2 (= -u) [1/rad^2]
+    call strut_axis_derivs_trig(r0, joint_trig(t1, t2), u, u1, u2, u11, u12, u22)
+  end subroutine strut_axis_derivs
+
+  !> strut_axis_derivs from cos and sin of the joint angles (the same values, bit for bit).
+  pure subroutine strut_axis_derivs_trig(r0, tr, u, u1, u2, u11, u12, u22)
+    real(wp), intent(in) :: r0(3,3)          !! nominal strut frame [-]
+    type(joint_trig_t), intent(in) :: tr     !! cos and sin of the joint angles [-]
+    real(wp), intent(out) :: u(3)     !! unit axis [-]
+    real(wp), intent(out) :: u1(3)    !! du/dt1 [1/rad]
+    real(wp), intent(out) :: u2(3)    !! du/dt2 [1/rad]
+    real(wp), intent(out) :: u11(3)   !! d2u/dt1^2 [1/rad^2]
+    real(wp), intent(out) :: u12(3)   !! d2u/dt1dt2 [1/rad^2]
+    real(wp), intent(out) :: u22(3)   !! d2u/dt2^2 (= -u) [1/rad^2]
     real(wp) :: c1, s1, c2, s2
-    c1 = cos(t1); s1 = sin(t1); c2 = cos(t2); s2 = sin(t2)
+    c1 = tr%c1; s1 = tr%s1; c2 = tr%c2; s2 = tr%s2
     u = matmul(r0, [s2, -s1*c2, c1*c2])
     u1 = matmul(r0, [0.0_wp, -c1*c2, -s1*c2])
     u2 = matmul(r0, [c2, s1*s2, -c1*s2])
     u11 = matmul(r0, [0.0_wp, s1*c2, -c1*c2])
     u12 = matmul(r0, [0.0_wp, c1*s2, s1*s2])
     u22 = -u
-  end subroutine strut_axis_derivs
+  end subroutine strut_axis_derivs_trig
 
   !> Length and joint angles of a strut from its upper joint P to a point X (closed form):
   !! L = |X - P|, u = R0^T (X - P)/L, t2 = asin(u1), t1 = atan2(-u2, u3). When X = P the
@@ -556,7 +614,7 @@ contains
   ! =====================================================================================
 
   !> Points of a gear (gear frame) at generalized coordinates q.
-  pure subroutine gear_points(geom, q, d, e_pri, f_pri, e_sec, f_sec)
+  pure subroutine gear_points(geom, q, d, e_pri, f_pri, e_sec, f_sec, trig)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
     real(wp), intent(out) :: d(3)              !! footpad joint a + d1 u_p [m]
@@ -564,44 +622,64 @@ contains
     real(wp), intent(out) :: f_pri(3)          !! right lug on the primary, a + Rp f_loc [m]
     real(wp), intent(out) :: e_sec(3)          !! lower end of the left secondary, b + db1 u_b [m]
     real(wp), intent(out) :: f_sec(3)          !! lower end of the right secondary, c + dc1 u_c [m]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
     real(wp) :: rp(3,3)
-    rp = strut_orientation(geom%R0p, q(iq_th1), q(iq_th2))
+    type(joint_trig_t) :: tr(3)
+    call trig_of(q, tr, trig)
+    rp = strut_orientation_trig(geom%R0p, tr(1))
     d = geom%a + q(iq_d1)*rp(:,3)
     e_pri = geom%a + matmul(rp, geom%e_loc)
     f_pri = geom%a + matmul(rp, geom%f_loc)
-    e_sec = geom%b + q(iq_db1)*strut_axis(geom%R0b, q(iq_thb1), q(iq_thb2))
-    f_sec = geom%c + q(iq_dc1)*strut_axis(geom%R0c, q(iq_thc1), q(iq_thc2))
+    e_sec = geom%b + q(iq_db1)*strut_axis_trig(geom%R0b, tr(2))
+    f_sec = geom%c + q(iq_dc1)*strut_axis_trig(geom%R0c, tr(3))
   end subroutine gear_points
 
+  !> The joint trigonometry of a gear at q: trig when given (it must be gear_trig(q)), else
+  !! gear_trig(q).
+  pure subroutine trig_of(q, tr, trig)
+    real(wp), intent(in) :: q(n_gear_q)                  !! generalized coordinates [m, rad]
+    type(joint_trig_t), intent(out) :: tr(3)             !! gear_trig(q) [-]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
+    if (present(trig)) then
+      tr = trig
+    else
+      tr = gear_trig(q)
+    end if
+  end subroutine trig_of
+
   !> Constraint residual (eq. 6): Phi = [e_pri - e_sec; f_pri - f_sec].
-  pure function gear_constraints(geom, q) result(phi)
+  pure function gear_constraints(geom, q, trig) result(phi)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
     real(wp) :: phi(n_gear_phi)                !! constraint residual [m]
     real(wp) :: d(3), e_pri(3), f_pri(3), e_sec(3), f_sec(3)
-    call gear_points(geom, q, d, e_pri, f_pri, e_sec, f_sec)
+    call gear_points(geom, q, d, e_pri, f_pri, e_sec, f_sec, trig)
     phi(1:3) = e_pri - e_sec
     phi(4:6) = f_pri - f_sec
   end function gear_constraints
 
   !> Constraint Jacobian Phi_q (6x9), analytic. Column iq_d1 is zero.
-  pure function gear_constraint_jacobian(geom, q) result(phi_q)
+  pure function gear_constraint_jacobian(geom, q, trig) result(phi_q)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
     real(wp) :: phi_q(n_gear_phi, n_gear_q)    !! dPhi/dq [m/m = -, m/rad]
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3)
     real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
+    type(joint_trig_t) :: tr(3)
+    call trig_of(q, tr, trig)
     phi_q = 0.0_wp
-    call joint_rotation_derivs(q(iq_th1), q(iq_th2), w, w1, w2, w11, w12, w22)
+    call joint_rotation_derivs(tr(1), w, w1, w2, w11, w12, w22)
     phi_q(1:3, iq_th1) = matmul(geom%R0p, matmul(w1, geom%e_loc))
     phi_q(1:3, iq_th2) = matmul(geom%R0p, matmul(w2, geom%e_loc))
     phi_q(4:6, iq_th1) = matmul(geom%R0p, matmul(w1, geom%f_loc))
     phi_q(4:6, iq_th2) = matmul(geom%R0p, matmul(w2, geom%f_loc))
-    call strut_axis_derivs(geom%R0b, q(iq_thb1), q(iq_thb2), u, u1, u2, u11, u12, u22)
+    call strut_axis_derivs_trig(geom%R0b, tr(2), u, u1, u2, u11, u12, u22)
     phi_q(1:3, iq_db1) = -u
     phi_q(1:3, iq_thb1) = -q(iq_db1)*u1
     phi_q(1:3, iq_thb2) = -q(iq_db1)*u2
-    call strut_axis_derivs(geom%R0c, q(iq_thc1), q(iq_thc2), u, u1, u2, u11, u12, u22)
+    call strut_axis_derivs_trig(geom%R0c, tr(3), u, u1, u2, u11, u12, u22)
     phi_q(4:6, iq_dc1) = -u
     phi_q(4:6, iq_thc1) = -q(iq_dc1)*u1
     phi_q(4:6, iq_thc2) = -q(iq_dc1)*u2
@@ -609,25 +687,28 @@ contains
 
   !> Acceleration right-hand side of eq. 16: gamma = -(Phi_q qdot)_q qdot, i.e. minus the
   !! second time derivative of Phi along the motion at qddot = 0 (Phi_q qddot = gamma).
-  pure function gear_constraint_gamma(geom, q, qdot) result(gamma)
+  pure function gear_constraint_gamma(geom, q, qdot, trig) result(gamma)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
     real(wp), intent(in) :: qdot(n_gear_q)     !! generalized velocities [m/s, rad/s]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
     real(wp) :: gamma(n_gear_phi)              !! convective term [m/s^2]
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), wdd(3,3)
     real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
     real(wp) :: a1, a2, l, ldot
-    call joint_rotation_derivs(q(iq_th1), q(iq_th2), w, w1, w2, w11, w12, w22)
+    type(joint_trig_t) :: tr(3)
+    call trig_of(q, tr, trig)
+    call joint_rotation_derivs(tr(1), w, w1, w2, w11, w12, w22)
     a1 = qdot(iq_th1); a2 = qdot(iq_th2)
     wdd = a1*a1*w11 + 2.0_wp*a1*a2*w12 + a2*a2*w22
     gamma(1:3) = -matmul(geom%R0p, matmul(wdd, geom%e_loc))
     gamma(4:6) = -matmul(geom%R0p, matmul(wdd, geom%f_loc))
 
-    call strut_axis_derivs(geom%R0b, q(iq_thb1), q(iq_thb2), u, u1, u2, u11, u12, u22)
+    call strut_axis_derivs_trig(geom%R0b, tr(2), u, u1, u2, u11, u12, u22)
     a1 = qdot(iq_thb1); a2 = qdot(iq_thb2); l = q(iq_db1); ldot = qdot(iq_db1)
     gamma(1:3) = gamma(1:3) + 2.0_wp*ldot*(a1*u1 + a2*u2) &
                  + l*(a1*a1*u11 + 2.0_wp*a1*a2*u12 + a2*a2*u22)
-    call strut_axis_derivs(geom%R0c, q(iq_thc1), q(iq_thc2), u, u1, u2, u11, u12, u22)
+    call strut_axis_derivs_trig(geom%R0c, tr(3), u, u1, u2, u11, u12, u22)
     a1 = qdot(iq_thc1); a2 = qdot(iq_thc2); l = q(iq_dc1); ldot = qdot(iq_dc1)
     gamma(4:6) = gamma(4:6) + 2.0_wp*ldot*(a1*u1 + a2*u2) &
                  + l*(a1*a1*u11 + 2.0_wp*a1*a2*u12 + a2*a2*u22)
@@ -648,14 +729,16 @@ contains
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), rp(3,3)
     real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
     real(wp) :: r(3), lr, j3inv(3,3), d1
+    type(joint_trig_t) :: tp
 
     d1 = q(iq_d1)
-    call strut_axis_derivs(geom%R0p, q(iq_th1), q(iq_th2), u, u1, u2, u11, u12, u22)
+    tp = joint_trig(q(iq_th1), q(iq_th2))
+    call strut_axis_derivs_trig(geom%R0p, tp, u, u1, u2, u11, u12, u22)
     j2(:,1) = u
     j2(:,2) = d1*u1
     j2(:,3) = d1*u2
 
-    call joint_rotation_derivs(q(iq_th1), q(iq_th2), w, w1, w2, w11, w12, w22)
+    call joint_rotation_derivs(tp, w, w1, w2, w11, w12, w22)
     rp = matmul(geom%R0p, w)
     j3(1,:) = [1.0_wp, 0.0_wp, 0.0_wp]
     r = geom%a + matmul(rp, geom%e_loc) - geom%b
