@@ -5,8 +5,10 @@
 !! projection (landyn_impact) and the projection of a gear alone. No update formula: that is the
 !! integrator's (numerics/).
 submodule (landyn_gear) landyn_gear_constraints
+  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: msg_len
-  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian
+  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, joint_trig_t, gear_trig, &
+                               strut_axis_derivs_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK, STAT_DIVERGED
@@ -52,12 +54,13 @@ contains
     real(wp) :: s1(3), sd1(3), a(max_rows, n_q), r(max_rows), viol
     integer :: iter, nrow
     character(len=msg_len) :: buf
+    type(joint_trig_t) :: tr(3)
 
     stat = STAT_OK
     ! Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A are built only when a
     ! correction is needed (a locked gear at rest needs none).
     nrow = n_phi + count(gear%st%locked)
-    call position_residual(gear, gear%st%q, nrow, r)
+    call position_residual(gear, gear%st%q, nrow, r, tr)
     viol = maxval(abs(r(1:n_phi)))
     gear%st%max_drift = max(gear%st%max_drift, viol)
     if (viol > max_drift) then
@@ -69,10 +72,10 @@ contains
     end if
     do iter = 1, max_iter
       if (maxval(abs(r(1:nrow))) <= tol) exit
-      call build_rows(gear, gear%st%q, a, nrow)
+      call build_rows(gear, gear%st%q, a, nrow, tr)
       call min_norm_correction(nrow, a, r, gear%st%q, stat, errmsg)
       if (stat /= STAT_OK) return
-      call position_residual(gear, gear%st%q, nrow, r)
+      call position_residual(gear, gear%st%q, nrow, r, tr)
       gear%st%n_correction_iter = max(gear%st%n_correction_iter, iter)
     end do
     viol = maxval(abs(r(1:nrow)))
@@ -84,7 +87,9 @@ contains
       return
     end if
     gear%st%max_violation = max(gear%st%max_violation, viol)
-    call cache_kinematics(gear)
+    ! The strut kinematics and Phi_q at the corrected coordinates, for the velocity projection and
+    ! the next evaluation, from the joint trigonometry the last residual computed there.
+    call cache_corrected(gear, tr)
     ! Crush history (positions only).
     call strokes(gear, gear%st%q, gear%st%qd, s1, sd1)
     gear%st%s_hismax = max(gear%st%s_hismax, s1)
@@ -170,14 +175,53 @@ contains
     call build_rows(gear, gear%st%q, a, nrow)
   end procedure gear_velocity_rows
 
-  !> Rows of the correction: Phi_q and one row per locked strut.
-  pure subroutine build_rows(gear, qv, a, nrow)
+  !> The kinematics cache (what cache_kinematics stores) and the Phi_q cache at the current
+  !! coordinates, from their joint trigonometry tr: the same values as from the angles.
+  pure subroutine cache_corrected(gear, tr)
+    type(gear_t), intent(inout) :: gear          !! gear
+    type(joint_trig_t), intent(in) :: tr(3)      !! gear_trig(gear%st%q) [-]
+    integer :: k
+    associate (sk => gear%st%kin, q => gear%st%q)
+      sk(1)%p = gear%geom%a
+      sk(2)%p = gear%geom%b
+      sk(3)%p = gear%geom%c
+      call strut_axis_derivs_trig(gear%geom%R0p, tr(1), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
+      call strut_axis_derivs_trig(gear%geom%R0b, tr(2), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
+      call strut_axis_derivs_trig(gear%geom%R0c, tr(3), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+      do k = 1, n_struts
+        sk(k)%mf = gear%strut(k)%at(q(idx_len(k)))
+      end do
+      gear%st%kin_q = q
+      gear%st%kin_ok = .true.
+      gear%st%phq = gear_constraint_jacobian(gear%geom, q, tr)
+      gear%st%phq_q = q
+      gear%st%phq_ok = .true.
+    end associate
+  end subroutine cache_corrected
+
+  !> a and b are the same coordinates, bit for bit (a cache keyed on them then gives exactly what
+  !! computing afresh would).
+  pure logical function same_q(a, b) result(same)
+    real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
+    real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
+    same = all(transfer(a, 0_int64, n_q) == transfer(b, 0_int64, n_q))
+  end function same_q
+
+  !> Rows of the correction: Phi_q and one row per locked strut. Phi_q is the cached one when it
+  !! is at qv bit for bit (gear_correct_positions caches it at the corrected coordinates), else
+  !! computed, from the joint trigonometry tr when given.
+  pure subroutine build_rows(gear, qv, a, nrow, tr)
     type(gear_t), intent(in) :: gear           !! gear
     real(wp), intent(in) :: qv(n_q)            !! coordinates
     real(wp), intent(out) :: a(max_rows, n_q)  !! rows
     integer, intent(out) :: nrow               !! number of rows
+    type(joint_trig_t), intent(in), optional :: tr(3)  !! gear_trig(qv), when at hand [-]
     integer :: k
-    a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv)
+    if (gear%st%phq_ok .and. same_q(qv, gear%st%phq_q)) then
+      a(1:n_phi, :) = gear%st%phq
+    else
+      a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv, tr)
+    end if
     nrow = n_phi
     do k = 1, 3
       if (gear%st%locked(k)) then
@@ -189,14 +233,16 @@ contains
   end subroutine build_rows
 
   !> Position residual: Phi(q) and the locked strokes' departure from their held values.
-  subroutine position_residual(gear, qv, nrow, r)
+  subroutine position_residual(gear, qv, nrow, r, tr)
     type(gear_t), intent(in) :: gear        !! gear
     real(wp), intent(in) :: qv(n_q)         !! coordinates
     integer, intent(in) :: nrow             !! number of rows
     real(wp), intent(out) :: r(max_rows)    !! residual
+    type(joint_trig_t), intent(out) :: tr(3)  !! joint trigonometry at qv (gear_trig) [-]
     integer :: k, row
     real(wp) :: s(3), sd(3)
-    r(1:n_phi) = gear_constraints(gear%geom, qv)
+    tr = gear_trig(qv)
+    r(1:n_phi) = gear_constraints(gear%geom, qv, tr)
     call strokes(gear, qv, gear%st%qd, s, sd)
     row = n_phi
     do k = 1, 3
