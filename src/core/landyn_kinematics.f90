@@ -73,7 +73,7 @@ module landyn_kinematics
   public :: gear_geometry_t, build_gear_geometry
   ! --- strut kinematics
   public :: strut_orientation, strut_axis, strut_axis_derivs
-  public :: joint_trig_t, joint_trig, gear_trig, strut_axis_derivs_trig
+  public :: joint_trig_t, joint_trig, gear_trig, strut_axis_derivs_trig, axis_derivs_t
   public :: strut_angles_from_point
   ! --- gear kinematics, constraints and Jacobians
   public :: gear_points, gear_constraints, gear_constraint_jacobian, gear_constraint_gamma
@@ -116,6 +116,17 @@ module landyn_kinematics
     real(wp) :: c2 = 1.0_wp  !! cos t2 [-]
     real(wp) :: s2 = 0.0_wp  !! sin t2 [-]
   end type joint_trig_t
+
+  !> A strut's unit axis and its partials with respect to its joint angles at one configuration
+  !! (the outputs of `strut_axis_derivs`).
+  type :: axis_derivs_t
+    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
+    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
+    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
+    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
+    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
+    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
+  end type axis_derivs_t
 
   !> Geometry of one landing gear in its own gear frame, built once by `build_gear_geometry`.
   type :: gear_geometry_t
@@ -686,32 +697,46 @@ contains
   end function gear_constraint_jacobian
 
   !> Acceleration right-hand side of eq. 16: gamma = -(Phi_q qdot)_q qdot, i.e. minus the
-  !! second time derivative of Phi along the motion at qddot = 0 (Phi_q qddot = gamma).
-  pure function gear_constraint_gamma(geom, q, qdot, trig) result(gamma)
+  !! second time derivative of Phi along the motion at qddot = 0 (Phi_q qddot = gamma). The
+  !! secondaries' axis partials are taken from axes when given (they must be strut_axis_derivs
+  !! of the left and right secondary at q), and the joint trigonometry from trig.
+  pure function gear_constraint_gamma(geom, q, qdot, trig, axes) result(gamma)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
     real(wp), intent(in) :: qdot(n_gear_q)     !! generalized velocities [m/s, rad/s]
     type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
+    type(axis_derivs_t), intent(in), optional :: axes(2) !! left, right secondary axes at q, when at hand [-, 1/rad, 1/rad^2]
     real(wp) :: gamma(n_gear_phi)              !! convective term [m/s^2]
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), wdd(3,3)
-    real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
     real(wp) :: a1, a2, l, ldot
-    type(joint_trig_t) :: tr(3)
-    call trig_of(q, tr, trig)
-    call joint_rotation_derivs(tr(1), w, w1, w2, w11, w12, w22)
+    type(joint_trig_t) :: tr(3), tp
+    type(axis_derivs_t) :: ab, ac
+    if (present(axes)) then
+      if (present(trig)) then
+        tp = trig(1)
+      else
+        tp = joint_trig(q(iq_th1), q(iq_th2))
+      end if
+      ab = axes(1)
+      ac = axes(2)
+    else
+      call trig_of(q, tr, trig)
+      tp = tr(1)
+      call strut_axis_derivs_trig(geom%R0b, tr(2), ab%u, ab%u1, ab%u2, ab%u11, ab%u12, ab%u22)
+      call strut_axis_derivs_trig(geom%R0c, tr(3), ac%u, ac%u1, ac%u2, ac%u11, ac%u12, ac%u22)
+    end if
+    call joint_rotation_derivs(tp, w, w1, w2, w11, w12, w22)
     a1 = qdot(iq_th1); a2 = qdot(iq_th2)
     wdd = a1*a1*w11 + 2.0_wp*a1*a2*w12 + a2*a2*w22
     gamma(1:3) = -matmul(geom%R0p, matmul(wdd, geom%e_loc))
     gamma(4:6) = -matmul(geom%R0p, matmul(wdd, geom%f_loc))
 
-    call strut_axis_derivs_trig(geom%R0b, tr(2), u, u1, u2, u11, u12, u22)
     a1 = qdot(iq_thb1); a2 = qdot(iq_thb2); l = q(iq_db1); ldot = qdot(iq_db1)
-    gamma(1:3) = gamma(1:3) + 2.0_wp*ldot*(a1*u1 + a2*u2) &
-                 + l*(a1*a1*u11 + 2.0_wp*a1*a2*u12 + a2*a2*u22)
-    call strut_axis_derivs_trig(geom%R0c, tr(3), u, u1, u2, u11, u12, u22)
+    gamma(1:3) = gamma(1:3) + 2.0_wp*ldot*(a1*ab%u1 + a2*ab%u2) &
+                 + l*(a1*a1*ab%u11 + 2.0_wp*a1*a2*ab%u12 + a2*a2*ab%u22)
     a1 = qdot(iq_thc1); a2 = qdot(iq_thc2); l = q(iq_dc1); ldot = qdot(iq_dc1)
-    gamma(4:6) = gamma(4:6) + 2.0_wp*ldot*(a1*u1 + a2*u2) &
-                 + l*(a1*a1*u11 + 2.0_wp*a1*a2*u12 + a2*a2*u22)
+    gamma(4:6) = gamma(4:6) + 2.0_wp*ldot*(a1*ac%u1 + a2*ac%u2) &
+                 + l*(a1*a1*ac%u11 + 2.0_wp*a1*a2*ac%u12 + a2*a2*ac%u22)
   end function gear_constraint_gamma
 
   !> Footpad Jacobians of eq. 7 at the primary coordinates (d1, th1, th2) of q (the secondary

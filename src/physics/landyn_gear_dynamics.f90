@@ -71,7 +71,8 @@ contains
     else
       phq = gear_constraint_jacobian(gear%geom, gear%st%q)
     end if
-    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd)
+    ! the secondaries' axis partials of sk are those gear_constraint_gamma would compute at q
+    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, axes=sk(2:3)%axis_derivs_t)
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
     ge%stroke(1:3) = s
     do k = 1, 3
