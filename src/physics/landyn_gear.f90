@@ -28,7 +28,7 @@ module landyn_gear
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
   use landyn_gear_base, only: gear_eval_t, strut_mode, strut_mode_after   ! the evaluation record and mode codes of every gear type
-  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1, axis_derivs_t
+  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
   implicit none
@@ -61,10 +61,15 @@ module landyn_gear
     class(buffer_law_t), allocatable :: law   !! the strut's buffer law (landyn_buffer)
   end type buffer_slot_t
 
-  !> Kinematics of one strut at a configuration: upper joint, axis and its partials (the parent
-  !! axis_derivs_t: u, u1, u2, u11, u12, u22, as strut_axis_derivs gives them).
-  type, extends(axis_derivs_t) :: strut_kin_t
+  !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
+  type :: strut_kin_t
     real(wp) :: p(3) = 0.0_wp     !! upper joint, gear frame [m]
+    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
+    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
+    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
+    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
+    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
+    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
     type(strut_mass_functions_t) :: mf  !! mass functions at the strut's length [kg, kg m, kg m^2]
   end type strut_kin_t
 

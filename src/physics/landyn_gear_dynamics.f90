@@ -17,7 +17,7 @@
 !! cross-checking.
 submodule (landyn_gear) landyn_gear_dynamics
   use landyn_buffer, only: rigid_force
-  use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3
+  use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3, axis_derivs_t
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
   use landyn_status, only: STAT_OK
@@ -72,7 +72,8 @@ contains
       phq = gear_constraint_jacobian(gear%geom, gear%st%q)
     end if
     ! the secondaries' axis partials of sk are those gear_constraint_gamma would compute at q
-    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, axes=sk(2:3)%axis_derivs_t)
+    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, axes=[(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, &
+                                sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)])
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
     ge%stroke(1:3) = s
     do k = 1, 3
