@@ -670,47 +670,44 @@ contains
     phi(4:6) = f_pri - f_sec
   end function gear_constraints
 
-  !> Constraint Jacobian Phi_q (6x9), analytic. Column iq_d1 is zero.
-  pure function gear_constraint_jacobian(geom, q, trig) result(phi_q)
+  !> Constraint Jacobian Phi_q (6x9), analytic. Column iq_d1 is zero. The secondaries' axis
+  !! partials are taken from axes when given (strut_axis_derivs of the left and right secondary at
+  !! q), and the joint trigonometry from trig.
+  pure function gear_constraint_jacobian(geom, q, trig, axes) result(phi_q)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
     type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
+    type(axis_derivs_t), intent(in), optional :: axes(2) !! left, right secondary axes at q, when at hand [-, 1/rad, 1/rad^2]
     real(wp) :: phi_q(n_gear_phi, n_gear_q)    !! dPhi/dq [m/m = -, m/rad]
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3)
-    real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
-    type(joint_trig_t) :: tr(3)
-    call trig_of(q, tr, trig)
+    type(joint_trig_t) :: tp
+    type(axis_derivs_t) :: ab, ac
+    call secondary_axes(geom, q, tp, ab, ac, trig, axes)
     phi_q = 0.0_wp
-    call joint_rotation_derivs(tr(1), w, w1, w2, w11, w12, w22)
+    call joint_rotation_derivs(tp, w, w1, w2, w11, w12, w22)
     phi_q(1:3, iq_th1) = matmul(geom%R0p, matmul(w1, geom%e_loc))
     phi_q(1:3, iq_th2) = matmul(geom%R0p, matmul(w2, geom%e_loc))
     phi_q(4:6, iq_th1) = matmul(geom%R0p, matmul(w1, geom%f_loc))
     phi_q(4:6, iq_th2) = matmul(geom%R0p, matmul(w2, geom%f_loc))
-    call strut_axis_derivs_trig(geom%R0b, tr(2), u, u1, u2, u11, u12, u22)
-    phi_q(1:3, iq_db1) = -u
-    phi_q(1:3, iq_thb1) = -q(iq_db1)*u1
-    phi_q(1:3, iq_thb2) = -q(iq_db1)*u2
-    call strut_axis_derivs_trig(geom%R0c, tr(3), u, u1, u2, u11, u12, u22)
-    phi_q(4:6, iq_dc1) = -u
-    phi_q(4:6, iq_thc1) = -q(iq_dc1)*u1
-    phi_q(4:6, iq_thc2) = -q(iq_dc1)*u2
+    phi_q(1:3, iq_db1) = -ab%u
+    phi_q(1:3, iq_thb1) = -q(iq_db1)*ab%u1
+    phi_q(1:3, iq_thb2) = -q(iq_db1)*ab%u2
+    phi_q(4:6, iq_dc1) = -ac%u
+    phi_q(4:6, iq_thc1) = -q(iq_dc1)*ac%u1
+    phi_q(4:6, iq_thc2) = -q(iq_dc1)*ac%u2
   end function gear_constraint_jacobian
 
-  !> Acceleration right-hand side of eq. 16: gamma = -(Phi_q qdot)_q qdot, i.e. minus the
-  !! second time derivative of Phi along the motion at qddot = 0 (Phi_q qddot = gamma). The
-  !! secondaries' axis partials are taken from axes when given (they must be strut_axis_derivs
-  !! of the left and right secondary at q), and the joint trigonometry from trig.
-  pure function gear_constraint_gamma(geom, q, qdot, trig, axes) result(gamma)
+  !> The primary's joint trigonometry and the secondaries' axis partials at q: from trig and axes
+  !! when given, else computed (the same values).
+  pure subroutine secondary_axes(geom, q, tp, ab, ac, trig, axes)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
-    real(wp), intent(in) :: qdot(n_gear_q)     !! generalized velocities [m/s, rad/s]
+    type(joint_trig_t), intent(out) :: tp      !! the primary's joint trigonometry [-]
+    type(axis_derivs_t), intent(out) :: ab     !! left secondary's axis partials [-, 1/rad, 1/rad^2]
+    type(axis_derivs_t), intent(out) :: ac     !! right secondary's axis partials [-, 1/rad, 1/rad^2]
     type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
     type(axis_derivs_t), intent(in), optional :: axes(2) !! left, right secondary axes at q, when at hand [-, 1/rad, 1/rad^2]
-    real(wp) :: gamma(n_gear_phi)              !! convective term [m/s^2]
-    real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), wdd(3,3)
-    real(wp) :: a1, a2, l, ldot
-    type(joint_trig_t) :: tr(3), tp
-    type(axis_derivs_t) :: ab, ac
+    type(joint_trig_t) :: tr(3)
     if (present(axes)) then
       if (present(trig)) then
         tp = trig(1)
@@ -725,6 +722,24 @@ contains
       call strut_axis_derivs_trig(geom%R0b, tr(2), ab%u, ab%u1, ab%u2, ab%u11, ab%u12, ab%u22)
       call strut_axis_derivs_trig(geom%R0c, tr(3), ac%u, ac%u1, ac%u2, ac%u11, ac%u12, ac%u22)
     end if
+  end subroutine secondary_axes
+
+  !> Acceleration right-hand side of eq. 16: gamma = -(Phi_q qdot)_q qdot, i.e. minus the
+  !! second time derivative of Phi along the motion at qddot = 0 (Phi_q qddot = gamma). The
+  !! secondaries' axis partials are taken from axes when given (they must be strut_axis_derivs
+  !! of the left and right secondary at q), and the joint trigonometry from trig.
+  pure function gear_constraint_gamma(geom, q, qdot, trig, axes) result(gamma)
+    type(gear_geometry_t), intent(in) :: geom  !! gear geometry
+    real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
+    real(wp), intent(in) :: qdot(n_gear_q)     !! generalized velocities [m/s, rad/s]
+    type(joint_trig_t), intent(in), optional :: trig(3)  !! gear_trig(q), when already at hand [-]
+    type(axis_derivs_t), intent(in), optional :: axes(2) !! left, right secondary axes at q, when at hand [-, 1/rad, 1/rad^2]
+    real(wp) :: gamma(n_gear_phi)              !! convective term [m/s^2]
+    real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), wdd(3,3)
+    real(wp) :: a1, a2, l, ldot
+    type(joint_trig_t) :: tp
+    type(axis_derivs_t) :: ab, ac
+    call secondary_axes(geom, q, tp, ab, ac, trig, axes)
     call joint_rotation_derivs(tp, w, w1, w2, w11, w12, w22)
     a1 = qdot(iq_th1); a2 = qdot(iq_th2)
     wdd = a1*a1*w11 + 2.0_wp*a1*a2*w12 + a2*a2*w22

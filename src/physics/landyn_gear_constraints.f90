@@ -8,7 +8,7 @@ submodule (landyn_gear) landyn_gear_constraints
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: msg_len
   use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, joint_trig_t, gear_trig, &
-                               strut_axis_derivs_trig
+                               strut_axis_derivs_trig, axis_derivs_t
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK, STAT_DIVERGED
@@ -193,7 +193,8 @@ contains
       end do
       gear%st%kin_q = q
       gear%st%kin_ok = .true.
-      gear%st%phq = gear_constraint_jacobian(gear%geom, q, tr)
+      gear%st%phq = gear_constraint_jacobian(gear%geom, q, tr, [(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, &
+                                             sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)])
       gear%st%phq_q = q
       gear%st%phq_ok = .true.
     end associate
