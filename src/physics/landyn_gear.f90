@@ -28,7 +28,7 @@ module landyn_gear
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
   use landyn_gear_base, only: gear_eval_t, strut_mode, strut_mode_after   ! the evaluation record and mode codes of every gear type
-  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1
+  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1, joint_trig_t
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
   implicit none
@@ -119,6 +119,11 @@ module landyn_gear
     logical :: kin_ok = .false.                   !! kin is valid for the coordinates kin_q [-]
     real(wp) :: kin_q(n_q) = 0.0_wp               !! coordinates of the cached kinematics [m, rad]
     type(strut_kin_t) :: kin(n_struts)            !! cached strut kinematics at kin_q
+    ! The joint trigonometry (gear_trig) at the corrected coordinates (gear_correct_positions), for
+    ! the evaluations at the same q: the velocity coupling and gamma.
+    logical :: trig_ok = .false.                  !! trig is valid for the coordinates trig_q [-]
+    real(wp) :: trig_q(n_q) = 0.0_wp              !! coordinates of the cached trigonometry [m, rad]
+    type(joint_trig_t) :: trig(n_struts)          !! cos and sin of each strut's joint angles at trig_q [-]
   end type gear_state_t
 
   !> One landing gear: geometry, masses, buffers and state.
@@ -450,8 +455,9 @@ module landyn_gear
       real(wp), intent(out) :: q_ext(n_q)  !! footpad-force generalized force [N, N m]
     end subroutine gear_generalized_forces
 
-    !> generalized_forces with the strut kinematics and mass functions at q given.
-    module pure subroutine generalized_forces(q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    !> generalized_forces with the strut kinematics and mass functions at q given (and the joint
+    !! trigonometry, when at hand).
+    module pure subroutine generalized_forces(q, qd, sk, f_field, f_foot, q_ine, q_grv, q_ext, trig)
       real(wp), intent(in) :: q(n_q)         !! coordinates [m, rad]
       real(wp), intent(in) :: qd(n_q)        !! velocities [m/s, rad/s]
       type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at q
@@ -460,7 +466,15 @@ module landyn_gear
       real(wp), intent(out) :: q_ine(n_q)    !! velocity coupling [N, N m]
       real(wp), intent(out) :: q_grv(n_q)    !! field [N, N m]
       real(wp), intent(out) :: q_ext(n_q)    !! footpad force [N, N m]
+      type(joint_trig_t), intent(in), optional :: trig(n_struts)  !! gear_trig(q), when at hand [-]
     end subroutine generalized_forces
+
+    !> a and b are the same coordinates, bit for bit (so that a cache keyed on them gives exactly
+    !! what computing afresh would).
+    module pure logical function same_q(a, b) result(same)
+      real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
+      real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
+    end function same_q
 
     !> Generalized force -H_a^T alpha of the non-uniform part of the frame's angular-acceleration
     !! field, -alpha x (r - a) on every leg part (r - a measured from the upper primary joint a):

@@ -175,8 +175,9 @@ contains
     call build_rows(gear, gear%st%q, a, nrow)
   end procedure gear_velocity_rows
 
-  !> The kinematics cache (what cache_kinematics stores) and the Phi_q cache at the current
-  !! coordinates, from their joint trigonometry tr: the same values as from the angles.
+  !> The kinematics cache (what cache_kinematics stores), the Phi_q cache and the trigonometry
+  !! cache at the current coordinates, from their joint trigonometry tr: the same values as from
+  !! the angles.
   pure subroutine cache_corrected(gear, tr)
     type(gear_t), intent(inout) :: gear          !! gear
     type(joint_trig_t), intent(in) :: tr(3)      !! gear_trig(gear%st%q) [-]
@@ -197,16 +198,21 @@ contains
                                              sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)])
       gear%st%phq_q = q
       gear%st%phq_ok = .true.
+      gear%st%trig = tr
+      gear%st%trig_q = q
+      gear%st%trig_ok = .true.
     end associate
   end subroutine cache_corrected
 
-  !> a and b are the same coordinates, bit for bit (a cache keyed on them then gives exactly what
-  !! computing afresh would).
-  pure logical function same_q(a, b) result(same)
-    real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
-    real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
-    same = all(transfer(a, 0_int64, n_q) == transfer(b, 0_int64, n_q))
-  end function same_q
+  module procedure same_q
+    integer :: i
+    ! element by element (an array transfer would allocate a temporary)
+    same = .false.
+    do i = 1, n_q
+      if (transfer(a(i), 0_int64) /= transfer(b(i), 0_int64)) return
+    end do
+    same = .true.
+  end procedure same_q
 
   !> Rows of the correction: Phi_q and one row per locked strut. Phi_q is the cached one when it
   !! is at qv bit for bit (gear_correct_positions caches it at the corrected coordinates), else

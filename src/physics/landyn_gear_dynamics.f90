@@ -34,7 +34,8 @@ contains
     real(wp) :: f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
     type(strut_kin_t) :: sk(3)
     integer :: k, iter, nrow, row_of(3), m_entry(3), dir_go
-    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3), stopped(3)
+    logical :: changed, done, tried(3), released(3), stop_hit(3), with_loads, got_in(3), stopped(3), have_trig
+    type(axis_derivs_t) :: axes(2)
 
     stat = STAT_OK
     with_loads = .true.
@@ -64,7 +65,13 @@ contains
     end if
     call strut_kinematics(gear, gear%st%q, sk)
     mdiag = mass_diagonal(sk, gear%st%q)
-    call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    have_trig = gear%st%trig_ok
+    if (have_trig) have_trig = same_q(gear%st%q, gear%st%trig_q)
+    if (have_trig) then
+      call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext, gear%st%trig)
+    else
+      call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
+    end if
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
     if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
       phq = gear%st%phq
@@ -72,8 +79,12 @@ contains
       phq = gear_constraint_jacobian(gear%geom, gear%st%q)
     end if
     ! the secondaries' axis partials of sk are those gear_constraint_gamma would compute at q
-    gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, axes=[(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, &
-                                sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)])
+    axes = [(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)]
+    if (have_trig) then
+      gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, gear%st%trig, axes)
+    else
+      gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, axes=axes)
+    end if
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
     ge%stroke(1:3) = s
     do k = 1, 3

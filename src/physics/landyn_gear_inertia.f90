@@ -29,7 +29,11 @@ contains
       mf = sk(k)%mf
       jr = mf%j
       jp = mf%dj
-      c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
+      if (present(trig)) then
+        c = trig(k)%c2; sn = trig(k)%s2      ! cos and sin of q(i0 + 3)
+      else
+        c = cos(q(i0 + 3)); sn = sin(q(i0 + 3))
+      end if
       q_ine(i0 + 1) = 0.5_wp*jp*(c*c*t1d*t1d + t2d*t2d)
       q_ine(i0 + 2) = -jp*lend*c*c*t1d + 2.0_wp*jr*c*sn*t1d*t2d
       q_ine(i0 + 3) = -jp*lend*t2d - jr*c*sn*t1d*t1d
