@@ -28,7 +28,7 @@ module landyn_gear
   use landyn_kinds, only: wp
   use landyn_buffer, only: buffer_law_t
   use landyn_gear_base, only: gear_eval_t, strut_mode, strut_mode_after   ! the evaluation record and mode codes of every gear type
-  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1, joint_trig_t
+  use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1, joint_trig_t, axis_derivs_t
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
   implicit none
@@ -174,12 +174,20 @@ module landyn_gear
 
     !> The strut kinematics computed afresh from the geometry and the struts alone (never from the
     !! gear's state: a caller may be writing that state while it asks).
-    module pure subroutine kinematics_at(geom, strut, q, sk)
+    module pure subroutine kinematics_at(geom, strut, q, sk, trig)
       type(gear_geometry_t), intent(in) :: geom     !! hard points and nominal strut frames, gear frame
       type(strut_t), intent(in) :: strut(n_struts)  !! the struts' mass models
       real(wp), intent(in) :: q(n_q)                !! coordinates [m, rad]
       type(strut_kin_t), intent(inout) :: sk(3)     !! per-strut kinematics (every component set)
+      type(joint_trig_t), intent(in), optional :: trig(n_struts)  !! gear_trig(q), when at hand [-]
     end subroutine kinematics_at
+
+    !> The secondaries' axis and its partials from their strut kinematics (for the constraint
+    !! Jacobian and gamma, which would compute the same values at the same coordinates).
+    module pure function secondary_axes_of(sk) result(axes)
+      type(strut_kin_t), intent(in) :: sk(n_struts)  !! strut kinematics
+      type(axis_derivs_t) :: axes(2)                 !! left and right secondary [-, 1/rad, 1/rad^2]
+    end function secondary_axes_of
 
     !> Diagonal of the mass matrix M(q).
     module pure function gear_mass_matrix(gear, q) result(mdiag)
@@ -471,10 +479,10 @@ module landyn_gear
 
     !> a and b are the same coordinates, bit for bit (so that a cache keyed on them gives exactly
     !! what computing afresh would).
-    module pure logical function same_q(a, b) result(same)
+    module pure logical function same_coordinates(a, b) result(same)
       real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
       real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
-    end function same_q
+    end function same_coordinates
 
     !> Generalized force -H_a^T alpha of the non-uniform part of the frame's angular-acceleration
     !! field, -alpha x (r - a) on every leg part (r - a measured from the upper primary joint a):

@@ -5,10 +5,8 @@
 !! projection (landyn_impact) and the projection of a gear alone. No update formula: that is the
 !! integrator's (numerics/).
 submodule (landyn_gear) landyn_gear_constraints
-  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: msg_len
-  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, joint_trig_t, gear_trig, &
-                               strut_axis_derivs_trig, axis_derivs_t
+  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK, STAT_DIVERGED
@@ -181,38 +179,14 @@ contains
   pure subroutine cache_corrected(gear, tr)
     type(gear_t), intent(inout) :: gear          !! gear
     type(joint_trig_t), intent(in) :: tr(3)      !! gear_trig(gear%st%q) [-]
-    integer :: k
-    associate (sk => gear%st%kin, q => gear%st%q)
-      sk(1)%p = gear%geom%a
-      sk(2)%p = gear%geom%b
-      sk(3)%p = gear%geom%c
-      call strut_axis_derivs_trig(gear%geom%R0p, tr(1), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
-      call strut_axis_derivs_trig(gear%geom%R0b, tr(2), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
-      call strut_axis_derivs_trig(gear%geom%R0c, tr(3), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
-      do k = 1, n_struts
-        sk(k)%mf = gear%strut(k)%at(q(idx_len(k)))
-      end do
-      gear%st%kin_q = q
-      gear%st%kin_ok = .true.
-      gear%st%phq = gear_constraint_jacobian(gear%geom, q, tr, [(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, &
-                                             sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)])
-      gear%st%phq_q = q
-      gear%st%phq_ok = .true.
-      gear%st%trig = tr
-      gear%st%trig_q = q
-      gear%st%trig_ok = .true.
-    end associate
+    call kinematics_at(gear%geom, gear%strut, gear%st%q, gear%st%kin, tr)
+    gear%st%kin_q = gear%st%q
+    gear%st%kin_ok = .true.
+    call gear_cache_jacobian(gear, gear_constraint_jacobian(gear%geom, gear%st%q, tr, secondary_axes_of(gear%st%kin)))
+    gear%st%trig = tr
+    gear%st%trig_q = gear%st%q
+    gear%st%trig_ok = .true.
   end subroutine cache_corrected
-
-  module procedure same_q
-    integer :: i
-    ! element by element (an array transfer would allocate a temporary)
-    same = .false.
-    do i = 1, n_q
-      if (transfer(a(i), 0_int64) /= transfer(b(i), 0_int64)) return
-    end do
-    same = .true.
-  end procedure same_q
 
   !> Rows of the correction: Phi_q and one row per locked strut. Phi_q is the cached one when it
   !! is at qv bit for bit (gear_correct_positions caches it at the corrected coordinates), else
@@ -224,7 +198,7 @@ contains
     integer, intent(out) :: nrow               !! number of rows
     type(joint_trig_t), intent(in), optional :: tr(3)  !! gear_trig(qv), when at hand [-]
     integer :: k
-    if (gear%st%phq_ok .and. same_q(qv, gear%st%phq_q)) then
+    if (gear%st%phq_ok .and. same_coordinates(qv, gear%st%phq_q)) then
       a(1:n_phi, :) = gear%st%phq
     else
       a(1:n_phi, :) = gear_constraint_jacobian(gear%geom, qv, tr)

@@ -66,20 +66,20 @@ contains
     call strut_kinematics(gear, gear%st%q, sk)
     mdiag = mass_diagonal(sk, gear%st%q)
     have_trig = gear%st%trig_ok
-    if (have_trig) have_trig = same_q(gear%st%q, gear%st%trig_q)
+    if (have_trig) have_trig = same_coordinates(gear%st%q, gear%st%trig_q)
     if (have_trig) then
       call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext, gear%st%trig)
     else
       call generalized_forces(gear%st%q, gear%st%qd, sk, f_field, f_foot, q_ine, q_grv, q_ext)
     end if
     if (present(alpha)) q_alp = alpha_forces(gear, gear%st%q, sk, alpha)
-    if (gear%st%phq_ok .and. maxval(abs(gear%st%q - gear%st%phq_q)) <= 0.0_wp) then
+    if (gear%st%phq_ok .and. same_coordinates(gear%st%q, gear%st%phq_q)) then
       phq = gear%st%phq
     else
       phq = gear_constraint_jacobian(gear%geom, gear%st%q)
     end if
     ! the secondaries' axis partials of sk are those gear_constraint_gamma would compute at q
-    axes = [(axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, sk(k)%u11, sk(k)%u12, sk(k)%u22), k = 2, 3)]
+    axes = secondary_axes_of(sk)
     if (have_trig) then
       gam = gear_constraint_gamma(gear%geom, gear%st%q, gear%st%qd, gear%st%trig, axes)
     else

@@ -2,7 +2,7 @@
 !! accessors through which the other layers and the tests read and set its (private) state.
 submodule (landyn_gear) landyn_gear_setup
   use, intrinsic :: iso_fortran_env, only: int64
-  use landyn_kinematics, only: strut_axis_derivs
+  use landyn_kinematics, only: strut_axis_derivs, strut_axis_derivs_trig, gear_trig
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strut, only: strut_from_mass
   implicit none
@@ -91,29 +91,40 @@ contains
   end procedure strut_kinematics
 
   module procedure kinematics_at
+    type(joint_trig_t) :: tr(n_struts)
+    ! cos and sin of the joint angles once (gear_trig), or those the caller already has
+    if (present(trig)) then
+      tr = trig
+    else
+      tr = gear_trig(q)
+    end if
     sk(1)%p = geom%a
     sk(2)%p = geom%b
     sk(3)%p = geom%c
-    call strut_axis_derivs(geom%R0p, q(2), q(3), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
-    call strut_axis_derivs(geom%R0b, q(5), q(6), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
-    call strut_axis_derivs(geom%R0c, q(8), q(9), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
+    call strut_axis_derivs_trig(geom%R0p, tr(1), sk(1)%u, sk(1)%u1, sk(1)%u2, sk(1)%u11, sk(1)%u12, sk(1)%u22)
+    call strut_axis_derivs_trig(geom%R0b, tr(2), sk(2)%u, sk(2)%u1, sk(2)%u2, sk(2)%u11, sk(2)%u12, sk(2)%u22)
+    call strut_axis_derivs_trig(geom%R0c, tr(3), sk(3)%u, sk(3)%u1, sk(3)%u2, sk(3)%u11, sk(3)%u12, sk(3)%u22)
     sk(1)%mf = strut(1)%at(q(idx_len(1)))
     sk(2)%mf = strut(2)%at(q(idx_len(2)))
     sk(3)%mf = strut(3)%at(q(idx_len(3)))
   end procedure kinematics_at
 
-  !> a and b are the same coordinates, bit for bit (so that a cache keyed on them gives exactly
-  !! what computing afresh would).
-  pure logical function same_coordinates(a, b) result(same)
-    real(wp), intent(in) :: a(n_q)          !! coordinates [m, rad]
-    real(wp), intent(in) :: b(n_q)          !! coordinates [m, rad]
+  module procedure secondary_axes_of
+    integer :: k
+    do k = 2, 3
+      axes(k - 1) = axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, sk(k)%u11, sk(k)%u12, sk(k)%u22)
+    end do
+  end procedure secondary_axes_of
+
+  module procedure same_coordinates
     integer :: i
+    ! element by element (an array transfer would allocate a temporary)
     same = .false.
     do i = 1, n_q
       if (transfer(a(i), 0_int64) /= transfer(b(i), 0_int64)) return
     end do
     same = .true.
-  end function same_coordinates
+  end procedure same_coordinates
 
   module procedure cache_kinematics
     call kinematics_at(gear%geom, gear%strut, gear%st%q, gear%st%kin)
