@@ -149,6 +149,24 @@ static void fixed_steps(void) {
   landyn_free(&sim);
 }
 
+/* A run stopped before t_end and written, before touchdown: check_stopped.py reads stopped.h5. */
+static void stopped_early(const char *workdir) {
+  char msg[512], path[1024];
+  landyn_sim *sim = NULL;
+  double f[3] = {0.0, 0.0, -1000.0};
+  if (landyn_create(short_deck, "&initial_state\n clearance = 1.0\n/\n", &sim, msg, sizeof msg) != LANDYN_OK) {
+    CHECK(0, "create a deck starting 1 m up");
+    return;
+  }
+  CHECK(landyn_set_input(sim, f, NULL, msg, sizeof msg) == LANDYN_OK, "an input at t = 0");
+  CHECK(landyn_advance_to(sim, 0.0105, msg, sizeof msg) == LANDYN_OK, "advance to 0.0105 s");
+  snprintf(path, sizeof path, "%s/stopped.h5", workdir);
+  remove(path);
+  CHECK(landyn_write_result(sim, path, msg, sizeof msg) == LANDYN_OK, "write a run stopped before t_end");
+  CHECK(landyn_advance_to(sim, 0.02, msg, sizeof msg) == LANDYN_OK, "the run goes on after writing");
+  landyn_free(&sim);
+}
+
 int main(int argc, char **argv) {
   if (argc != 2) {
     fprintf(stderr, "usage: test_api_misuse WORKDIR\n");
@@ -159,6 +177,7 @@ int main(int argc, char **argv) {
   handles();
   order_and_values(argv[1]);
   fixed_steps();
+  stopped_early(argv[1]);
   printf("%s: %d failed checks\n", argv[0], n_failed);
   return n_failed ? 1 : 0;
 }
