@@ -262,16 +262,15 @@ contains
     character(len=:), allocatable :: deck_name, deck_text, base_text, list_text
     integer :: st
     if (rank == 0) then
-      deck_name = camp%deck_name
-      deck_text = camp%deck_text
-      base_text = camp%base_text
-      list_text = camp%list_text
-    end if
-    call bcast_text(deck_name, rank)
-    call bcast_text(deck_text, rank)
-    call bcast_text(base_text, rank)
-    call bcast_text(list_text, rank)
-    if (rank /= 0) then
+      call bcast_text(camp%deck_name, rank)
+      call bcast_text(camp%deck_text, rank)
+      call bcast_text(camp%base_text, rank)
+      call bcast_text(camp%list_text, rank)
+    else
+      call bcast_text(deck_name, rank)
+      call bcast_text(deck_text, rank)
+      call bcast_text(base_text, rank)
+      call bcast_text(list_text, rank)
       call build_campaign(deck_name, deck_text, base_text, list_text, camp, errors, st)
       if (st /= 0) then
         write (err_u, '(a,i0,a)') 'landyn_batch: rank ', rank, ': the campaign read on rank 0 does not build here: '// &
