@@ -162,9 +162,9 @@ contains
     real(wp) :: values(camp%n_par)
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
-    integer :: st, i
+    integer :: st
     logical :: ran
-    integer(int64) :: c0, c1, crate, c_in, c_sim
+    integer(int64) :: c0, crate, c_in, c_sim
 
     call system_clock(c0, crate)
     c_in = -1
@@ -175,21 +175,16 @@ contains
       row%status = status_invalid_input
       row%message = m1
       row%end_reason = 'invalid input'
-      call finish_row()
+      call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
       return
     end if
     row%inputs = values
     call case_input(camp, id, values, inp, errors, st)
     if (st /= 0) then
       row%status = status_invalid_input
-      m1 = ''
-      do i = 1, errors%count()
-        if (i > 1) m1 = m1//' | '
-        m1 = m1//errors%message(i)
-      end do
-      row%message = m1
+      row%message = joined_messages(errors)
       row%end_reason = 'invalid input'
-      call finish_row()
+      call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
       return
     end if
     msg = ''
@@ -205,12 +200,34 @@ contains
         row%end_reason = 'not run'
       end if
       row%n_steps = res%n_steps
-      call finish_row()
+      call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
       return
     end if
     ! physically meaningless (docs/health.md): status 6, its numbers kept
     if (st == status_unhealthy) row%message = 'run-health check failed: '//health%messages
     if (st == status_no_touchdown) row%message = 'no touchdown: no footpad touched the ground'
+    call fill_row_results(inp, res, camp%crit, row)
+    if (save_history) then
+      path = history_file_name(camp, id)
+      inp%output%file = path
+      call write_result_file(path, inp, res, command_line, st, msg, health)
+      if (st == 0) then
+        row%history_file = path
+      else
+        row%message = 'time-history file not written: '//trim(msg)
+      end if
+    end if
+    call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
+  end subroutine run_case
+
+  !> The results of a case's run into its row: outcome, tip-over margin, friction ratio, crush and
+  !! stroke margins, loads, penetration, slide, tilt, flags, time, steps, end reason and the body
+  !! points' clearance.
+  subroutine fill_row_results(inp, res, crit, row)
+    type(landyn_input_t), intent(in) :: inp       !! case input [-]
+    type(sim_result_t), intent(in) :: res         !! its run's result [-]
+    type(criteria_t), intent(in) :: crit          !! success criteria (body points) [-]
+    type(case_row_t), intent(inout) :: row        !! the case's row [-]
     row%outcome = res%outcome
     row%tipover_margin = res%tipover_margin
     row%max_friction_ratio = maxval(res%friction_ratio)
@@ -228,35 +245,44 @@ contains
     row%final_time = res%t_final
     row%n_steps = res%n_steps
     row%end_reason = trim(res%end_reason)
-    row%min_clearance = body_clearance(inp, res, camp%crit)
-    if (save_history) then
-      path = history_file_name(camp, id)
-      inp%output%file = path
-      call write_result_file(path, inp, res, command_line, st, msg, health)
-      if (st == 0) then
-        row%history_file = path
-      else
-        row%message = 'time-history file not written: '//trim(msg)
-      end if
+    row%min_clearance = body_clearance(inp, res, crit)
+  end subroutine fill_row_results
+
+  !> A case's input errors as one message, separated by ' | '.
+  function joined_messages(errors) result(m)
+    type(input_errors_t), intent(in) :: errors    !! input errors of the case [-]
+    character(len=:), allocatable :: m           !! their messages [-]
+    integer :: i
+    m = ''
+    do i = 1, errors%count()
+      if (i > 1) m = m//' | '
+      m = m//errors%message(i)
+    end do
+  end function joined_messages
+
+  !> Finish a case's row: evaluate the success criteria, clean its message, and set its wall time
+  !! and (when `timing` is present) the split of that time; a phase not reached takes no time.
+  subroutine finish_row(row, crit, c0, c_in, c_sim, crate, timing)
+    type(case_row_t), intent(inout) :: row        !! the case's row [-]
+    type(criteria_t), intent(in) :: crit          !! success criteria [-]
+    integer(int64), intent(in) :: c0              !! clock at the case's start [clock counts]
+    integer(int64), intent(in) :: c_in            !! clock after its input, -1 if not reached [clock counts]
+    integer(int64), intent(in) :: c_sim           !! clock after its run, -1 if not reached [clock counts]
+    integer(int64), intent(in) :: crate           !! clock counts per second [1/s]
+    real(wp), intent(out), optional :: timing(3)  !! input, simulation, rest [s]
+    integer(int64) :: c1, c_in_, c_sim_
+    call evaluate_criteria(row, crit)
+    row%message = sanitize(row%message)
+    call system_clock(c1)
+    row%wall_time = real(c1 - c0, wp)/real(crate, wp)
+    if (present(timing)) then
+      c_in_ = c_in
+      c_sim_ = c_sim
+      if (c_in_ < 0) c_in_ = c1
+      if (c_sim_ < 0) c_sim_ = c_in_
+      timing = real([c_in_ - c0, c_sim_ - c_in_, c1 - c_sim_], wp)/real(crate, wp)
     end if
-    call finish_row()
-
-  contains
-
-    !> Evaluate the success criteria and clean the message of the row.
-    subroutine finish_row()
-      call evaluate_criteria(row, camp%crit)
-      row%message = sanitize(row%message)
-      call system_clock(c1)
-      row%wall_time = real(c1 - c0, wp)/real(crate, wp)
-      if (present(timing)) then
-        if (c_in < 0) c_in = c1
-        if (c_sim < 0) c_sim = c_in
-        timing = real([c_in - c0, c_sim - c_in, c1 - c_sim], wp)/real(crate, wp)
-      end if
-    end subroutine finish_row
-
-  end subroutine run_case
+  end subroutine finish_row
 
   !> Smallest clearance of the criteria's body points above the terrain over the output samples:
   !! minimum over samples, points and the footpads' terrain planes of the height of the point

@@ -164,17 +164,58 @@ contains
     type(nml_group_t), allocatable :: groups(:)
     type(raw_parameter_t), allocatable :: rp(:)
     type(raw_criteria_t) :: rcr
-    type(raw_campaign_t) :: rc_unused      ! read_items takes the three records; one is read
-    type(raw_parameter_t) :: rp_unused
-    type(raw_criteria_t) :: rcr_unused
-    character(len=20), allocatable :: given(:)
-    integer :: ig, n_campaign, n_criteria, np, line_campaign, line_criteria
+    integer :: np, n_campaign
     integer, allocatable :: plines(:)
 
     camp%deck_name = deck_name
     camp%deck_text = text
     camp%title = ''
     call split_namelist(text, deck_name, groups, errors)
+    call read_deck_groups(groups, deck_name, rc, rp, plines, rcr, n_campaign, errors)
+    if (n_campaign == 0) then
+      call errors%add(deck_name//': no &campaign group; a campaign deck needs &campaign with at least '// &
+                      'base_deck and mode')
+      return
+    end if
+
+    ! ---- &campaign
+    call apply_campaign_group(rc, deck_name, plines, camp, errors)
+
+    ! ---- &parameter
+    if (camp%mode == 'grid' .or. camp%mode == 'monte_carlo') then
+      if (size(rp) == 0) call errors%add(deck_name//': no &parameter group; mode '//quote_text(trim(camp%mode))// &
+                                         ' needs one &parameter group per varied input')
+      if (size(rp) > max_params) call errors%add(deck_name//': '//int_text(size(rp))// &
+        ' &parameter groups; valid: at most '//int_text(max_params))
+      allocate (camp%par(size(rp)))
+      do np = 1, size(rp)
+        call make_param(rp(np), plines(np), camp%mode, deck_name, camp%par(np), errors)
+      end do
+      camp%n_par = size(rp)
+    else
+      allocate (camp%par(0))
+    end if
+
+    ! ---- &criteria
+    call make_criteria(rcr, deck_name, camp%crit, errors)
+  end subroutine parse_campaign_deck
+
+  !> The groups of a campaign deck read into their raw records: &campaign (once), every &parameter
+  !! (with its line) and &criteria (once); other groups and repeated ones are reported.
+  subroutine read_deck_groups(groups, deck_name, rc, rp, plines, rcr, n_campaign, errors)
+    type(nml_group_t), intent(in) :: groups(:)     !! the deck's groups [-]
+    character(len=*), intent(in) :: deck_name      !! deck path [-]
+    type(raw_campaign_t), intent(inout) :: rc      !! raw &campaign values [-]
+    type(raw_parameter_t), allocatable, intent(out) :: rp(:)  !! raw &parameter values, in deck order [-]
+    integer, allocatable, intent(out) :: plines(:) !! line of each &parameter group [-]
+    type(raw_criteria_t), intent(out) :: rcr       !! raw &criteria values [-]
+    integer, intent(out) :: n_campaign             !! &campaign groups found [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    type(raw_campaign_t) :: rc_unused      ! read_items takes the three records; one is read
+    type(raw_parameter_t) :: rp_unused
+    type(raw_criteria_t) :: rcr_unused
+    character(len=20), allocatable :: given(:)
+    integer :: ig, n_criteria, line_campaign, line_criteria
     n_campaign = 0
     n_criteria = 0
     line_campaign = 0
@@ -216,13 +257,17 @@ contains
         end select
       end associate
     end do
-    if (n_campaign == 0) then
-      call errors%add(deck_name//': no &campaign group; a campaign deck needs &campaign with at least '// &
-                      'base_deck and mode')
-      return
-    end if
+  end subroutine read_deck_groups
 
-    ! ---- &campaign
+  !> The &campaign values checked and set in `camp`: title, mode, seed, checkpoint interval, base
+  !! deck and case list paths, n_samples (monte_carlo), list_file (list), summary file, history
+  !! prefix and the cases whose histories are saved.
+  subroutine apply_campaign_group(rc, deck_name, plines, camp, errors)
+    type(raw_campaign_t), intent(in) :: rc         !! raw &campaign values [-]
+    character(len=*), intent(in) :: deck_name      !! deck path [-]
+    integer, intent(in) :: plines(:)               !! line of each &parameter group [-]
+    type(campaign_t), intent(inout) :: camp        !! campaign filled from the deck [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     camp%title = trim(rc%title)
     camp%mode = lower_case(trim(adjustl(rc%mode)))
     camp%seed = rc%seed
@@ -250,7 +295,7 @@ contains
     if (camp%mode == 'list') then
       if (len_trim(rc%list_file) == 0) call errors%add(deck_name// &
         ': &campaign: list_file is not given; valid: a CSV file with one column per input and one row per case')
-      if (size(rp) > 0) call errors%add(deck_name//':'//int_text(plines(1))// &
+      if (size(plines) > 0) call errors%add(deck_name//':'//int_text(plines(1))// &
         ': &parameter: not used in list mode (the columns of list_file name the inputs); remove the &parameter groups')
     else if (len_trim(rc%list_file) > 0 .and. len_trim(camp%mode) > 0) then
       call errors%add(deck_name//': &campaign: list_file = '//quote_text(trim(rc%list_file))// &
@@ -271,25 +316,7 @@ contains
       camp%history_prefix = strip_h5(camp%summary_file)//'_case'
     end if
     camp%save_histories = pack(rc%save_histories, rc%save_histories /= 0)
-
-    ! ---- &parameter
-    if (camp%mode == 'grid' .or. camp%mode == 'monte_carlo') then
-      if (size(rp) == 0) call errors%add(deck_name//': no &parameter group; mode '//quote_text(trim(camp%mode))// &
-                                         ' needs one &parameter group per varied input')
-      if (size(rp) > max_params) call errors%add(deck_name//': '//int_text(size(rp))// &
-        ' &parameter groups; valid: at most '//int_text(max_params))
-      allocate (camp%par(size(rp)))
-      do np = 1, size(rp)
-        call make_param(rp(np), plines(np), camp%mode, deck_name, camp%par(np), errors)
-      end do
-      camp%n_par = size(rp)
-    else
-      allocate (camp%par(0))
-    end if
-
-    ! ---- &criteria
-    call make_criteria(rcr, deck_name, camp%crit, errors)
-  end subroutine parse_campaign_deck
+  end subroutine apply_campaign_group
 
   !> Read every item of group g (&campaign, &parameter or &criteria) on its own into the group's
   !! raw record: the item is read as a one-item namelist record naming the record's component

@@ -97,6 +97,44 @@ module landyn_campaign_parallel
 
   integer, parameter :: row_slots = depth_master_works + 2  !! send buffers of a worker's rows [-]
 
+  !> Rank 0's state in master_loop: the cases to hand out, each worker's ids in flight and their
+  !! send buffers, the journal's flush state, the checkpoint clock and the session's count.
+  type :: master_t
+    integer, allocatable :: pend(:)                  !! cases to run, in order [-]
+    integer :: next = 1                              !! index in pend of the next case to hand out [-]
+    integer :: nranks = 1                            !! ranks [-]
+    integer :: nw = 0                                !! workers (ranks 1 .. nw) [-]
+    integer :: depth = depth_dedicated               !! ids a worker holds at most [-]
+    logical :: master_works = .true.                 !! rank 0 runs cases too [-]
+    integer, allocatable :: inflight(:)              !! ids each worker holds [-]
+    logical, allocatable :: active(:)                !! worker not yet sent its stop [-]
+    integer, allocatable :: n_sent(:)                !! ids sent to each worker [-]
+    integer, allocatable :: id_buf(:, :)             !! send buffers of the ids (slot, worker) [-]
+    type(MPI_Request), allocatable :: id_req(:, :)   !! their send requests [-]
+    integer :: every = 1                             !! a progress line every this many rows [-]
+    integer :: n_unflushed = 0                       !! journal lines not yet flushed [-]
+    logical :: journal_ok = .true.                   !! no journal operation has failed [-]
+    real(wp) :: t_flush = 0.0_wp                     !! time of the last journal flush (MPI_Wtime) [s]
+    real(wp) :: t_next_ckpt = 0.0_wp                 !! time of the next checkpoint (MPI_Wtime) [s]
+    integer :: n_session = 0                         !! rows recorded in this run [-]
+    logical :: stopped = .false.                     !! stopped by --stop-after [-]
+  end type master_t
+
+  !> Rank 0's units: the journal and the messages.
+  type :: master_sink_t
+    integer :: ju = -1                               !! journal unit [-]
+    integer :: err_u = 0                             !! unit for messages and progress [-]
+  end type master_sink_t
+
+  !> Rank 0's account of this run of a campaign (for finish_campaign).
+  type :: session_t
+    integer :: nranks = 1                            !! ranks [-]
+    integer :: n_session = 0                         !! rows recorded in this run [-]
+    logical :: stopped = .false.                     !! stopped by --stop-after [-]
+    real(wp) :: t0 = 0.0_wp                          !! start of the loops (MPI_Wtime) [s]
+    real(wp) :: t1 = 0.0_wp                          !! their end (MPI_Wtime) [s]
+  end type session_t
+
   !> A message buffer.
   type :: row_buffer_t
     character(len=:), allocatable :: b   !! message [bytes]
@@ -130,13 +168,11 @@ contains
     integer, intent(in) :: err_u                  !! unit for messages and progress (rank 0) [-]
     integer, intent(out) :: code                  !! exit code [-]
     type(campaign_t) :: camp
-    type(input_errors_t) :: errors
     type(results_t) :: table
     type(summary_meta_t) :: meta
-    character(len=:), allocatable :: deck_name, deck_text, base_text, list_text, summary, journal, lock_why
-    integer :: rank, nranks, st, ju, n_session, lock
-    logical :: stopped
-    real(wp) :: t0, t1
+    type(session_t) :: ses
+    character(len=:), allocatable :: summary, journal
+    integer :: rank, nranks, ju, lock
     real(wp) :: prof(n_prof)
     real(wp), allocatable :: prof_all(:, :)
 
@@ -146,45 +182,95 @@ contains
     code = EXIT_OK
     ju = -1
     lock = -1
-    if (rank == 0) then
-      call load_or_report(deck, camp, err_u, code)
-      if (code == EXIT_OK) then
-        summary = opts%summary_file
-        if (len(summary) == 0) summary = camp%summary_file
-        journal = summary//'.journal'
-        meta = meta_from_campaign(camp)
-        ! one process per campaign: two resumes of one journal would both append to it and
-        ! both write the summary file (the kernel releases the lock when the process ends)
-        call lock_file(summary//'.lock', lock, st, lock_why)
-        if (st /= STAT_OK) then
-          write (err_u, '(a)') 'landyn_batch: the campaign of '//summary//' is in use: '//summary//'.lock: '// &
-            lock_why//'; wait for that run to end (a killed run leaves no lock held)'
-          code = EXIT_FILE
-        else
-          call prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
-          if (code /= EXIT_OK) call unlock_file(summary//'.lock', lock)
-        end if
-      end if
-    end if
+    if (rank == 0) call open_campaign(deck, opts, err_u, camp, meta, summary, journal, table, ju, lock, code)
     call MPI_Bcast(code, 1, MPI_INTEGER, 0, MPI_COMM_WORLD)
     if (code /= EXIT_OK) then
       call MPI_Finalize()
       if (rank /= 0) code = EXIT_OK
       return
     end if
+    call share_campaign(rank, err_u, camp)
+    call use_summary_file(camp, opts%summary_file)   ! history files follow -o (issue 10)
 
-    ! ---- every rank builds the same campaign from rank 0's texts
+    prof = 0.0_wp
+    ses%nranks = nranks
+    ses%t0 = MPI_Wtime()
     if (rank == 0) then
-      deck_name = camp%deck_name
-      deck_text = camp%deck_text
-      base_text = camp%base_text
-      list_text = camp%list_text
+      if (.not. opts%quiet) write (err_u, '(a)') 'landyn_batch: campaign '//deck//': '//trim(camp%mode)//', '// &
+        int_text(camp%n_cases)//' cases ('//int_text(camp%n_cases - table%n_have)//' to run) on '// &
+        int_text(nranks)//' rank(s) -> '//summary
+      call master_loop(camp, opts, nranks, table, meta, summary, ju, err_u, ses%n_session, ses%stopped, prof)
+    else
+      call worker_loop(camp, opts%command_line, prof)
     end if
-    call bcast_text(deck_name, rank)
-    call bcast_text(deck_text, rank)
-    call bcast_text(base_text, rank)
-    call bcast_text(list_text, rank)
-    if (rank /= 0) then
+    ses%t1 = MPI_Wtime()
+    prof(p_loop) = ses%t1 - ses%t0
+    allocate (prof_all(n_prof, merge(nranks, 1, rank == 0)))
+    call MPI_Gather(prof, n_prof, MPI_DOUBLE_PRECISION, prof_all, n_prof, MPI_DOUBLE_PRECISION, 0, MPI_COMM_WORLD)
+
+    if (rank == 0) then
+      close (ju)
+      call finish_campaign(deck, opts, camp, meta, summary, journal, table, ses, prof_all, out_u, err_u, code)
+      call unlock_file(summary//'.lock', lock)
+    end if
+    call MPI_Finalize()
+    if (rank /= 0) code = EXIT_OK
+  end subroutine run_campaign
+
+  !> Rank 0: read and check the campaign deck, take the campaign's lock and prepare its summary
+  !! file and journal (or resume them). On failure `code` says why and no lock is held.
+  subroutine open_campaign(deck, opts, err_u, camp, meta, summary, journal, table, ju, lock, code)
+    character(len=*), intent(in) :: deck          !! campaign deck [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    type(campaign_t), intent(out) :: camp         !! the campaign [-]
+    type(summary_meta_t), intent(out) :: meta     !! its meta data [-]
+    character(len=:), allocatable, intent(out) :: summary   !! summary file [-]
+    character(len=:), allocatable, intent(out) :: journal   !! journal file [-]
+    type(results_t), intent(out) :: table         !! rows already done [-]
+    integer, intent(inout) :: ju                  !! journal unit [-]
+    integer, intent(inout) :: lock                !! lock of the campaign (lock_file) [-]
+    integer, intent(out) :: code                  !! exit code [-]
+    character(len=:), allocatable :: lock_why
+    integer :: st
+    call load_or_report(deck, camp, err_u, code)
+    if (code /= EXIT_OK) return
+    summary = opts%summary_file
+    if (len(summary) == 0) summary = camp%summary_file
+    journal = summary//'.journal'
+    meta = meta_from_campaign(camp)
+    ! one process per campaign: two resumes of one journal would both append to it and
+    ! both write the summary file (the kernel releases the lock when the process ends)
+    call lock_file(summary//'.lock', lock, st, lock_why)
+    if (st /= STAT_OK) then
+      write (err_u, '(a)') 'landyn_batch: the campaign of '//summary//' is in use: '//summary//'.lock: '// &
+        lock_why//'; wait for that run to end (a killed run leaves no lock held)'
+      code = EXIT_FILE
+    else
+      call prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
+      if (code /= EXIT_OK) call unlock_file(summary//'.lock', lock)
+    end if
+  end subroutine open_campaign
+
+  !> Every rank builds the same campaign from rank 0's texts (deck name, deck, base deck, case
+  !! list); a rank where it does not build aborts the run.
+  subroutine share_campaign(rank, err_u, camp)
+    integer, intent(in) :: rank                   !! this rank [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    type(campaign_t), intent(inout) :: camp       !! campaign: read on rank 0, built on the others [-]
+    type(input_errors_t) :: errors
+    character(len=:), allocatable :: deck_name, deck_text, base_text, list_text
+    integer :: st
+    if (rank == 0) then
+      call bcast_text(camp%deck_name, rank)
+      call bcast_text(camp%deck_text, rank)
+      call bcast_text(camp%base_text, rank)
+      call bcast_text(camp%list_text, rank)
+    else
+      call bcast_text(deck_name, rank)
+      call bcast_text(deck_text, rank)
+      call bcast_text(base_text, rank)
+      call bcast_text(list_text, rank)
       call build_campaign(deck_name, deck_text, base_text, list_text, camp, errors, st)
       if (st /= 0) then
         write (err_u, '(a,i0,a)') 'landyn_batch: rank ', rank, ': the campaign read on rank 0 does not build here: '// &
@@ -192,70 +278,57 @@ contains
         call MPI_Abort(MPI_COMM_WORLD, EXIT_INPUT)
       end if
     end if
-    call use_summary_file(camp, opts%summary_file)   ! history files follow -o (issue 10)
+  end subroutine share_campaign
 
-    prof = 0.0_wp
-    t0 = MPI_Wtime()
-    if (rank == 0) then
-      if (.not. opts%quiet) write (err_u, '(a)') 'landyn_batch: campaign '//deck//': '//trim(camp%mode)//', '// &
-        int_text(camp%n_cases)//' cases ('//int_text(camp%n_cases - table%n_have)//' to run) on '// &
-        int_text(nranks)//' rank(s) -> '//summary
-      call master_loop(camp, opts, nranks, table, meta, summary, ju, err_u, n_session, stopped, prof)
-    else
-      call worker_loop(camp, opts%command_line, prof)
+  !> Rank 0, after the loop: write the final summary file, delete the journal and report the
+  !! campaign (or, stopped by --stop-after, say how to continue).
+  subroutine finish_campaign(deck, opts, camp, meta, summary, journal, table, ses, prof_all, out_u, err_u, code)
+    character(len=*), intent(in) :: deck          !! campaign deck [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(summary_meta_t), intent(in) :: meta      !! its meta data [-]
+    character(len=*), intent(in) :: summary       !! summary file [-]
+    character(len=*), intent(in) :: journal       !! journal file [-]
+    type(results_t), intent(inout) :: table       !! rows (taken) [-]
+    type(session_t), intent(in) :: ses            !! this run's account [-]
+    real(wp), intent(in) :: prof_all(:, :)        !! time accounts of all ranks (slots p_*, rank) [s, -]
+    integer, intent(in) :: out_u                  !! unit for results [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    integer, intent(out) :: code                  !! exit code [-]
+    type(case_row_t), allocatable :: rows(:)
+    character(len=msg_len) :: msg
+    integer :: st
+    real(wp) :: dt
+    code = EXIT_OK
+    if (ses%stopped) then
+      write (err_u, '(a)') 'landyn_batch: stopped after '//int_text(ses%n_session)//' case(s) (--stop-after); '// &
+        int_text(table%n_have)//' of '//int_text(camp%n_cases)//' cases are in '//journal// &
+        '; continue with --resume'
+      code = EXIT_INCOMPLETE
+      return
     end if
-    t1 = MPI_Wtime()
-    prof(p_loop) = t1 - t0
-    allocate (prof_all(n_prof, merge(nranks, 1, rank == 0)))
-    call MPI_Gather(prof, n_prof, MPI_DOUBLE_PRECISION, prof_all, n_prof, MPI_DOUBLE_PRECISION, 0, MPI_COMM_WORLD)
-
-    if (rank == 0) then
-      call finish(code)
-      call unlock_file(summary//'.lock', lock)
+    call results_take_rows(table, rows)
+    msg = ''
+    call write_summary(summary, meta, rows, opts%command_line, st, msg)
+    if (st /= 0) then
+      write (err_u, '(a)') 'landyn_batch: cannot write the summary file: '//trim(msg)
+      write (err_u, '(a)') 'landyn_batch: the rows are kept in '//journal//'; fix the problem and run with --resume'
+      code = EXIT_FILE
+      return
     end if
-    call MPI_Finalize()
-    if (rank /= 0) code = EXIT_OK
-
-  contains
-
-    !> Write the final summary file, delete the journal and report the campaign.
-    subroutine finish(code_)
-      integer, intent(out) :: code_   !! exit code [-]
-      type(case_row_t), allocatable :: rows(:)
-      character(len=msg_len) :: msg
-      integer :: st2
-      code_ = EXIT_OK
-      close (ju)
-      if (stopped) then
-        write (err_u, '(a)') 'landyn_batch: stopped after '//int_text(n_session)//' case(s) (--stop-after); '// &
-          int_text(table%n_have)//' of '//int_text(camp%n_cases)//' cases are in '//journal// &
-          '; continue with --resume'
-        code_ = EXIT_INCOMPLETE
-        return
-      end if
-      call results_take_rows(table, rows)
-      msg = ''
-      call write_summary(summary, meta, rows, opts%command_line, st2, msg)
-      if (st2 /= 0) then
-        write (err_u, '(a)') 'landyn_batch: cannot write the summary file: '//trim(msg)
-        write (err_u, '(a)') 'landyn_batch: the rows are kept in '//journal//'; fix the problem and run with --resume'
-        code_ = EXIT_FILE
-        return
-      end if
-      call delete_file(journal, st2, msg)
-      ! speed and (--verbose) the time account are diagnostics: on the message unit, before the
-      ! result on out_u, whose final line counts the failures per criterion
-      if (n_session > 0 .and. t1 > t0 .and. (opts%verbose .or. .not. opts%quiet)) write (err_u, '(a)') &
-        'landyn_batch: this run: '//int_text(n_session)//' cases in '//real_text_short(t1 - t0)//' s on '// &
-        int_text(nranks)//' rank(s) = '//int_text(nint(real(n_session, wp)*3600.0_wp/((t1 - t0)*real(nranks, wp))))// &
-        ' cases per core-hour'
-      if (n_session > 0 .and. opts%verbose) call report_profile(prof_all, err_u)
-      write (out_u, '(a)') 'LANDYN campaign '//deck//' ('//trim(camp%mode)//'): '//int_text(size(rows))//' of '// &
-        int_text(camp%n_cases)//' cases in '//summary
-      call report_probability(rows, camp%crit%failed_runs, out_u)
-    end subroutine finish
-
-  end subroutine run_campaign
+    call delete_file(journal, st, msg)
+    ! speed and (--verbose) the time account are diagnostics: on the message unit, before the
+    ! result on out_u, whose final line counts the failures per criterion
+    dt = ses%t1 - ses%t0
+    if (ses%n_session > 0 .and. ses%t1 > ses%t0 .and. (opts%verbose .or. .not. opts%quiet)) write (err_u, '(a)') &
+      'landyn_batch: this run: '//int_text(ses%n_session)//' cases in '//real_text_short(dt)//' s on '// &
+      int_text(ses%nranks)//' rank(s) = '// &
+      int_text(nint(real(ses%n_session, wp)*3600.0_wp/(dt*real(ses%nranks, wp))))//' cases per core-hour'
+    if (ses%n_session > 0 .and. opts%verbose) call report_profile(prof_all, err_u)
+    write (out_u, '(a)') 'LANDYN campaign '//deck//' ('//trim(camp%mode)//'): '//int_text(size(rows))//' of '// &
+      int_text(camp%n_cases)//' cases in '//summary
+    call report_probability(rows, camp%crit%failed_runs, out_u)
+  end subroutine finish_campaign
 
   !> Rank 0: existing files, resume, journal.
   subroutine prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
@@ -268,11 +341,9 @@ contains
     integer, intent(out) :: ju                    !! journal unit [-]
     integer, intent(in) :: err_u                  !! unit for messages [-]
     integer, intent(out) :: code                  !! exit code [-]
-    type(summary_meta_t) :: m
-    type(case_row_t), allocatable :: rows(:)
     character(len=msg_len) :: msg
-    logical :: ex_s, ex_j, added
-    integer :: st, k, n_s, n_j, n_bad, n_out
+    logical :: ex_s, ex_j
+    integer :: st
     code = EXIT_OK
     ju = -1
     call results_init(table, camp%n_cases)
@@ -294,70 +365,94 @@ contains
       call delete_file(summary, st, msg)
       call delete_file(journal, st, msg)
     else
-      n_s = 0
-      n_j = 0
-      n_bad = 0
-      n_out = 0
-      if (ex_s) then
-        call read_summary(summary, m, rows, st, msg)
-        if (st /= 0) then
-          write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
-          code = EXIT_INPUT
-          return
-        end if
-        if (m%fingerprint /= camp%fingerprint) then
-          write (err_u, '(a)') 'landyn_batch: --resume: '//summary//' belongs to another campaign (fingerprint '// &
-            m%fingerprint//'; this deck: '//camp%fingerprint//'); give another summary_file or use --force'
-          code = EXIT_INPUT
-          return
-        end if
-        call add_rows(n_s)
-      end if
-      if (ex_j) then
-        call journal_read(journal, meta, rows, n_bad, st, msg)
-        if (st /= 0) then
-          write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
-          code = EXIT_INPUT
-          return
-        end if
-        call add_rows(n_j)
-      end if
-      if (.not. opts%quiet) then
-        if (ex_s .or. ex_j) then
-          write (err_u, '(a)') 'landyn_batch: resuming: '//int_text(table%n_have)//' of '//int_text(camp%n_cases)// &
-            ' cases done ('//int_text(n_s)//' rows from '//summary//', '//int_text(n_j)//' from '//journal//')'
-        else
-          write (err_u, '(a)') 'landyn_batch: --resume: neither '//summary//' nor '//journal// &
-            ' exists; starting the campaign'
-        end if
-        if (n_bad > 0) write (err_u, '(a)') 'landyn_batch: --resume: ignored '//int_text(n_bad)// &
-          ' incomplete journal line(s) (cases in flight when the campaign stopped); they are run again'
-        if (n_out > 0) write (err_u, '(a)') 'landyn_batch: --resume: ignored '//int_text(n_out)// &
-          ' row(s) of cases beyond the '//int_text(camp%n_cases)//' cases of the deck'
-      end if
+      call resume_rows(camp, meta, opts, summary, journal, ex_s, ex_j, table, err_u, code)
+      if (code /= EXIT_OK) return
     end if
     call journal_open(journal, meta, ju, st, msg)
     if (st /= 0) then
       write (err_u, '(a)') 'landyn_batch: '//trim(msg)
       code = EXIT_FILE
     end if
-
-  contains
-
-    !> Put `rows` into the table: n_added counts the rows taken, n_out those of cases beyond the deck's.
-    subroutine add_rows(n_added)
-      integer, intent(inout) :: n_added   !! rows taken so far [-]
-      do k = 1, size(rows)
-        call results_add(table, rows(k), added)
-        if (added) then
-          n_added = n_added + 1
-        else
-          n_out = n_out + 1
-        end if
-      end do
-    end subroutine add_rows
-
   end subroutine prepare_output
+
+  !> Rank 0, --resume: the rows already done, from the summary file (which must belong to this
+  !! campaign) and the journal, into the table; reports what was taken and ignored.
+  subroutine resume_rows(camp, meta, opts, summary, journal, ex_s, ex_j, table, err_u, code)
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(summary_meta_t), intent(in) :: meta      !! its meta data [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    character(len=*), intent(in) :: summary       !! summary file [-]
+    character(len=*), intent(in) :: journal       !! journal file [-]
+    logical, intent(in) :: ex_s                   !! the summary file exists [-]
+    logical, intent(in) :: ex_j                   !! the journal exists [-]
+    type(results_t), intent(inout) :: table       !! rows already done [-]
+    integer, intent(in) :: err_u                  !! unit for messages [-]
+    integer, intent(out) :: code                  !! exit code [-]
+    type(summary_meta_t) :: m
+    type(case_row_t), allocatable :: rows(:)
+    character(len=msg_len) :: msg
+    integer :: st, n_s, n_j, n_bad, n_out
+    code = EXIT_OK
+    msg = ''
+    n_s = 0
+    n_j = 0
+    n_bad = 0
+    n_out = 0
+    if (ex_s) then
+      call read_summary(summary, m, rows, st, msg)
+      if (st /= 0) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
+        code = EXIT_INPUT
+        return
+      end if
+      if (m%fingerprint /= camp%fingerprint) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//summary//' belongs to another campaign (fingerprint '// &
+          m%fingerprint//'; this deck: '//camp%fingerprint//'); give another summary_file or use --force'
+        code = EXIT_INPUT
+        return
+      end if
+      call add_rows(table, rows, n_s, n_out)
+    end if
+    if (ex_j) then
+      call journal_read(journal, meta, rows, n_bad, st, msg)
+      if (st /= 0) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
+        code = EXIT_INPUT
+        return
+      end if
+      call add_rows(table, rows, n_j, n_out)
+    end if
+    if (opts%quiet) return
+    if (ex_s .or. ex_j) then
+      write (err_u, '(a)') 'landyn_batch: resuming: '//int_text(table%n_have)//' of '//int_text(camp%n_cases)// &
+        ' cases done ('//int_text(n_s)//' rows from '//summary//', '//int_text(n_j)//' from '//journal//')'
+    else
+      write (err_u, '(a)') 'landyn_batch: --resume: neither '//summary//' nor '//journal// &
+        ' exists; starting the campaign'
+    end if
+    if (n_bad > 0) write (err_u, '(a)') 'landyn_batch: --resume: ignored '//int_text(n_bad)// &
+      ' incomplete journal line(s) (cases in flight when the campaign stopped); they are run again'
+    if (n_out > 0) write (err_u, '(a)') 'landyn_batch: --resume: ignored '//int_text(n_out)// &
+      ' row(s) of cases beyond the '//int_text(camp%n_cases)//' cases of the deck'
+  end subroutine resume_rows
+
+  !> Put `rows` into the table: n_added counts the rows taken, n_out those of cases beyond the deck's.
+  subroutine add_rows(table, rows, n_added, n_out)
+    type(results_t), intent(inout) :: table       !! rows already done [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows to add [-]
+    integer, intent(inout) :: n_added             !! rows taken so far [-]
+    integer, intent(inout) :: n_out               !! rows of cases beyond the deck's so far [-]
+    logical :: added
+    integer :: k
+    do k = 1, size(rows)
+      call results_add(table, rows(k), added)
+      if (added) then
+        n_added = n_added + 1
+      else
+        n_out = n_out + 1
+      end if
+    end do
+  end subroutine add_rows
 
   !> Rank 0: hand out cases, run some itself, record every row.
   subroutine master_loop(camp, opts, nranks, table, meta, summary, ju, err_u, n_session, stopped, prof)
@@ -372,223 +467,281 @@ contains
     integer, intent(out) :: n_session             !! rows recorded in this run [-]
     logical, intent(out) :: stopped               !! stopped by --stop-after [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    integer, allocatable :: pend(:), inflight(:), n_sent(:)
-    integer, allocatable, asynchronous :: id_buf(:, :)
-    type(MPI_Request), allocatable :: id_req(:, :)
-    logical, allocatable :: active(:)
-    logical :: master_works, flag, journal_ok
-    integer :: nw, w, depth, next, id, every, n_unflushed, nap_us, k
+    type(master_t), asynchronous :: ms
+    type(master_sink_t) :: sink
+    logical :: flag
+    integer :: id, k, w
     type(MPI_Status) :: status
     type(case_row_t) :: row
-    real(wp) :: t_next_ckpt, t_flush, t, tm(3)
+    real(wp) :: t, tm(3)
 
-    call results_missing(table, pend)
-    next = 1
-    n_session = 0
-    stopped = .false.
-    journal_ok = .true.
-    n_unflushed = 0
-    t_flush = MPI_Wtime()
-    t_next_ckpt = MPI_Wtime() + camp%checkpoint_interval
-    every = max(1, camp%n_cases/100)
-    if (camp%n_cases <= 200) every = 1
-    nw = nranks - 1
-    master_works = nranks == 1 .or. (nranks <= master_works_max_ranks .and. .not. opts%dedicated_master)
-    depth = merge(depth_master_works, depth_dedicated, master_works)
-    allocate (inflight(nw), active(nw), n_sent(nw), id_buf(depth + 2, nw), id_req(depth + 2, nw))
-    inflight = 0
-    active = .true.
-    n_sent = 0
-    id_buf = 0
-    id_req = MPI_REQUEST_NULL
-    t = MPI_Wtime()
-    do w = 1, nw
-      call top_up(w)
-      if (inflight(w) == 0) then
-        call send_id(0, w)
-        active(w) = .false.
-      end if
-    end do
-    prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t)
-
+    call master_start(camp, opts, nranks, table, ms, prof)
+    sink = master_sink_t(ju, err_u)
     do
       ! every row that has arrived
       do
         call MPI_Iprobe(MPI_ANY_SOURCE, tag_row, MPI_COMM_WORLD, flag, status)
         if (.not. flag) exit
-        call handle(status)
+        call receive_row(camp, status, ms, sink, row, prof)
+        if (.not. ms%stopped) call record_row(camp, opts, meta, summary, sink, row, status%MPI_SOURCE, table, ms, prof)
       end do
-      call flush_journal(.true.)
-      if (master_works .and. .not. stopped .and. next <= size(pend)) then
-        id = pend(next)
-        next = next + 1
+      call flush_journal(ms, sink, .true., prof)
+      if (ms%master_works .and. .not. ms%stopped .and. ms%next <= size(ms%pend)) then
+        id = ms%pend(ms%next)
+        ms%next = ms%next + 1
         call run_case(camp, id, any(camp%save_histories == id), opts%command_line, row, tm)
         prof(p_input:p_after) = prof(p_input:p_after) + tm
         prof(p_cases) = prof(p_cases) + 1.0_wp
         prof(p_steps) = prof(p_steps) + real(row%n_steps, wp)
-        call record(row, 0)
+        call record_row(camp, opts, meta, summary, sink, row, 0, table, ms, prof)
       else
-        if (.not. any(active)) exit
-        ! wait for the next row without spinning: test, nap, test ...
-        t = MPI_Wtime()
-        nap_us = 1
-        do
-          call MPI_Iprobe(MPI_ANY_SOURCE, tag_row, MPI_COMM_WORLD, flag, status)
-          if (flag) exit
-          call nap(nap_us)
-          nap_us = min(2*nap_us, max_nap_us)
-        end do
-        prof(p_wait) = prof(p_wait) + (MPI_Wtime() - t)
+        if (.not. any(ms%active)) exit
+        call wait_for_row(prof)
       end if
     end do
-    call flush_journal(.true.)
+    call flush_journal(ms, sink, .true., prof)
     t = MPI_Wtime()
-    do w = 1, nw
-      do k = 1, size(id_req, 1)
-        call MPI_Wait(id_req(k, w), MPI_STATUS_IGNORE)
+    do w = 1, ms%nw
+      do k = 1, size(ms%id_req, 1)
+        call MPI_Wait(ms%id_req(k, w), MPI_STATUS_IGNORE)
       end do
     end do
     prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t)
-
-  contains
-
-    !> Receive the row that `st_` announces and give its worker its next case.
-    subroutine handle(st_)
-      type(MPI_Status), intent(in) :: st_    !! status of the probe that found the row [-]
-      integer :: st, n, w_
-      character(len=:), allocatable :: buf
-      real(wp) :: t_, c0, c1
-      call cpu_time(c0)
-      t_ = MPI_Wtime()
-      w_ = st_%MPI_SOURCE
-      call MPI_Get_count(st_, MPI_CHARACTER, n)
-      allocate (character(len=n) :: buf)
-      call MPI_Recv(buf, n, MPI_CHARACTER, w_, tag_row, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
-      inflight(w_) = inflight(w_) - 1
-      if (.not. stopped) then
-        call row_from_message(buf, camp%n_par, camp%n_gears, row, st)
-        if (st /= 0) then
-          write (err_u, '(a,i0)') 'landyn_batch: internal error: malformed row from rank ', w_
-          call MPI_Abort(MPI_COMM_WORLD, 3)
-        end if
-      end if
-      call top_up(w_)
-      if (inflight(w_) == 0) then
-        call send_id(0, w_)
-        active(w_) = .false.
-      end if
-      prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t_)
-      call cpu_time(c1)
-      prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
-      if (.not. stopped) call record(row, w_)
-    end subroutine handle
-
-    !> Give worker w_ cases until it holds its share: `depth` ids while many cases are left, then
-    !! its part of what is left (at least two while rank 0 runs cases itself, so that the worker
-    !! has work until rank 0 looks again; one with a dedicated rank 0).
-    subroutine top_up(w_)
-      integer, intent(in) :: w_    !! worker rank [-]
-      integer :: target, left
-      left = size(pend) - next + 1 + sum(inflight)
-      if (master_works) then
-        target = min(depth, max(2, (left + nranks - 1)/nranks))
-      else
-        target = min(depth, max(1, (left + nw - 1)/nw))
-      end if
-      do while (inflight(w_) < target .and. next <= size(pend) .and. .not. stopped)
-        call send_id(pend(next), w_)
-        next = next + 1
-        inflight(w_) = inflight(w_) + 1
-      end do
-    end subroutine top_up
-
-    !> Send a case id (0: stop) to worker w_ without blocking. The worker holds at most `depth`
-    !! ids, so a buffer slot is reused only after its send has been matched.
-    subroutine send_id(id_, w_)
-      integer, intent(in) :: id_   !! case id, 0 to stop [-]
-      integer, intent(in) :: w_    !! worker rank [-]
-      integer :: slot
-      slot = mod(n_sent(w_), size(id_buf, 1)) + 1
-      call MPI_Wait(id_req(slot, w_), MPI_STATUS_IGNORE)
-      id_buf(slot, w_) = id_
-      call MPI_Isend(id_buf(slot, w_), 1, MPI_INTEGER, w_, tag_work, MPI_COMM_WORLD, id_req(slot, w_))
-      n_sent(w_) = n_sent(w_) + 1
-    end subroutine send_id
-
-    !> Flush the journal when lines are waiting (always when `now`, else after flush_interval).
-    subroutine flush_journal(now)
-      logical, intent(in) :: now   !! flush whatever the time [-]
-      character(len=msg_len) :: msg
-      integer :: st
-      real(wp) :: t_
-      if (n_unflushed == 0) return
-      t_ = MPI_Wtime()
-      if (.not. now .and. t_ - t_flush < flush_interval) return
-      msg = ''
-      call journal_flush(ju, st, msg)
-      call journal_problem(st, msg)
-      n_unflushed = 0
-      t_flush = MPI_Wtime()
-      prof(p_record) = prof(p_record) + (t_flush - t_)
-    end subroutine flush_journal
-
-    !> Report a journal operation that failed.
-    subroutine journal_problem(st, msg)
-      integer, intent(in) :: st             !! status of the journal operation [-]
-      character(len=*), intent(in) :: msg   !! its message [-]
-      if (st /= 0 .and. journal_ok) then
-        write (err_u, '(a)') 'landyn_batch: warning: '//trim(msg)//' (rows are kept in memory and written at the end)'
-        journal_ok = .false.
-      end if
-    end subroutine journal_problem
-
-    !> Keep a finished row: table, journal, progress, checkpoint, --stop-after.
-    subroutine record(r, from)
-      type(case_row_t), intent(in) :: r   !! row [-]
-      integer, intent(in) :: from         !! rank that ran it [-]
-      character(len=msg_len) :: msg
-      integer :: st
-      real(wp) :: t_, t2, c0, c1
-      call cpu_time(c0)
-      t_ = MPI_Wtime()
-      call results_add(table, r)
-      msg = ''
-      call journal_append(ju, r, st, msg, flush_now=.false.)
-      call journal_problem(st, msg)
-      n_unflushed = n_unflushed + 1
-      n_session = n_session + 1
-      prof(p_rows) = prof(p_rows) + 1.0_wp
-      if (.not. opts%quiet .and. (mod(n_session, every) == 0 .or. r%status /= status_ok .or. &
-                                  next > size(pend))) then
-        write (err_u, '(a)', advance='no') 'landyn_batch: ['//int_text(table%n_have)//'/'//int_text(camp%n_cases)// &
-          ', rank '//int_text(from)//'] '
-        call report_row(r, camp%n_cases, err_u)
-      end if
-      call flush_journal(.false.)
-      t2 = MPI_Wtime()
-      prof(p_record) = prof(p_record) + (t2 - t_)
-      call cpu_time(c1)
-      prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
-      if (t2 >= t_next_ckpt .and. table%n_have < table%n_cases) then
-        call flush_journal(.true.)
-        t_ = MPI_Wtime()
-        msg = ''
-        call write_summary(summary, meta, results_rows(table), opts%command_line, st, msg)
-        if (st /= 0) write (err_u, '(a)') 'landyn_batch: warning: checkpoint not written: '//trim(msg)
-        t2 = MPI_Wtime()
-        prof(p_ckpt) = prof(p_ckpt) + (t2 - t_)
-        prof(p_nckpt) = prof(p_nckpt) + 1.0_wp
-        prof(p_ckpt_max) = max(prof(p_ckpt_max), t2 - t_)
-        if (camp%checkpoint_interval > 0.0_wp) then
-          t_next_ckpt = t2 + max(camp%checkpoint_interval, ckpt_cost_factor*(t2 - t_))
-        else
-          t_next_ckpt = t2   ! checkpoint_interval = 0: after every case, as asked
-        end if
-      end if
-      if (opts%stop_after > 0 .and. n_session >= opts%stop_after) stopped = .true.
-    end subroutine record
-
+    n_session = ms%n_session
+    stopped = ms%stopped
   end subroutine master_loop
+
+  !> Rank 0's start: the cases to run, the workers' depth, the clocks of journal flushes and
+  !! checkpoints, and each worker's first ids (or its stop when there is nothing to run).
+  subroutine master_start(camp, opts, nranks, table, ms, prof)
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    integer, intent(in) :: nranks                 !! ranks [-]
+    type(results_t), intent(in) :: table          !! rows already done [-]
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state, set up [-]
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    integer :: w
+    real(wp) :: t
+    call results_missing(table, ms%pend)
+    ms%next = 1
+    ms%n_session = 0
+    ms%stopped = .false.
+    ms%journal_ok = .true.
+    ms%n_unflushed = 0
+    ms%t_flush = MPI_Wtime()
+    ms%t_next_ckpt = MPI_Wtime() + camp%checkpoint_interval
+    ms%every = max(1, camp%n_cases/100)
+    if (camp%n_cases <= 200) ms%every = 1
+    ms%nranks = nranks
+    ms%nw = nranks - 1
+    ms%master_works = nranks == 1 .or. (nranks <= master_works_max_ranks .and. .not. opts%dedicated_master)
+    ms%depth = merge(depth_master_works, depth_dedicated, ms%master_works)
+    allocate (ms%inflight(ms%nw), ms%active(ms%nw), ms%n_sent(ms%nw), ms%id_buf(ms%depth + 2, ms%nw), &
+              ms%id_req(ms%depth + 2, ms%nw))
+    ms%inflight = 0
+    ms%active = .true.
+    ms%n_sent = 0
+    ms%id_buf = 0
+    ms%id_req = MPI_REQUEST_NULL
+    t = MPI_Wtime()
+    do w = 1, ms%nw
+      call top_up(ms, w)
+    end do
+    prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t)
+  end subroutine master_start
+
+  !> Rank 0 waits for the next row without spinning: test, nap, test ...
+  subroutine wait_for_row(prof)
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    type(MPI_Status) :: status
+    logical :: flag
+    integer :: nap_us
+    real(wp) :: t
+    t = MPI_Wtime()
+    nap_us = 1
+    do
+      call MPI_Iprobe(MPI_ANY_SOURCE, tag_row, MPI_COMM_WORLD, flag, status)
+      if (flag) exit
+      call nap(nap_us)
+      nap_us = min(2*nap_us, max_nap_us)
+    end do
+    prof(p_wait) = prof(p_wait) + (MPI_Wtime() - t)
+  end subroutine wait_for_row
+
+  !> Receive the row that `status` announces and give its worker its next case (or its stop).
+  !! The row is unpacked unless the campaign has stopped.
+  subroutine receive_row(camp, status, ms, sink, row, prof)
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(MPI_Status), intent(in) :: status        !! status of the probe that found the row [-]
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state [-]
+    type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
+    type(case_row_t), intent(inout) :: row        !! the row received [-]
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    integer :: st, n, w
+    character(len=:), allocatable :: buf
+    real(wp) :: t, c0, c1
+    call cpu_time(c0)
+    t = MPI_Wtime()
+    w = status%MPI_SOURCE
+    call MPI_Get_count(status, MPI_CHARACTER, n)
+    allocate (character(len=n) :: buf)
+    call MPI_Recv(buf, n, MPI_CHARACTER, w, tag_row, MPI_COMM_WORLD, MPI_STATUS_IGNORE)
+    ms%inflight(w) = ms%inflight(w) - 1
+    if (.not. ms%stopped) then
+      call row_from_message(buf, camp%n_par, camp%n_gears, row, st)
+      if (st /= 0) then
+        write (sink%err_u, '(a,i0)') 'landyn_batch: internal error: malformed row from rank ', w
+        call MPI_Abort(MPI_COMM_WORLD, 3)
+      end if
+    end if
+    call top_up(ms, w)
+    prof(p_comm) = prof(p_comm) + (MPI_Wtime() - t)
+    call cpu_time(c1)
+    prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
+  end subroutine receive_row
+
+  !> Give worker w cases until it holds its share: `depth` ids while many cases are left, then
+  !! its part of what is left (at least two while rank 0 runs cases itself, so that the worker
+  !! has work until rank 0 looks again; one with a dedicated rank 0). A worker left with none is
+  !! sent its stop.
+  subroutine top_up(ms, w)
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state [-]
+    integer, intent(in) :: w                      !! worker rank [-]
+    integer :: target, left
+    left = size(ms%pend) - ms%next + 1 + sum(ms%inflight)
+    if (ms%master_works) then
+      target = min(ms%depth, max(2, (left + ms%nranks - 1)/ms%nranks))
+    else
+      target = min(ms%depth, max(1, (left + ms%nw - 1)/ms%nw))
+    end if
+    do while (ms%inflight(w) < target .and. ms%next <= size(ms%pend) .and. .not. ms%stopped)
+      call send_id(ms, ms%pend(ms%next), w)
+      ms%next = ms%next + 1
+      ms%inflight(w) = ms%inflight(w) + 1
+    end do
+    if (ms%inflight(w) == 0) then
+      call send_id(ms, 0, w)
+      ms%active(w) = .false.
+    end if
+  end subroutine top_up
+
+  !> Send a case id (0: stop) to worker w without blocking. The worker holds at most `depth`
+  !! ids, so a buffer slot is reused only after its send has been matched.
+  subroutine send_id(ms, id, w)
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: the worker's send buffers [-]
+    integer, intent(in) :: id                     !! case id, 0 to stop [-]
+    integer, intent(in) :: w                      !! worker rank [-]
+    integer :: slot
+    slot = mod(ms%n_sent(w), size(ms%id_buf, 1)) + 1
+    call MPI_Wait(ms%id_req(slot, w), MPI_STATUS_IGNORE)
+    ms%id_buf(slot, w) = id
+    call MPI_Isend(ms%id_buf(slot, w), 1, MPI_INTEGER, w, tag_work, MPI_COMM_WORLD, ms%id_req(slot, w))
+    ms%n_sent(w) = ms%n_sent(w) + 1
+  end subroutine send_id
+
+  !> Flush the journal when lines are waiting (always when `now`, else after flush_interval).
+  subroutine flush_journal(ms, sink, now, prof)
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: the journal's flush state [-]
+    type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
+    logical, intent(in) :: now                    !! flush whatever the time [-]
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    character(len=msg_len) :: msg
+    integer :: st
+    real(wp) :: t
+    if (ms%n_unflushed == 0) return
+    t = MPI_Wtime()
+    if (.not. now .and. t - ms%t_flush < flush_interval) return
+    msg = ''
+    call journal_flush(sink%ju, st, msg)
+    call journal_problem(ms, sink, st, msg)
+    ms%n_unflushed = 0
+    ms%t_flush = MPI_Wtime()
+    prof(p_record) = prof(p_record) + (ms%t_flush - t)
+  end subroutine flush_journal
+
+  !> Report the first journal operation that failed (the rows are then kept in memory only).
+  subroutine journal_problem(ms, sink, st, msg)
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: journal_ok [-]
+    type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
+    integer, intent(in) :: st                     !! status of the journal operation [-]
+    character(len=*), intent(in) :: msg           !! its message [-]
+    if (st /= 0 .and. ms%journal_ok) then
+      write (sink%err_u, '(a)') 'landyn_batch: warning: '//trim(msg)// &
+        ' (rows are kept in memory and written at the end)'
+      ms%journal_ok = .false.
+    end if
+  end subroutine journal_problem
+
+  !> Keep a finished row: table, journal, progress line, checkpoint, --stop-after.
+  subroutine record_row(camp, opts, meta, summary, sink, r, from, table, ms, prof)
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    character(len=*), intent(in) :: summary       !! summary file [-]
+    type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
+    type(case_row_t), intent(in) :: r             !! row [-]
+    integer, intent(in) :: from                   !! rank that ran it [-]
+    type(results_t), intent(inout) :: table       !! rows [-]
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state [-]
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    character(len=msg_len) :: msg
+    integer :: st
+    real(wp) :: t, t2, c0, c1
+    call cpu_time(c0)
+    t = MPI_Wtime()
+    call results_add(table, r)
+    msg = ''
+    call journal_append(sink%ju, r, st, msg, flush_now=.false.)
+    call journal_problem(ms, sink, st, msg)
+    ms%n_unflushed = ms%n_unflushed + 1
+    ms%n_session = ms%n_session + 1
+    prof(p_rows) = prof(p_rows) + 1.0_wp
+    if (.not. opts%quiet .and. (mod(ms%n_session, ms%every) == 0 .or. r%status /= status_ok .or. &
+                                ms%next > size(ms%pend))) then
+      write (sink%err_u, '(a)', advance='no') 'landyn_batch: ['//int_text(table%n_have)//'/'// &
+        int_text(camp%n_cases)//', rank '//int_text(from)//'] '
+      call report_row(r, camp%n_cases, sink%err_u)
+    end if
+    call flush_journal(ms, sink, .false., prof)
+    t2 = MPI_Wtime()
+    prof(p_record) = prof(p_record) + (t2 - t)
+    call cpu_time(c1)
+    prof(p_book_cpu) = prof(p_book_cpu) + (c1 - c0)
+    if (t2 >= ms%t_next_ckpt .and. table%n_have < table%n_cases) then
+      call flush_journal(ms, sink, .true., prof)
+      call checkpoint(camp, opts, meta, summary, sink, table, ms, prof)
+    end if
+    if (opts%stop_after > 0 .and. ms%n_session >= opts%stop_after) ms%stopped = .true.
+  end subroutine record_row
+
+  !> Rewrite the summary file with the rows so far and set the time of the next checkpoint: after
+  !! checkpoint_interval, but at least ckpt_cost_factor times this rewrite's duration later.
+  subroutine checkpoint(camp, opts, meta, summary, sink, table, ms, prof)
+    type(campaign_t), intent(in) :: camp          !! campaign [-]
+    type(batch_options_t), intent(in) :: opts     !! options [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    character(len=*), intent(in) :: summary       !! summary file [-]
+    type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
+    type(results_t), intent(in) :: table          !! rows [-]
+    type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: t_next_ckpt [-]
+    real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
+    character(len=msg_len) :: msg
+    integer :: st
+    real(wp) :: t, t2
+    t = MPI_Wtime()
+    msg = ''
+    call write_summary(summary, meta, results_rows(table), opts%command_line, st, msg)
+    if (st /= 0) write (sink%err_u, '(a)') 'landyn_batch: warning: checkpoint not written: '//trim(msg)
+    t2 = MPI_Wtime()
+    prof(p_ckpt) = prof(p_ckpt) + (t2 - t)
+    prof(p_nckpt) = prof(p_nckpt) + 1.0_wp
+    prof(p_ckpt_max) = max(prof(p_ckpt_max), t2 - t)
+    if (camp%checkpoint_interval > 0.0_wp) then
+      ms%t_next_ckpt = t2 + max(camp%checkpoint_interval, ckpt_cost_factor*(t2 - t))
+    else
+      ms%t_next_ckpt = t2   ! checkpoint_interval = 0: after every case, as asked
+    end if
+  end subroutine checkpoint
 
   !> A row as one message: the bit patterns of its integer and real parts (pack_row), then its
   !! text part.

@@ -25,9 +25,8 @@ contains
     character(len=*), intent(in) :: deck_name      !! deck path [-]
     type(param_t), intent(out) :: p                !! the parameter [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    character(len=:), allocatable :: pre, msg, dist
-    integer :: nv, nw, i
-    real(wp) :: mass, a, b
+    character(len=:), allocatable :: pre, msg, dist, what
+    integer :: nv, nw
 
     p%line = line
     pre = deck_name//':'//int_text(line)//': &parameter'
@@ -49,120 +48,25 @@ contains
     if (len(msg) > 0) call errors%add(pre//': weights '//msg)
     dist = lower_case(trim(adjustl(rp%distribution)))
 
+    if (mode == 'grid') then
+      what = 'a grid parameter'
+    else
+      what = "distribution '"//dist//"'"
+    end if
     select case (mode)
     case ('grid')
-      p%kind = 'grid'
-      if (len(dist) > 0) call errors%add(pre//': distribution = '//quote_text(dist)// &
-        ' is not used in grid mode (grids take values, or start, stop and count); remove it')
-      call not_given(is_set(rp%lo), 'lo')
-      call not_given(is_set(rp%hi), 'hi')
-      call not_given(is_set(rp%mean), 'mean')
-      call not_given(is_set(rp%sd), 'sd')
-      call not_given(nw > 0, 'weights')
-      if (nv > 0) then
-        if (is_set(rp%start) .or. is_set(rp%stop) .or. rp%count /= -1) then
-          call errors%add(pre//': give either values or start, stop and count, not both')
-        end if
-        p%values = rp%values(1:nv)
-      else if (rp%count /= -1 .or. is_set(rp%start) .or. is_set(rp%stop)) then
-        if (rp%count < 1) then
-          call errors%add(pre//': count = '//int_text(rp%count)//' is invalid; valid: count >= 1 (with start and stop)')
-        else if (.not. is_set(rp%start)) then
-          call errors%add(pre//': start is not given; valid: the first grid value (with stop and count)')
-        else if (rp%count == 1) then
-          p%values = [rp%start]
-        else if (.not. is_set(rp%stop)) then
-          call errors%add(pre//': stop is not given; valid: the last grid value (with start and count)')
-        else if (rp%count > max_values) then
-          call errors%add(pre//': count = '//int_text(rp%count)//' is invalid; valid: count <= '//int_text(max_values))
-        else
-          allocate (p%values(rp%count))
-          do i = 1, rp%count
-            p%values(i) = rp%start + (rp%stop - rp%start)*real(i - 1, wp)/real(rp%count - 1, wp)
-          end do
-          p%values(rp%count) = rp%stop
-        end if
-      else
-        call errors%add(pre//': no grid values; valid: values = v1, v2, ... or start, stop and count')
-      end if
-      if (allocated(p%values)) call check_integral(p%values)
-
+      call grid_param(rp, nv, nw, dist, pre, what, p, errors)
     case ('monte_carlo')
-      call not_given(is_set(rp%start), 'start')
-      call not_given(is_set(rp%stop), 'stop')
-      call not_given(rp%count /= -1, 'count')
+      call not_given(is_set(rp%start), 'start', pre, what, errors)
+      call not_given(is_set(rp%stop), 'stop', pre, what, errors)
+      call not_given(rp%count /= -1, 'count', pre, what, errors)
       select case (dist)
       case ('uniform')
-        p%kind = 'uniform'
-        call not_given(is_set(rp%mean), 'mean')
-        call not_given(is_set(rp%sd), 'sd')
-        call not_given(nv > 0, 'values')
-        call not_given(nw > 0, 'weights')
-        if (.not. (is_set(rp%lo) .and. is_set(rp%hi))) then
-          call errors%add(pre//": distribution 'uniform' needs lo and hi")
-        else if (.not. rp%lo < rp%hi) then
-          call errors%add(pre//': lo = '//real_text_short(rp%lo)//', hi = '//real_text_short(rp%hi)// &
-                          ' is invalid; valid: lo < hi')
-        end if
-        p%lo = rp%lo
-        p%hi = rp%hi
-        if (p%is_int) call errors%add(pre//": is an integer input; valid distribution: 'discrete'")
+        call uniform_param(rp, nv, nw, pre, what, p, errors)
       case ('normal')
-        p%kind = 'normal'
-        call not_given(nv > 0, 'values')
-        call not_given(nw > 0, 'weights')
-        if (.not. (is_set(rp%mean) .and. is_set(rp%sd))) then
-          call errors%add(pre//": distribution 'normal' needs mean and sd (lo and hi truncate it, optional)")
-        else if (.not. rp%sd > 0.0_wp) then
-          call errors%add(pre//': sd = '//real_text_short(rp%sd)//' is invalid; valid: sd > 0')
-        else
-          a = -huge(1.0_wp)
-          b = huge(1.0_wp)
-          if (is_set(rp%lo)) a = rp%lo
-          if (is_set(rp%hi)) b = rp%hi
-          if (.not. a < b) then
-            call errors%add(pre//': lo = '//real_text_short(a)//', hi = '//real_text_short(b)// &
-                            ' is invalid; valid: lo < hi')
-          else
-            mass = 0.5_wp*(erf(scaled(b)) - erf(scaled(a)))
-            if (mass < min_truncated_mass) call errors%add(pre//': the truncation lo .. hi keeps only '// &
-              real_text_short(mass)//' of the normal distribution; valid: at least 1e-3 (widen lo .. hi)')
-          end if
-        end if
-        p%mean = rp%mean
-        p%sd = rp%sd
-        p%lo = rp%lo
-        p%hi = rp%hi
-        if (p%is_int) call errors%add(pre//": is an integer input; valid distribution: 'discrete'")
+        call normal_param(rp, nv, nw, pre, what, p, errors)
       case ('discrete')
-        p%kind = 'discrete'
-        call not_given(is_set(rp%lo), 'lo')
-        call not_given(is_set(rp%hi), 'hi')
-        call not_given(is_set(rp%mean), 'mean')
-        call not_given(is_set(rp%sd), 'sd')
-        if (nv == 0) then
-          call errors%add(pre//": distribution 'discrete' needs values (and optional weights)")
-        else
-          p%values = rp%values(1:nv)
-          call check_integral(p%values)
-          if (nw == 0) then
-            p%weights = [(real(i, wp)/real(nv, wp), i=1, nv)]
-          else if (nw /= nv) then
-            call errors%add(pre//': '//int_text(nw)//' weights for '//int_text(nv)// &
-                            ' values; valid: one weight per value')
-          else if (any(rp%weights(1:nw) < 0.0_wp) .or. .not. sum(rp%weights(1:nw)) > 0.0_wp) then
-            call errors%add(pre//': weights are invalid; valid: weights >= 0 with a positive sum')
-          else
-            allocate (p%weights(nv))
-            a = sum(rp%weights(1:nw))
-            b = 0.0_wp
-            do i = 1, nv
-              b = b + rp%weights(i)
-              p%weights(i) = b/a
-            end do
-            p%weights(nv) = 1.0_wp
-          end if
-        end if
+        call discrete_param(rp, nv, nw, pre, what, p, errors)
       case ('')
         call errors%add(pre//": distribution is not given; valid: 'uniform' (lo, hi), 'normal' (mean, sd, "// &
                         "optional lo, hi) or 'discrete' (values, optional weights)")
@@ -173,53 +77,203 @@ contains
     end select
     if (.not. allocated(p%values)) allocate (p%values(0))
     if (.not. allocated(p%weights)) allocate (p%weights(0))
-
-  contains
-
-    !> Report a variable given in the group that this kind of parameter does not use.
-    subroutine not_given(given, var)
-      logical, intent(in) :: given          !! the variable was given [-]
-      character(len=*), intent(in) :: var  !! its name [-]
-      if (given) call errors%add(pre//': '//var//' is not used by '//describe_kind()//'; remove it')
-    end subroutine not_given
-
-    !> The parameter's kind for messages: 'a grid parameter' or "distribution '<name>'".
-    function describe_kind() result(s)
-      character(len=:), allocatable :: s  !! e.g. "a grid", "distribution 'uniform'" [-]
-      if (mode == 'grid') then
-        s = 'a grid parameter'
-      else
-        s = "distribution '"//dist//"'"
-      end if
-    end function describe_kind
-
-    !> For an integer input, report the first value that is not a whole number (or exceeds 1e9).
-    subroutine check_integral(v)
-      real(wp), intent(in) :: v(:)  !! values [-]
-      integer :: j
-      if (.not. p%is_int) return
-      do j = 1, size(v)
-        if (abs(v(j)) > 1.0e9_wp .or. abs(v(j) - anint(v(j))) > 0.0_wp) then
-          call errors%add(pre//': value '//real_text_short(v(j))//' is invalid for an integer input; '// &
-                          'valid: whole numbers')
-          return
-        end if
-      end do
-    end subroutine check_integral
-
-    !> (x - mean)/(sqrt(2) sd), limited to +-6 (erf is +-1 to double precision there).
-    elemental function scaled(x) result(y)
-      real(wp), intent(in) :: x  !! truncation bound [deck unit]
-      real(wp) :: y              !! scaled bound [-]
-      real(wp), parameter :: ymax = 6.0_wp
-      if (abs(x - rp%mean) >= ymax*sqrt(2.0_wp)*rp%sd) then
-        y = sign(ymax, x - rp%mean)
-      else
-        y = (x - rp%mean)/(sqrt(2.0_wp)*rp%sd)
-      end if
-    end function scaled
-
   end subroutine make_param
+
+  !> A grid parameter: its values, given as values or as start, stop and count (evenly spaced, the
+  !! last exactly stop); the distribution variables must not be given.
+  subroutine grid_param(rp, nv, nw, dist, pre, what, p, errors)
+    type(raw_parameter_t), intent(in) :: rp        !! values read [-]
+    integer, intent(in) :: nv                      !! values given [-]
+    integer, intent(in) :: nw                      !! weights given [-]
+    character(len=*), intent(in) :: dist           !! distribution given (must be empty) [-]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
+    type(param_t), intent(inout) :: p              !! the parameter [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    integer :: i
+    p%kind = 'grid'
+    if (len(dist) > 0) call errors%add(pre//': distribution = '//quote_text(dist)// &
+      ' is not used in grid mode (grids take values, or start, stop and count); remove it')
+    call not_given(is_set(rp%lo), 'lo', pre, what, errors)
+    call not_given(is_set(rp%hi), 'hi', pre, what, errors)
+    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
+    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
+    call not_given(nw > 0, 'weights', pre, what, errors)
+    if (nv > 0) then
+      if (is_set(rp%start) .or. is_set(rp%stop) .or. rp%count /= -1) then
+        call errors%add(pre//': give either values or start, stop and count, not both')
+      end if
+      p%values = rp%values(1:nv)
+    else if (rp%count /= -1 .or. is_set(rp%start) .or. is_set(rp%stop)) then
+      if (rp%count < 1) then
+        call errors%add(pre//': count = '//int_text(rp%count)//' is invalid; valid: count >= 1 (with start and stop)')
+      else if (.not. is_set(rp%start)) then
+        call errors%add(pre//': start is not given; valid: the first grid value (with stop and count)')
+      else if (rp%count == 1) then
+        p%values = [rp%start]
+      else if (.not. is_set(rp%stop)) then
+        call errors%add(pre//': stop is not given; valid: the last grid value (with start and count)')
+      else if (rp%count > max_values) then
+        call errors%add(pre//': count = '//int_text(rp%count)//' is invalid; valid: count <= '//int_text(max_values))
+      else
+        allocate (p%values(rp%count))
+        do i = 1, rp%count
+          p%values(i) = rp%start + (rp%stop - rp%start)*real(i - 1, wp)/real(rp%count - 1, wp)
+        end do
+        p%values(rp%count) = rp%stop
+      end if
+    else
+      call errors%add(pre//': no grid values; valid: values = v1, v2, ... or start, stop and count')
+    end if
+    if (allocated(p%values)) call check_integral(p, pre, errors)
+
+  end subroutine grid_param
+
+  !> A Monte Carlo parameter of distribution 'uniform' on lo .. hi.
+  subroutine uniform_param(rp, nv, nw, pre, what, p, errors)
+    type(raw_parameter_t), intent(in) :: rp        !! values read [-]
+    integer, intent(in) :: nv                      !! values given [-]
+    integer, intent(in) :: nw                      !! weights given [-]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
+    type(param_t), intent(inout) :: p              !! the parameter [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    p%kind = 'uniform'
+    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
+    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
+    call not_given(nv > 0, 'values', pre, what, errors)
+    call not_given(nw > 0, 'weights', pre, what, errors)
+    if (.not. (is_set(rp%lo) .and. is_set(rp%hi))) then
+      call errors%add(pre//": distribution 'uniform' needs lo and hi")
+    else if (.not. rp%lo < rp%hi) then
+      call errors%add(pre//': lo = '//real_text_short(rp%lo)//', hi = '//real_text_short(rp%hi)// &
+                      ' is invalid; valid: lo < hi')
+    end if
+    p%lo = rp%lo
+    p%hi = rp%hi
+    if (p%is_int) call errors%add(pre//": is an integer input; valid distribution: 'discrete'")
+  end subroutine uniform_param
+
+  !> A Monte Carlo parameter of distribution 'normal' (mean, sd), optionally truncated to lo .. hi, which
+  !! must keep at least min_truncated_mass of it.
+  subroutine normal_param(rp, nv, nw, pre, what, p, errors)
+    type(raw_parameter_t), intent(in) :: rp        !! values read [-]
+    integer, intent(in) :: nv                      !! values given [-]
+    integer, intent(in) :: nw                      !! weights given [-]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
+    type(param_t), intent(inout) :: p              !! the parameter [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    real(wp) :: mass, a, b
+    p%kind = 'normal'
+    call not_given(nv > 0, 'values', pre, what, errors)
+    call not_given(nw > 0, 'weights', pre, what, errors)
+    if (.not. (is_set(rp%mean) .and. is_set(rp%sd))) then
+      call errors%add(pre//": distribution 'normal' needs mean and sd (lo and hi truncate it, optional)")
+    else if (.not. rp%sd > 0.0_wp) then
+      call errors%add(pre//': sd = '//real_text_short(rp%sd)//' is invalid; valid: sd > 0')
+    else
+      a = -huge(1.0_wp)
+      b = huge(1.0_wp)
+      if (is_set(rp%lo)) a = rp%lo
+      if (is_set(rp%hi)) b = rp%hi
+      if (.not. a < b) then
+        call errors%add(pre//': lo = '//real_text_short(a)//', hi = '//real_text_short(b)// &
+                        ' is invalid; valid: lo < hi')
+      else
+        mass = 0.5_wp*(erf(scaled(b, rp%mean, rp%sd)) - erf(scaled(a, rp%mean, rp%sd)))
+        if (mass < min_truncated_mass) call errors%add(pre//': the truncation lo .. hi keeps only '// &
+          real_text_short(mass)//' of the normal distribution; valid: at least 1e-3 (widen lo .. hi)')
+      end if
+    end if
+    p%mean = rp%mean
+    p%sd = rp%sd
+    p%lo = rp%lo
+    p%hi = rp%hi
+    if (p%is_int) call errors%add(pre//": is an integer input; valid distribution: 'discrete'")
+  end subroutine normal_param
+
+  !> A Monte Carlo parameter of distribution 'discrete': values and their cumulative weights (equal
+  !! weights when none are given).
+  subroutine discrete_param(rp, nv, nw, pre, what, p, errors)
+    type(raw_parameter_t), intent(in) :: rp        !! values read [-]
+    integer, intent(in) :: nv                      !! values given [-]
+    integer, intent(in) :: nw                      !! weights given [-]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
+    type(param_t), intent(inout) :: p              !! the parameter [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    real(wp) :: a, b
+    integer :: i
+    p%kind = 'discrete'
+    call not_given(is_set(rp%lo), 'lo', pre, what, errors)
+    call not_given(is_set(rp%hi), 'hi', pre, what, errors)
+    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
+    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
+    if (nv == 0) then
+      call errors%add(pre//": distribution 'discrete' needs values (and optional weights)")
+    else
+      p%values = rp%values(1:nv)
+      call check_integral(p, pre, errors)
+      if (nw == 0) then
+        p%weights = [(real(i, wp)/real(nv, wp), i=1, nv)]
+      else if (nw /= nv) then
+        call errors%add(pre//': '//int_text(nw)//' weights for '//int_text(nv)// &
+                        ' values; valid: one weight per value')
+      else if (any(rp%weights(1:nw) < 0.0_wp) .or. .not. sum(rp%weights(1:nw)) > 0.0_wp) then
+        call errors%add(pre//': weights are invalid; valid: weights >= 0 with a positive sum')
+      else
+        allocate (p%weights(nv))
+        a = sum(rp%weights(1:nw))
+        b = 0.0_wp
+        do i = 1, nv
+          b = b + rp%weights(i)
+          p%weights(i) = b/a
+        end do
+        p%weights(nv) = 1.0_wp
+      end if
+    end if
+  end subroutine discrete_param
+
+  !> Report a variable given in the group that this kind of parameter does not use.
+  subroutine not_given(given, var, pre, what, errors)
+    logical, intent(in) :: given                   !! the variable was given [-]
+    character(len=*), intent(in) :: var            !! its name [-]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    character(len=*), intent(in) :: what           !! the parameter's kind: 'a grid parameter' or "distribution '<name>'" [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    if (given) call errors%add(pre//': '//var//' is not used by '//what//'; remove it')
+  end subroutine not_given
+
+  !> For an integer input, report the first value that is not a whole number (or exceeds 1e9).
+  subroutine check_integral(p, pre, errors)
+    type(param_t), intent(in) :: p                 !! the parameter, with its values [deck unit]
+    character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    integer :: j
+    if (.not. p%is_int) return
+    do j = 1, size(p%values)
+      if (abs(p%values(j)) > 1.0e9_wp .or. abs(p%values(j) - anint(p%values(j))) > 0.0_wp) then
+        call errors%add(pre//': value '//real_text_short(p%values(j))//' is invalid for an integer input; '// &
+                        'valid: whole numbers')
+        return
+      end if
+    end do
+  end subroutine check_integral
+
+  !> (x - mean)/(sqrt(2) sd), limited to +-6 (erf is +-1 to double precision there).
+  elemental function scaled(x, mean, sd) result(y)
+    real(wp), intent(in) :: x                      !! truncation bound [deck unit]
+    real(wp), intent(in) :: mean                   !! mean of the normal distribution [deck unit]
+    real(wp), intent(in) :: sd                     !! its standard deviation [deck unit]
+    real(wp) :: y                                  !! scaled bound [-]
+    real(wp), parameter :: ymax = 6.0_wp
+    if (abs(x - mean) >= ymax*sqrt(2.0_wp)*sd) then
+      y = sign(ymax, x - mean)
+    else
+      y = (x - mean)/(sqrt(2.0_wp)*sd)
+    end if
+  end function scaled
 
   !> Number of leading set entries of an array read with unset defaults; msg /= '' on gaps.
   subroutine count_set(x, n, msg)

@@ -250,12 +250,10 @@ contains
     character(len=*), intent(in) :: command_line  !! command line [-]
     integer, intent(out) :: stat                  !! 0 ok [-]
     character(len=*), intent(inout) :: errmsg     !! message [-]
-    integer :: n, ng, i, j, n_eval, n_succ, n_excl, n_inc, complete
+    integer :: n, n_eval, n_succ, n_excl, n_inc, complete
     real(wp) :: p, lo, hi
-    real(wp), allocatable :: a3(:, :, :)
 
     n = size(rows)
-    ng = meta%n_gears
     complete = 0
     if (n == meta%n_cases) then
       if (n == 0) then
@@ -282,6 +280,19 @@ contains
     call write_meta(f, 'landyn_batch', command_line, stat, errmsg, run_git_revision=meta%git_revision)
     if (stat /= 0) return
 
+    call write_campaign_group(f, meta, stat, errmsg); if (stat /= 0) return
+    call write_criteria_group(f, meta%crit, stat, errmsg); if (stat /= 0) return
+    call write_case_inputs(f, meta, rows, stat, errmsg); if (stat /= 0) return
+    call write_case_results(f, meta, rows, stat, errmsg); if (stat /= 0) return
+    call write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, stat, errmsg)
+  end subroutine write_contents
+
+  !> /campaign (the decks and how the cases are made) and /parameters (the varied inputs) of a summary file.
+  subroutine write_campaign_group(f, meta, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
     ! ---- /campaign
     call h5_write(f, '/campaign/deck_name', nonempty(meta%deck_name), '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/campaign/deck_text', nonempty(meta%deck_text), '-', stat, errmsg, &
@@ -308,35 +319,50 @@ contains
                   description='deck units (angles in degrees)'); if (stat /= 0) return
     call h5_write(f, '/parameters/description', meta%par_desc, '-', stat, errmsg); if (stat /= 0) return
 
-    ! ---- /criteria
-    associate (c => meta%crit)
-      call h5_write(f, '/criteria/min_stroke_margin', c%min_stroke_margin, 'm', stat, errmsg, &
-                    description='every stroke margin must be >= this'); if (stat /= 0) return
-      call h5_write(f, '/criteria/max_overload_applied', merge(1_ip, 0_ip, c%overload_applied), '-', stat, errmsg)
-      if (stat /= 0) return
-      call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', stat, errmsg, &
-                    description='peak overload must be <= this (when applied)'); if (stat /= 0) return
-      call h5_write(f, '/criteria/min_tipover_margin_applied', merge(1_ip, 0_ip, c%tipover_applied), '-', stat, errmsg)
-      if (stat /= 0) return
-      call h5_write(f, '/criteria/min_tipover_margin', c%min_tipover_margin, 'deg', stat, errmsg, &
-                    description='final tip-over margin must be >= this (when applied)'); if (stat /= 0) return
-      call h5_write(f, '/criteria/max_friction_ratio_applied', merge(1_ip, 0_ip, c%friction_applied), '-', stat, errmsg)
-      if (stat /= 0) return
-      call h5_write(f, '/criteria/max_friction_ratio', c%max_friction_ratio, '-', stat, errmsg, &
-                    description='every final |F_t|/(mu_s F_n) must be <= this (when applied)'); if (stat /= 0) return
-      call h5_write(f, '/criteria/min_body_clearance_applied', merge(1_ip, 0_ip, c%clearance_applied), '-', &
-                    stat, errmsg); if (stat /= 0) return
-      call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', stat, errmsg, &
-                    description='body-point clearance must stay >= this (when applied)'); if (stat /= 0) return
-      call h5_write(f, '/criteria/body_points', c%body_point(:, 1:c%n_body_points), 'm', stat, errmsg, &
-                    description='lander-frame points whose clearance is reported, shape (n, 3)'); if (stat /= 0) return
-      call h5_write(f, '/criteria/require_at_rest', merge(1_ip, 0_ip, c%require_at_rest), '-', stat, errmsg)
-      if (stat /= 0) return
-      call h5_write(f, '/criteria/failed_runs', trim(c%failed_runs), '-', stat, errmsg, &
-                    description='how cases without a result enter the probability'); if (stat /= 0) return
-    end associate
+  end subroutine write_campaign_group
 
-    ! ---- /cases
+  !> /criteria of a summary file: the success criteria and whether each is applied.
+  subroutine write_criteria_group(f, c, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(criteria_t), intent(in) :: c             !! success criteria [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
+    call h5_write(f, '/criteria/min_stroke_margin', c%min_stroke_margin, 'm', stat, errmsg, &
+                  description='every stroke margin must be >= this'); if (stat /= 0) return
+    call h5_write(f, '/criteria/max_overload_applied', merge(1_ip, 0_ip, c%overload_applied), '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', stat, errmsg, &
+                  description='peak overload must be <= this (when applied)'); if (stat /= 0) return
+    call h5_write(f, '/criteria/min_tipover_margin_applied', merge(1_ip, 0_ip, c%tipover_applied), '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/criteria/min_tipover_margin', c%min_tipover_margin, 'deg', stat, errmsg, &
+                  description='final tip-over margin must be >= this (when applied)'); if (stat /= 0) return
+    call h5_write(f, '/criteria/max_friction_ratio_applied', merge(1_ip, 0_ip, c%friction_applied), '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/criteria/max_friction_ratio', c%max_friction_ratio, '-', stat, errmsg, &
+                  description='every final |F_t|/(mu_s F_n) must be <= this (when applied)'); if (stat /= 0) return
+    call h5_write(f, '/criteria/min_body_clearance_applied', merge(1_ip, 0_ip, c%clearance_applied), '-', &
+                  stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', stat, errmsg, &
+                  description='body-point clearance must stay >= this (when applied)'); if (stat /= 0) return
+    call h5_write(f, '/criteria/body_points', c%body_point(:, 1:c%n_body_points), 'm', stat, errmsg, &
+                  description='lander-frame points whose clearance is reported, shape (n, 3)'); if (stat /= 0) return
+    call h5_write(f, '/criteria/require_at_rest', merge(1_ip, 0_ip, c%require_at_rest), '-', stat, errmsg)
+    if (stat /= 0) return
+    call h5_write(f, '/criteria/failed_runs', trim(c%failed_runs), '-', stat, errmsg, &
+                  description='how cases without a result enter the probability'); if (stat /= 0) return
+  end subroutine write_criteria_group
+
+  !> /cases, first part: each row's identity, status, outcome, messages and inputs.
+  subroutine write_case_inputs(f, meta, rows, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
+    integer :: n, i, j
+
+    n = size(rows)
     call h5_write(f, '/cases/case_id', [(int(rows(i)%case_id, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/cases/status', [(int(rows(i)%status, ip), i=1, n)], '-', stat, errmsg, &
       description='as landyn exit codes: 0 ran to its end (the outcome says how), 2 invalid input, 3 simulation '// &
@@ -348,16 +374,30 @@ contains
       description='tip-over margin of the final state (docs/output.md, Outcome)'); if (stat /= 0) return
     call h5_write(f, '/cases/max_friction_ratio', [(rows(i)%max_friction_ratio, i=1, n)], '-', stat, errmsg, &
       description='largest footpad |F_t|/(mu_s F_n) of the final state'); if (stat /= 0) return
-    call h5_write(f, '/cases/error_message', text_column(1), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/end_reason', text_column(2), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/history_file', text_column(3), '-', stat, errmsg, &
+    call h5_write(f, '/cases/error_message', text_column(rows, 1), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/end_reason', text_column(rows, 2), '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/cases/history_file', text_column(rows, 3), '-', stat, errmsg, &
                   description='time-history file of the case, empty when none'); if (stat /= 0) return
     do j = 1, meta%n_par
       call h5_write(f, '/cases/inputs/'//trim(meta%par_label(j)), [(rows(i)%inputs(j), i=1, n)], &
                     trim(meta%par_units(j)), stat, errmsg, description=trim(meta%par_desc(j)))
       if (stat /= 0) return
     end do
-    allocate (a3(3, ng, n))
+  end subroutine write_case_inputs
+
+  !> /cases, second part: each row's results (crush, margins, loads, motion, timing) and its verdict
+  !! (flags, success, failed criteria).
+  subroutine write_case_results(f, meta, rows, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(summary_meta_t), intent(in) :: meta      !! meta data [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
+    real(wp), allocatable :: a3(:, :, :)
+    integer :: n, i
+
+    n = size(rows)
+    allocate (a3(3, meta%n_gears, n))
     do i = 1, n
       a3(:, :, i) = rows(i)%crush
     end do
@@ -394,11 +434,25 @@ contains
       description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result, '// &
                   '64 no touchdown, 128 tip-over margin, 256 friction ratio')
     if (stat /= 0) return
-    call h5_write(f, '/cases/failed_criteria_names', text_column(4), '-', stat, errmsg, &
+    call h5_write(f, '/cases/failed_criteria_names', text_column(rows, 4), '-', stat, errmsg, &
       description='the criteria the case failed, comma-separated (names of /probability/failure_criterion)')
     if (stat /= 0) return
+  end subroutine write_case_results
 
-    ! ---- /probability
+  !> /probability of a summary file: the success probability of the rows, its Wilson interval and the
+  !! failures per criterion (from success_probability and failure_counts).
+  subroutine write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f           !! open file [-]
+    type(case_row_t), intent(in) :: rows(:)       !! rows [-]
+    integer, intent(in) :: n_eval                 !! cases counted in the probability [-]
+    integer, intent(in) :: n_succ                 !! successful cases among them [-]
+    integer, intent(in) :: n_excl                 !! failed runs left out [-]
+    integer, intent(in) :: n_inc                  !! inconclusive cases among the evaluated [-]
+    real(wp), intent(in) :: p                     !! success probability [-]
+    real(wp), intent(in) :: lo                    !! lower end of its 95 % interval [-]
+    real(wp), intent(in) :: hi                    !! upper end of its 95 % interval [-]
+    integer, intent(out) :: stat                  !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg     !! message [-]
     call h5_write(f, '/probability/n_evaluated', int(n_eval, ip), '-', stat, errmsg, &
                   description='cases counted in the probability'); if (stat /= 0) return
     call h5_write(f, '/probability/n_success', int(n_succ, ip), '-', stat, errmsg); if (stat /= 0) return
@@ -424,43 +478,42 @@ contains
     if (stat /= 0) return
     call h5_write(f, '/probability/failure_count', int(failure_counts(rows), ip), '-', stat, errmsg, &
                   description='cases failing each criterion (a case may fail several)')
+  end subroutine write_probability_group
 
-  contains
-
-    !> A text column of the rows as a fixed-length string array.
-    function text_column(which) result(col)
-      integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file, 4 failed criteria [-]
-      character(len=:), allocatable :: col(:)      !! column [-]
-      integer :: k, l
-      l = 1
-      do k = 1, n
-        select case (which)
-        case (1)
-          l = max(l, len(rows(k)%message))
-        case (2)
-          l = max(l, len(rows(k)%end_reason))
-        case (3)
-          l = max(l, len(rows(k)%history_file))
-        case default
-          l = max(l, len(failed_criteria_names(rows(k)%failed_criteria)))
-        end select
-      end do
-      allocate (character(len=l) :: col(n))
-      do k = 1, n
-        select case (which)
-        case (1)
-          col(k) = rows(k)%message
-        case (2)
-          col(k) = rows(k)%end_reason
-        case (3)
-          col(k) = rows(k)%history_file
-        case default
-          col(k) = failed_criteria_names(rows(k)%failed_criteria)
-        end select
-      end do
-    end function text_column
-
-  end subroutine write_contents
+  !> A text column of the rows as a fixed-length string array.
+  function text_column(rows, which) result(col)
+    type(case_row_t), intent(in) :: rows(:)      !! rows [-]
+    integer, intent(in) :: which                 !! 1 message, 2 end reason, 3 history file, 4 failed criteria [-]
+    character(len=:), allocatable :: col(:)      !! column [-]
+    integer :: k, l, n
+    n = size(rows)
+    l = 1
+    do k = 1, n
+      select case (which)
+      case (1)
+        l = max(l, len(rows(k)%message))
+      case (2)
+        l = max(l, len(rows(k)%end_reason))
+      case (3)
+        l = max(l, len(rows(k)%history_file))
+      case default
+        l = max(l, len(failed_criteria_names(rows(k)%failed_criteria)))
+      end select
+    end do
+    allocate (character(len=l) :: col(n))
+    do k = 1, n
+      select case (which)
+      case (1)
+        col(k) = rows(k)%message
+      case (2)
+        col(k) = rows(k)%end_reason
+      case (3)
+        col(k) = rows(k)%history_file
+      case default
+        col(k) = failed_criteria_names(rows(k)%failed_criteria)
+      end select
+    end do
+  end function text_column
 
   !> '' for the '(none)' that nonempty stores for blank text, else `s`.
   pure function from_nonempty(s) result(r)
@@ -496,13 +549,7 @@ contains
     type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
     integer, intent(out) :: stat                         !! 0 ok [-]
     character(len=*), intent(inout) :: errmsg            !! message [-]
-    character(len=:), allocatable :: schema, s
-    integer(ip), allocatable :: iv(:)
-    integer(ip) :: ival
-    real(wp), allocatable :: rv(:), a3(:, :, :), bp(:, :)
-    character(len=text_len), allocatable :: sv(:)
-    character(len=128), allocatable :: names(:)
-    integer :: n, i, j, ng
+    character(len=:), allocatable :: schema
 
     call h5_read_attr(f, '/', 'schema_version', schema, stat, errmsg); if (stat /= 0) return
     if (schema /= schema_version) then
@@ -510,6 +557,23 @@ contains
       errmsg = trim(f%path)//': not a LANDYN campaign summary of schema '//schema_version//' (schema '//schema//')'
       return
     end if
+    call read_campaign_group(f, meta, stat, errmsg); if (stat /= 0) return
+    call read_parameters_group(f, meta, stat, errmsg); if (stat /= 0) return
+    call read_criteria_group(f, meta%crit, stat, errmsg); if (stat /= 0) return
+    call read_case_flags(f, meta, rows, stat, errmsg); if (stat /= 0) return
+    call read_case_texts(f, rows, stat, errmsg); if (stat /= 0) return
+    call read_case_numbers(f, meta, rows, stat, errmsg)
+  end subroutine read_contents
+
+  !> The root title, /campaign and /meta/git_revision of a summary file into `meta`.
+  subroutine read_campaign_group(f, meta, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(summary_meta_t), intent(inout) :: meta          !! meta data [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    character(len=:), allocatable :: s
+    integer(ip) :: ival
+
     call h5_read_attr(f, '/', 'title', s, stat, errmsg); if (stat /= 0) return
     meta%title = from_nonempty(s)
     call h5_read(f, '/campaign/mode', meta%mode, stat, errmsg); if (stat /= 0) return
@@ -532,7 +596,16 @@ contains
     meta%n_cases = ival
     call h5_read(f, '/campaign/n_gears', ival, stat, errmsg); if (stat /= 0) return
     meta%n_gears = ival
-    ng = meta%n_gears
+  end subroutine read_campaign_group
+
+  !> /parameters of a summary file into `meta` (n_par and the columns, which must agree in length).
+  subroutine read_parameters_group(f, meta, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(summary_meta_t), intent(inout) :: meta          !! meta data [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    character(len=128), allocatable :: names(:)
+
     call h5_read(f, '/parameters/name', names, stat, errmsg); if (stat /= 0) return
     meta%n_par = size(names)
     meta%par_name = names
@@ -546,142 +619,201 @@ contains
       errmsg = trim(f%path)//': /parameters/* have different lengths'
       return
     end if
-    associate (c => meta%crit)
-      call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, stat, errmsg); if (stat /= 0) return
-      call h5_read(f, '/criteria/max_overload_applied', ival, stat, errmsg); if (stat /= 0) return
-      c%overload_applied = ival /= 0
-      call h5_read(f, '/criteria/max_overload', c%max_overload, stat, errmsg); if (stat /= 0) return
-      call h5_read(f, '/criteria/min_tipover_margin_applied', ival, stat, errmsg); if (stat /= 0) return
-      c%tipover_applied = ival /= 0
-      call h5_read(f, '/criteria/min_tipover_margin', c%min_tipover_margin, stat, errmsg); if (stat /= 0) return
-      call h5_read(f, '/criteria/max_friction_ratio_applied', ival, stat, errmsg); if (stat /= 0) return
-      c%friction_applied = ival /= 0
-      call h5_read(f, '/criteria/max_friction_ratio', c%max_friction_ratio, stat, errmsg); if (stat /= 0) return
-      call h5_read(f, '/criteria/min_body_clearance_applied', ival, stat, errmsg); if (stat /= 0) return
-      c%clearance_applied = ival /= 0
-      call h5_read(f, '/criteria/min_body_clearance', c%min_body_clearance, stat, errmsg); if (stat /= 0) return
-      call h5_read(f, '/criteria/body_points', bp, stat, errmsg); if (stat /= 0) return
-      c%n_body_points = min(size(bp, 2), max_body_points)
-      c%body_point(:, 1:c%n_body_points) = bp(:, 1:c%n_body_points)
-      call h5_read(f, '/criteria/require_at_rest', ival, stat, errmsg); if (stat /= 0) return
-      c%require_at_rest = ival /= 0
-      call h5_read(f, '/criteria/failed_runs', s, stat, errmsg); if (stat /= 0) return
-      c%failed_runs = s
-    end associate
+  end subroutine read_parameters_group
+
+  !> /criteria of a summary file.
+  subroutine read_criteria_group(f, c, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(criteria_t), intent(inout) :: c                 !! success criteria [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    character(len=:), allocatable :: s
+    integer(ip) :: ival
+    real(wp), allocatable :: bp(:, :)
+
+    call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/max_overload_applied', ival, stat, errmsg); if (stat /= 0) return
+    c%overload_applied = ival /= 0
+    call h5_read(f, '/criteria/max_overload', c%max_overload, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/min_tipover_margin_applied', ival, stat, errmsg); if (stat /= 0) return
+    c%tipover_applied = ival /= 0
+    call h5_read(f, '/criteria/min_tipover_margin', c%min_tipover_margin, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/max_friction_ratio_applied', ival, stat, errmsg); if (stat /= 0) return
+    c%friction_applied = ival /= 0
+    call h5_read(f, '/criteria/max_friction_ratio', c%max_friction_ratio, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/min_body_clearance_applied', ival, stat, errmsg); if (stat /= 0) return
+    c%clearance_applied = ival /= 0
+    call h5_read(f, '/criteria/min_body_clearance', c%min_body_clearance, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/body_points', bp, stat, errmsg); if (stat /= 0) return
+    c%n_body_points = min(size(bp, 2), max_body_points)
+    c%body_point(:, 1:c%n_body_points) = bp(:, 1:c%n_body_points)
+    call h5_read(f, '/criteria/require_at_rest', ival, stat, errmsg); if (stat /= 0) return
+    c%require_at_rest = ival /= 0
+    call h5_read(f, '/criteria/failed_runs', s, stat, errmsg); if (stat /= 0) return
+    c%failed_runs = s
+  end subroutine read_criteria_group
+
+  !> The rows of a summary file, allocated from /cases/case_id, with their integer columns (status,
+  !! flags, failed criteria, steps, outcome).
+  subroutine read_case_flags(f, meta, rows, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(summary_meta_t), intent(in) :: meta             !! meta data [-]
+    type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    integer(ip), allocatable :: iv(:)
+    integer :: n, i
 
     call h5_read(f, '/cases/case_id', iv, stat, errmsg); if (stat /= 0) return
     n = size(iv)
     allocate (rows(n))
     do i = 1, n
       rows(i)%case_id = iv(i)
-      allocate (rows(i)%inputs(meta%n_par), rows(i)%crush(3, ng), rows(i)%margin(3, ng))
+      allocate (rows(i)%inputs(meta%n_par), rows(i)%crush(3, meta%n_gears), rows(i)%margin(3, meta%n_gears))
     end do
-    call int_column('/cases/status'); if (stat /= 0) return
+    call int_column(f, '/cases/status', n, iv, stat, errmsg); if (stat /= 0) return
     rows%status = iv
-    call int_column('/cases/success'); if (stat /= 0) return
+    call int_column(f, '/cases/success', n, iv, stat, errmsg); if (stat /= 0) return
     rows%success = iv
-    call int_column('/cases/tipped_over'); if (stat /= 0) return
+    call int_column(f, '/cases/tipped_over', n, iv, stat, errmsg); if (stat /= 0) return
     rows%tipped_over = iv
-    call int_column('/cases/at_rest'); if (stat /= 0) return
+    call int_column(f, '/cases/at_rest', n, iv, stat, errmsg); if (stat /= 0) return
     rows%at_rest = iv
-    call int_column('/cases/bottomed_out'); if (stat /= 0) return
+    call int_column(f, '/cases/bottomed_out', n, iv, stat, errmsg); if (stat /= 0) return
     rows%bottomed_out = iv
-    call int_column('/cases/failed_criteria'); if (stat /= 0) return
+    call int_column(f, '/cases/failed_criteria', n, iv, stat, errmsg); if (stat /= 0) return
     rows%failed_criteria = iv
-    call int_column('/cases/n_steps'); if (stat /= 0) return
+    call int_column(f, '/cases/n_steps', n, iv, stat, errmsg); if (stat /= 0) return
     rows%n_steps = iv
-    call int_column('/cases/outcome'); if (stat /= 0) return
+    call int_column(f, '/cases/outcome', n, iv, stat, errmsg); if (stat /= 0) return
     rows%outcome = iv
+  end subroutine read_case_flags
+
+  !> The text columns of the rows of a summary file: message, end reason, history file.
+  subroutine read_case_texts(f, rows, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(case_row_t), intent(inout) :: rows(:)           !! rows [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    character(len=text_len), allocatable :: sv(:)
+    integer :: n, i
+
+    n = size(rows)
+
     call h5_read(f, '/cases/error_message', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(size(sv), '/cases/error_message')) return
+    if (.not. sized(f, size(sv), n, '/cases/error_message', stat, errmsg)) return
     do i = 1, n
       rows(i)%message = trim(sv(i))
     end do
     call h5_read(f, '/cases/end_reason', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(size(sv), '/cases/end_reason')) return
+    if (.not. sized(f, size(sv), n, '/cases/end_reason', stat, errmsg)) return
     do i = 1, n
       rows(i)%end_reason = trim(sv(i))
     end do
     call h5_read(f, '/cases/history_file', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(size(sv), '/cases/history_file')) return
+    if (.not. sized(f, size(sv), n, '/cases/history_file', stat, errmsg)) return
     do i = 1, n
       rows(i)%history_file = trim(sv(i))
     end do
+  end subroutine read_case_texts
+
+  !> The real columns of the rows of a summary file: inputs, crush and margins per strut, the
+  !! results and the wall time.
+  subroutine read_case_numbers(f, meta, rows, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    type(summary_meta_t), intent(in) :: meta             !! meta data [-]
+    type(case_row_t), intent(inout) :: rows(:)           !! rows [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    real(wp), allocatable :: rv(:), a3(:, :, :)
+    integer :: n, i, j, ng
+
+    n = size(rows)
+    ng = meta%n_gears
+
     do j = 1, meta%n_par
       call h5_read(f, '/cases/inputs/'//trim(meta%par_label(j)), rv, stat, errmsg); if (stat /= 0) return
-      if (.not. sized(size(rv), '/cases/inputs/'//trim(meta%par_label(j)))) return
+      if (.not. sized(f, size(rv), n, '/cases/inputs/'//trim(meta%par_label(j)), stat, errmsg)) return
       do i = 1, n
         rows(i)%inputs(j) = rv(i)
       end do
     end do
     call h5_read(f, '/cases/crush_length', a3, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(size(a3), '/cases/crush_length', 3*ng*n)) return
+    if (.not. sized(f, size(a3), 3*ng*n, '/cases/crush_length', stat, errmsg)) return
     do i = 1, n
       rows(i)%crush = a3(:, :, i)
     end do
     call h5_read(f, '/cases/stroke_margin', a3, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(size(a3), '/cases/stroke_margin', 3*ng*n)) return
+    if (.not. sized(f, size(a3), 3*ng*n, '/cases/stroke_margin', stat, errmsg)) return
     do i = 1, n
       rows(i)%margin = a3(:, :, i)
     end do
-    call real_column('/cases/min_stroke_margin'); if (stat /= 0) return
+    call real_column(f, '/cases/min_stroke_margin', n, rv, stat, errmsg); if (stat /= 0) return
     rows%min_margin = rv
-    call real_column('/cases/peak_overload'); if (stat /= 0) return
+    call real_column(f, '/cases/peak_overload', n, rv, stat, errmsg); if (stat /= 0) return
     rows%peak_overload = rv
-    call real_column('/cases/peak_penetration'); if (stat /= 0) return
+    call real_column(f, '/cases/peak_penetration', n, rv, stat, errmsg); if (stat /= 0) return
     rows%peak_penetration = rv
-    call real_column('/cases/max_slide_distance'); if (stat /= 0) return
+    call real_column(f, '/cases/max_slide_distance', n, rv, stat, errmsg); if (stat /= 0) return
     rows%max_slide = rv
-    call real_column('/cases/final_tilt'); if (stat /= 0) return
+    call real_column(f, '/cases/final_tilt', n, rv, stat, errmsg); if (stat /= 0) return
     rows%final_tilt = rv
-    call real_column('/cases/max_tilt'); if (stat /= 0) return
+    call real_column(f, '/cases/max_tilt', n, rv, stat, errmsg); if (stat /= 0) return
     rows%max_tilt = rv
-    call real_column('/cases/min_body_clearance'); if (stat /= 0) return
+    call real_column(f, '/cases/min_body_clearance', n, rv, stat, errmsg); if (stat /= 0) return
     rows%min_clearance = rv
-    call real_column('/cases/final_time'); if (stat /= 0) return
+    call real_column(f, '/cases/final_time', n, rv, stat, errmsg); if (stat /= 0) return
     rows%final_time = rv
-    call real_column('/cases/tipover_margin'); if (stat /= 0) return
+    call real_column(f, '/cases/tipover_margin', n, rv, stat, errmsg); if (stat /= 0) return
     rows%tipover_margin = rv
-    call real_column('/cases/max_friction_ratio'); if (stat /= 0) return
+    call real_column(f, '/cases/max_friction_ratio', n, rv, stat, errmsg); if (stat /= 0) return
     rows%max_friction_ratio = rv
-    call real_column('/cases/wall_time'); if (stat /= 0) return
+    call real_column(f, '/cases/wall_time', n, rv, stat, errmsg); if (stat /= 0) return
     rows%wall_time = rv
+  end subroutine read_case_numbers
 
-  contains
+  !> True when a column of the summary file f has `expected` entries (found: m); else stat and
+  !! errmsg are set.
+  logical function sized(f, m, expected, what, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    integer, intent(in) :: m                             !! size found [-]
+    integer, intent(in) :: expected                      !! size expected [-]
+    character(len=*), intent(in) :: what                 !! dataset [-]
+    integer, intent(inout) :: stat                       !! STAT_FAILED when not sized [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    sized = m == expected
+    if (.not. sized) then
+      stat = STAT_FAILED
+      errmsg = trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(expected)
+    end if
+  end function sized
 
-    !> True when a column has `expected` (default n) entries; else stat and errmsg are set.
-    logical function sized(m, what, expected)
-      integer, intent(in) :: m                   !! size found [-]
-      character(len=*), intent(in) :: what       !! dataset [-]
-      integer, intent(in), optional :: expected  !! size expected (default n) [-]
-      integer :: e
-      e = n
-      if (present(expected)) e = expected
-      sized = m == e
-      if (.not. sized) then
-        stat = STAT_FAILED
-        errmsg = trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(e)
-      end if
-    end function sized
+  !> iv = the integer column `path` of the summary file f, of n entries.
+  subroutine int_column(f, path, n, iv, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    character(len=*), intent(in) :: path                 !! dataset [-]
+    integer, intent(in) :: n                             !! entries expected (rows) [-]
+    integer(ip), allocatable, intent(inout) :: iv(:)     !! the column [-]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    call h5_read(f, path, iv, stat, errmsg)
+    if (stat == STAT_OK) then
+      if (.not. sized(f, size(iv), n, path, stat, errmsg)) return
+    end if
+  end subroutine int_column
 
-    !> iv = the integer column `path`, of n entries.
-    subroutine int_column(path)
-      character(len=*), intent(in) :: path   !! dataset [-]
-      call h5_read(f, path, iv, stat, errmsg)
-      if (stat == STAT_OK) then
-        if (.not. sized(size(iv), path)) return
-      end if
-    end subroutine int_column
-
-    !> rv = the real column `path`, of n entries.
-    subroutine real_column(path)
-      character(len=*), intent(in) :: path   !! dataset [-]
-      call h5_read(f, path, rv, stat, errmsg)
-      if (stat == STAT_OK) then
-        if (.not. sized(size(rv), path)) return
-      end if
-    end subroutine real_column
-
-  end subroutine read_contents
+  !> rv = the real column `path` of the summary file f, of n entries.
+  subroutine real_column(f, path, n, rv, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    character(len=*), intent(in) :: path                 !! dataset [-]
+    integer, intent(in) :: n                             !! entries expected (rows) [-]
+    real(wp), allocatable, intent(inout) :: rv(:)        !! the column [units of the dataset]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    call h5_read(f, path, rv, stat, errmsg)
+    if (stat == STAT_OK) then
+      if (.not. sized(f, size(rv), n, path, stat, errmsg)) return
+    end if
+  end subroutine real_column
 
 end module landyn_campaign_store

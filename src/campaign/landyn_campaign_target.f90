@@ -25,11 +25,70 @@ contains
     character(len=*), intent(in) :: name_in            !! the input name as given [-]
     type(param_t), intent(inout) :: p                  !! parameter updated [-]
     character(len=:), allocatable, intent(out) :: msg  !! problem, '' if none [-]
-    character(len=:), allocatable :: nm, grp, var, sub, part, rest, why
-    integer :: pp, pq, iv, ig, k, i, j, ext(2), lo(2), hi(2), nsub, rank
-    logical :: last
+    character(len=:), allocatable :: grp, var, sub
+    integer :: iv, ext(2), rank
     type(input_var_t) :: e
+    call split_target(name_in, grp, var, sub, iv, msg)
+    if (len(msg) > 0) return
+    p%group = grp
+    p%var = var
+    e = input_vars(iv)
+    p%units = trim(e%unit)
+    if (len(p%units) == 0) p%units = '-'
+    p%is_int = e%kind == k_int
+    rank = 0
+    if (e%n1 > 0) rank = 1
+    if (e%n2 > 0) rank = 2
+    ext = [max(e%n1, 1), max(e%n2, 1)]
+    if (rank == 0) then
+      if (len(sub) > 0) then
+        msg = var//' is a scalar; give it without a subscript'
+        return
+      end if
+      p%lhs = var
+      p%n_elem = 1
+      p%elems = [1]
+      p%name = grp//'%'//var
+      if (.not. allocated(p%label)) p%label = grp//'.'//var
+      return
+    end if
+    if (len(sub) == 0) then
+      if (rank == 1) then
+        msg = var//' is an array of '//int_text(ext(1))//'; give an element, e.g. '//var//'(1), a range '//var// &
+              '(1:2), or '//var//'(:) for all elements'
+      else
+        msg = var//' is a 3 x '//int_text(ext(2))//' array; give an element, e.g. '//var//'(3, 1), or a section, '// &
+              'e.g. '//var//'(:, 1)'
+      end if
+      return
+    end if
+    call target_elements(var, sub, rank, ext, p, msg)
+    if (len(msg) > 0) return
+    p%lhs = var//'('//sub//')'
+    p%name = grp//'%'//var//'('//sub//')'
+    if (.not. allocated(p%label)) then
+      if (sub == ':' .and. rank == 1) then
+        p%label = grp//'.'//var
+      else
+        p%label = grp//'.'//var//'_'//label_sub(sub)
+      end if
+    end if
+  end subroutine parse_target
+
+  !> Split an input name 'group%variable(subscript)' (blanks dropped, lower case) into its group,
+  !! variable and subscript text, and find the variable in the input registry; msg /= '' when the
+  !! name is malformed, the group or variable unknown, or the variable one a campaign cannot vary.
+  subroutine split_target(name_in, grp, var, sub, iv, msg)
+    character(len=*), intent(in) :: name_in            !! the input name as given [-]
+    character(len=:), allocatable, intent(out) :: grp  !! run-deck group [-]
+    character(len=:), allocatable, intent(out) :: var  !! variable [-]
+    character(len=:), allocatable, intent(out) :: sub  !! subscript text without parentheses, '' if none [-]
+    integer, intent(out) :: iv                         !! index of the variable in input_vars [-]
+    character(len=:), allocatable, intent(out) :: msg  !! problem, '' if none [-]
+    character(len=:), allocatable :: nm, why
+    integer :: pp, pq, ig, i
     msg = ''
+    iv = 0
     nm = ''
     do i = 1, len_trim(name_in)
       if (name_in(i:i) /= ' ') nm = nm//lower_case(name_in(i:i))
@@ -65,43 +124,23 @@ contains
       return
     end if
     why = fixed_reason(iv)
-    if (len(why) > 0) then
-      msg = grp//'%'//var//' cannot be varied by a campaign: '//why
-      return
-    end if
-    p%group = grp
-    p%var = var
-    e = input_vars(iv)
-    p%units = trim(e%unit)
-    if (len(p%units) == 0) p%units = '-'
-    p%is_int = e%kind == k_int
-    rank = 0
-    if (e%n1 > 0) rank = 1
-    if (e%n2 > 0) rank = 2
-    ext = [max(e%n1, 1), max(e%n2, 1)]
-    if (rank == 0) then
-      if (len(sub) > 0) then
-        msg = var//' is a scalar; give it without a subscript'
-        return
-      end if
-      p%lhs = var
-      p%n_elem = 1
-      p%elems = [1]
-      p%name = grp//'%'//var
-      if (.not. allocated(p%label)) p%label = grp//'.'//var
-      return
-    end if
-    if (len(sub) == 0) then
-      if (rank == 1) then
-        msg = var//' is an array of '//int_text(ext(1))//'; give an element, e.g. '//var//'(1), a range '//var// &
-              '(1:2), or '//var//'(:) for all elements'
-      else
-        msg = var//' is a 3 x '//int_text(ext(2))//' array; give an element, e.g. '//var//'(3, 1), or a section, '// &
-              'e.g. '//var//'(:, 1)'
-      end if
-      return
-    end if
-    ! subscripts
+    if (len(why) > 0) msg = grp//'%'//var//' cannot be varied by a campaign: '//why
+  end subroutine split_target
+
+  !> The elements of an array variable that a subscript text selects (each subscript an index, a
+  !! range lo:hi or ':'), as column-major element numbers in p%elems; msg /= '' when a subscript
+  !! is invalid or their number is not the variable's rank.
+  subroutine target_elements(var, sub, rank, ext, p, msg)
+    character(len=*), intent(in) :: var                !! variable, for messages [-]
+    character(len=*), intent(in) :: sub                !! subscript text without parentheses [-]
+    integer, intent(in) :: rank                        !! the variable's rank (1 or 2) [-]
+    integer, intent(in) :: ext(2)                      !! its extents (1 for a missing dimension) [-]
+    type(param_t), intent(inout) :: p                  !! parameter: n_elem, elems set [-]
+    character(len=:), allocatable, intent(out) :: msg  !! problem, '' if none [-]
+    character(len=:), allocatable :: part, rest
+    integer :: k, i, j, lo(2), hi(2), nsub
+    logical :: last
+    msg = ''
     rest = sub
     nsub = 0
     lo = 1
@@ -130,16 +169,7 @@ contains
         p%elems(k) = i + (j - 1)*ext(1)
       end do
     end do
-    p%lhs = var//'('//sub//')'
-    p%name = grp//'%'//var//'('//sub//')'
-    if (.not. allocated(p%label)) then
-      if (sub == ':' .and. rank == 1) then
-        p%label = grp//'.'//var
-      else
-        p%label = grp//'.'//var//'_'//label_sub(sub)
-      end if
-    end if
-  end subroutine parse_target
+  end subroutine target_elements
 
   !> Every variable of the built-in default deck as 'group%variable' (once each).
   subroutine default_deck_variables(list)

@@ -115,25 +115,12 @@ contains
   !! the deck) or STAT_INPUT (the file cannot be read).
   subroutine read_study(path, sd, errors, stat)
     character(len=*), intent(in) :: path            !! study deck [-]
-    type(study_t), intent(out) :: sd                !! the study (not yet prepared)
-    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here
+    type(study_t), intent(out) :: sd                !! the study (not yet prepared) [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
     integer, intent(out) :: stat                    !! STAT_OK, STAT_FAILED (deck errors), STAT_INPUT (unreadable) [-]
-    character(len=256) :: title
-    character(len=path_len) :: base_deck(max_cases), output, csv
-    character(len=label_len) :: case_label(max_cases), label
-    character(len=set_len) :: common(max_sets), set(max_sets)
-    integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
-    logical :: keep_results
-    namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
-      measure_strut, keep_results  !! the &study group of a study deck (docs/study.md)
-    namelist /variant/ label, set  !! one &variant group of a study deck
-    integer :: ios, n0, i, nv, nsz, k, p, q, e, next_p, qpos, n_study, s0, s1, g
-    integer, allocatable :: bad(:)
-    character(len=msg_len) :: msg
-    character(len=:), allocatable :: text, dir, ovr, work, gname, buf
+    character(len=:), allocatable :: text, dir, work, buf
     integer, allocatable :: vs(:), ve(:)
-    type(variant_t), allocatable :: tmp(:)
-    logical :: terminated
+    integer :: n0, i, n_study
 
     n0 = errors%count()
     stat = STAT_OK
@@ -144,8 +131,28 @@ contains
     dir = ''
     i = index(path, '/', back=.true.)
     if (i > 0) dir = path(1:i)
+    call split_study_groups(path, text, work, buf, n_study, vs, ve, errors)
+    call read_study_group(path, dir, buf, n_study, sd, errors)
+    call read_variants(path, work, vs, ve, n0, sd, errors)
+    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
+  end subroutine read_study
 
-    ! ---- split the deck into groups: one &study, &variant groups, nothing else
+  !> Split a study deck's text into its groups: one &study, &variant groups, nothing else (text
+  !! outside groups, unterminated strings or groups, non-ASCII bytes, unknown or repeated groups
+  !! are reported).
+  subroutine split_study_groups(path, text, work, buf, n_study, vs, ve, errors)
+    character(len=*), intent(in) :: path            !! study deck, for messages [-]
+    character(len=*), intent(in) :: text            !! its text [-]
+    character(len=:), allocatable, intent(out) :: work  !! the text without comments and bad bytes [-]
+    character(len=:), allocatable, intent(out) :: buf   !! the (first) &study group as a namelist record [-]
+    integer, intent(out) :: n_study                 !! &study groups found [-]
+    integer, allocatable, intent(out) :: vs(:)      !! start of each &variant group in work [-]
+    integer, allocatable, intent(out) :: ve(:)      !! its end (before its '/') in work [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
+    integer, allocatable :: bad(:)
+    character(len=:), allocatable :: gname
+    integer :: k, p, q, e, next_p, qpos, s0, s1, g
+    logical :: terminated
     allocate (character(len=len(text)) :: work)
     call strip_comments(text, work, qpos)
     if (qpos > 0) then
@@ -188,6 +195,27 @@ contains
       end select
       p = next_p
     end do
+  end subroutine split_study_groups
+
+  !> The &study group of a study deck into `sd`: title, load-case decks (relative to the deck's
+  !! directory) and their labels, common overrides, output files, result files and table rows.
+  subroutine read_study_group(path, dir, buf, n_study, sd, errors)
+    character(len=*), intent(in) :: path            !! study deck, for messages [-]
+    character(len=*), intent(in) :: dir             !! its directory ('' or ending in '/') [-]
+    character(len=*), intent(in) :: buf             !! the &study group as a namelist record [-]
+    integer, intent(in) :: n_study                  !! &study groups found (0: none) [-]
+    type(study_t), intent(inout) :: sd              !! the study [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
+    character(len=256) :: title
+    character(len=path_len) :: base_deck(max_cases), output, csv
+    character(len=label_len) :: case_label(max_cases)
+    character(len=set_len) :: common(max_sets)
+    integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
+    logical :: keep_results
+    namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
+      measure_strut, keep_results  !! the &study group of a study deck (docs/study.md)
+    character(len=msg_len) :: msg
+    integer :: ios, i
 
     title = ''
     base_deck = ''
@@ -236,8 +264,25 @@ contains
     if (len_trim(csv) == 0) sd%csv = base_name(path, 'study')//'.csv'
     sd%keep_results = keep_results
     call set_measures(sd, measure_case, measure_gear, measure_strut, path, errors, 4)
+  end subroutine read_study_group
 
-    ! ---- every &variant, in order; every bad one reported
+  !> Every &variant group of a study deck, in order, into sd%variant (label and overrides); every
+  !! bad one is reported, as are no variants (when the deck has no other error) and repeated labels.
+  subroutine read_variants(path, work, vs, ve, n0, sd, errors)
+    character(len=*), intent(in) :: path            !! study deck, for messages [-]
+    character(len=*), intent(in) :: work            !! its text without comments [-]
+    integer, intent(in) :: vs(:)                    !! start of each &variant group in work [-]
+    integer, intent(in) :: ve(:)                    !! its end (before its '/') in work [-]
+    integer, intent(in) :: n0                       !! errors before the deck was read [-]
+    type(study_t), intent(inout) :: sd              !! the study [-]
+    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
+    character(len=label_len) :: label
+    character(len=set_len) :: set(max_sets)
+    namelist /variant/ label, set  !! one &variant group of a study deck
+    character(len=msg_len) :: msg
+    character(len=:), allocatable :: ovr, buf
+    type(variant_t), allocatable :: tmp(:)
+    integer :: ios, i, k, nv, nsz
     nv = 0
     allocate (sd%variant(max(8, size(vs))))
     do k = 1, size(vs)
@@ -272,21 +317,20 @@ contains
       if (any(sd%variant(1:i - 1)%label == sd%variant(i)%label)) &
         call errors%add(trim(path)//': &variant label '''//trim(sd%variant(i)%label)//''' is given twice')
     end do
-    stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
-  contains
-    !> `t` shortened for a message.
-    pure function short(t) result(r)
-      character(len=*), intent(in) :: t     !! text [-]
-      character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]
-      integer :: j
-      r = t(1:min(len(t), 60))
-      do j = 1, len(r)
-        if (r(j:j) == achar(10) .or. r(j:j) == achar(9)) r(j:j) = ' '
-      end do
-      r = trim(r)
-      if (len(t) > 60) r = r//'...'
-    end function short
-  end subroutine read_study
+  end subroutine read_variants
+
+  !> `t` shortened for a message.
+  pure function short(t) result(r)
+    character(len=*), intent(in) :: t     !! text [-]
+    character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]
+    integer :: j
+    r = t(1:min(len(t), 60))
+    do j = 1, len(r)
+      if (r(j:j) == achar(10) .or. r(j:j) == achar(9)) r(j:j) = ' '
+    end do
+    r = trim(r)
+    if (len(t) > 60) r = r//'...'
+  end function short
 
   !> Read, override, resolve and validate the input of every run (case x variant) before anything
   !! is run, so that a study with an invalid variant runs nothing. stat = STAT_OK when all are valid.
