@@ -82,11 +82,13 @@ static void put(text_t *t, const char *s) {
   if (t->bad) return;
   if (t->n + k + 1 > t->cap) {
     size_t cap = 2 * (t->n + k + 1) + 256;
-    char *p = realloc(t->s, cap);
+    char *p = malloc(cap); /* not realloc: under LTO it meets gfortran's own declaration of it */
     if (p == NULL) {
       t->bad = 1;
       return;
     }
+    if (t->s != NULL) memcpy(p, t->s, t->n + 1);
+    free(t->s);
     t->s = p;
     t->cap = cap;
   }
