@@ -533,7 +533,8 @@ fmi2Status fmi2DoStep(fmi2Component comp, fmi2Real t, fmi2Real h, fmi2Boolean no
   int i, rc;
   (void)no_set_prior;
   if (c == NULL) return fmi2Error;
-  if (c->state != ST_STEP) return fail(c, "fmi2DoStep: only after fmi2ExitInitializationMode");
+  if (c->state != ST_STEP)
+    return fail(c, "fmi2DoStep: not in step mode (before fmi2ExitInitializationMode, after a failure or fmi2Terminate)");
   if (c->ended) {
     say(c, fmi2Discard, "fmi2DoStep: the run has ended (fmi2Terminated)");
     return fmi2Discard;
