@@ -33,8 +33,9 @@ from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
 #: final strokes of the FMU run and of the landyn run agree within this [m]; measured (docs/api.md, "FMU"):
-#: 6.4e-7 m on the default deck, 9.0e-6 m at most over input/lc1..lc4 (LC-2)
-STROKE_TOL = 1.0e-5
+#: 6.4e-7 m on the default deck (LC-1), at most 6.4e-7 m over the decks of these tests; 9.0e-6 m on LC-2,
+#: whose strokes are most sensitive to step placement (a secondary strut switching between crushing and locked)
+STROKE_TOL = 5.0e-6
 FAILURES = []
 
 
