@@ -6,8 +6,8 @@
 # Each run is one `landyn.Simulation`, sampled every millisecond with `history`; the figure shows the
 # largest primary-strut stroke of each gear against the velocity.
 #
-#     python3 examples/python/sweep.py               # writes sweep_primary_stroke.png
-#     python3 examples/python/sweep.py -o my.png
+#     .venv/bin/python examples/python/sweep.py               # writes sweep_primary_stroke.png
+#     .venv/bin/python examples/python/sweep.py -o my.png
 #
 # Run it from the repository root after `bash scripts/setup.sh` (a few seconds). In a notebook or an
 # editor with `# %%` cells, run the cells one by one.
