@@ -253,9 +253,9 @@ class Simulation:
         with self._lock:
             status = self._lib.landyn_get_output(self._live(), str(name).encode("utf-8"), ctypes.byref(value),
                                                  self._msg, _MSG_LEN)
-        if status == _lib.ERR_INPUT:
-            raise LandynOutputNameError(_decode(self._msg) or f"unknown output {name!r}", status)
-        self._check(status)
+            if status == _lib.ERR_INPUT:
+                raise LandynOutputNameError(_decode(self._msg) or f"unknown output {name!r}", status)
+            self._check(status)
         return value.value
 
     __getitem__ = output
