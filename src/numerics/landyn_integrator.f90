@@ -2,6 +2,10 @@
 !! by one accepted step at a time, from the state sim_init built to the end of the run. Two
 !! implementations, chosen in &simulation: landyn_integrator_fixed (the paper's fixed-step scheme)
 !! and landyn_integrator_adaptive (error-controlled steps with event location, the default).
+!!
+!! A caller that drives a simulation to times of its own (landyn_session, the C API) sets
+!! sim%t_stop and the engine inputs, calls `retarget`, steps until sim%loop%t reaches t_stop, and
+!! reads the state's output sample with `sample`.
 module landyn_integrator
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t
@@ -15,6 +19,8 @@ module landyn_integrator
   contains
     procedure(start_iface), deferred :: start   !! first evaluation and output sample at t = 0
     procedure(step_iface), deferred :: step     !! one accepted step (or the end of the run)
+    procedure(retarget_iface), deferred :: retarget  !! takes a new sim%t_stop or changed engine inputs into account
+    procedure(sample_iface), deferred :: sample      !! the output sample of the current state
   end type integrator_t
 
   abstract interface
@@ -42,6 +48,32 @@ module landyn_integrator
       character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
       integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none
     end subroutine step_iface
+
+    !> After the caller set sim%t_stop or changed the engine inputs (sim%ext_changed, cleared here):
+    !! checks the stop time and makes the next step end on it, the current state evaluated with the
+    !! inputs now applied.
+    subroutine retarget_iface(self, sim, inp, n_eval, stat, errmsg)
+      import :: integrator_t, sim_t, landyn_input_t
+      class(integrator_t), intent(inout) :: self   !! integrator
+      type(sim_t), intent(inout) :: sim            !! simulation at its current state
+      type(landyn_input_t), intent(in) :: inp      !! resolved, validated input
+      integer, intent(out) :: n_eval               !! force evaluations made [-]
+      integer, intent(out) :: stat                 !! 0 on success; STAT_INPUT for a stop time the integrator
+                                                   !! cannot end a step on [-]
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    end subroutine retarget_iface
+
+    !> Appends to `res` the output sample the result file would hold for the current state (its
+    !! evaluation as the integrator's next step uses it); the simulation is left as it was.
+    subroutine sample_iface(self, sim, inp, res, stat, errmsg)
+      import :: integrator_t, sim_t, landyn_input_t, sim_result_t
+      class(integrator_t), intent(inout) :: self   !! integrator
+      type(sim_t), intent(inout) :: sim            !! simulation (velocities restored on return)
+      type(landyn_input_t), intent(in) :: inp      !! resolved, validated input
+      type(sim_result_t), intent(inout) :: res     !! result the sample is appended to
+      integer, intent(out) :: stat                 !! 0 on success
+      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+    end subroutine sample_iface
   end interface
 
 end module landyn_integrator

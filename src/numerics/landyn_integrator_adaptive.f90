@@ -31,7 +31,8 @@ module landyn_integrator_adaptive
   use landyn_kinds, only: wp, msg_len
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
-                             sim_evaluate, sim_book, sim_accept, finish, body_is_finite
+                             sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
+  use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_integrator, only: integrator_t
   use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_event_locator, only: event_fraction
@@ -77,6 +78,8 @@ module landyn_integrator_adaptive
   contains
     procedure :: start => adaptive_start   !! evaluates and records the state at t = 0
     procedure :: step => adaptive_step     !! one accepted step (retries and event location inside)
+    procedure :: retarget => adaptive_retarget  !! the next step cut to sim%t_stop, the state evaluated again
+    procedure :: sample => adaptive_sample      !! the sample of the current state from its evaluation
     ! the two parts a scheme on this step control replaces (landyn_integrator_imex)
     procedure :: advance => adaptive_advance          !! the update formula: the step h from the current state
     procedure :: local_error => adaptive_local_error  !! error / tolerance of the step just tried
@@ -139,7 +142,11 @@ contains
       h = self%h
       h_g = h
       t_new = self%t + h
-      if (t_new >= self%t_end - self%slack) t_new = self%t_end
+      if (t_new >= self%t_end - self%slack) then
+        t_new = self%t_end
+      else if (t_new >= sim%t_stop - self%slack) then
+        t_new = sim%t_stop      ! a caller's stop time (landyn_session), reached exactly
+      end if
       err = 0.0_wp
       event = .false.
       call self%advance(sim, inp, h, stat, m2)
@@ -417,6 +424,61 @@ contains
     end if
   end function adaptive_local_error
 
+  !> A new stop time or new engine inputs from the caller: the step to take next cut to end on the
+  !! stop time (clip), and where it changed or the inputs did, the current state evaluated again for
+  !! it (as a retry does; at t = 0 as adaptive_start does), its thrust and input moment the start of
+  !! the next step's work. A change of the inputs is an event: the next error estimate is the
+  !! first-order one.
+  subroutine adaptive_retarget(self, sim, inp, n_eval, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation at self%t
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    integer, intent(out) :: n_eval                       !! force evaluations made [-]
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    real(wp) :: hc, acc_t(3), alpha_t(3)
+    logical :: changed
+    n_eval = 0
+    stat = STAT_OK
+    changed = sim%ext_changed
+    sim%ext_changed = .false.
+    hc = clip(self, sim, self%t, self%h)
+    if (.not. changed .and. .not. (abs(hc - self%h) > 0.0_wp)) return
+    self%h = hc
+    if (changed) self%smooth = .false.
+    if (self%h_last > 0.0_wp) then
+      acc_t = self%evs(self%i_cur)%acc
+      alpha_t = self%evs(self%i_cur)%alpha
+      call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
+                        alpha_field=alpha_t, v_lead=0.5_wp*self%h_last)
+    else
+      call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg)
+    end if
+    n_eval = 1
+    if (stat /= 0) return
+    sim%loop%thrust_prev = self%evs(self%i_cur)%thrust_g
+    sim%loop%moment_prev = self%evs(self%i_cur)%ext_moment
+    self%snap(self%ip)%loop = sim%loop
+  end subroutine adaptive_retarget
+
+  !> The sample of the current state from the evaluation the next step is taken with (the one
+  !! sim_book recorded when the state was reached, or its re-evaluation by adaptive_retarget).
+  subroutine adaptive_sample(self, sim, inp, res, stat, errmsg)
+    class(adaptive_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                    !! simulation at self%t (velocities restored on return)
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res             !! result the sample is appended to
+    integer, intent(out) :: stat                         !! 0 on success
+    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    stat = STAT_OK
+    if (abs(self%evs(self%i_cur)%t - self%t) > 0.0_wp) then
+      stat = STAT_FAILED
+      errmsg = trim(res%integrator)//' integrator: the current state has no evaluation'
+      return
+    end if
+    call record_sample(sim, inp, res, self%evs(self%i_cur), self%h_last)
+  end subroutine adaptive_sample
+
   !> The usual step-size factor 0.9 err^(-1/p): p = 3 for the second-difference estimate (error
   !! ~ h^3), 2 for the first-order one (~ h^2).
   pure real(wp) function step_factor(err, second_order)
@@ -440,7 +502,7 @@ contains
 
   !> A step proposal from t cut so that steps end exactly on the next output time and on t_end
   !! (equal steps up to it rather than a sliver at its end; a proposal that reaches it to within
-  !! 1e-9 of its length goes all the way).
+  !! 1e-9 of its length goes all the way), and on a caller's stop time sim%t_stop.
   function clip(self, sim, t, h) result(hc)
     class(adaptive_integrator_t), intent(in) :: self  !! integrator
     type(sim_t), intent(in) :: sim                    !! simulation (next output time)
@@ -449,7 +511,7 @@ contains
     real(wp) :: hc                                    !! step to take [s]
     real(wp) :: t_stop, gap
     integer :: n
-    t_stop = min(sim%loop%t_next_out, self%t_end)
+    t_stop = min(sim%loop%t_next_out, self%t_end, sim%t_stop)
     gap = t_stop - t
     hc = h
     if (gap <= self%slack) return

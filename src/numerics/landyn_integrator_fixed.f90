@@ -5,7 +5,8 @@ module landyn_integrator_fixed
   use landyn_kinds, only: wp
   use landyn_status, only: STAT_INPUT, STAT_OK
   use landyn_config, only: landyn_input_t
-  use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step
+  use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step, sim_evaluate, record_sample
+  use landyn_real_text, only: fmt_real
   use landyn_integrator, only: integrator_t
   implicit none
   private
@@ -19,6 +20,8 @@ module landyn_integrator_fixed
   contains
     procedure :: start => fixed_start   !! checks the simulation was set up with &simulation dt; t = 0 is left to the first step
     procedure :: step => fixed_step     !! one sim_step of dt (evaluate, advance, commit)
+    procedure :: retarget => fixed_retarget   !! checks that a stop time is a whole number of steps
+    procedure :: sample => fixed_sample       !! the sample of the current state, evaluated as the next step will
   end type fixed_integrator_t
 
 contains
@@ -57,5 +60,41 @@ contains
     call sim_step(sim, inp, res, done, stat, errmsg, progress_unit, self%ev)
     res%n_evaluations = res%n_evaluations + 1
   end subroutine fixed_step
+
+  !> A stop time (sim%t_stop before t_end) must be a whole number of steps dt: the state after n
+  !! steps is then the run's at n dt. Engine inputs need nothing: the state is evaluated at the
+  !! start of the next step.
+  subroutine fixed_retarget(self, sim, inp, n_eval, stat, errmsg)
+    class(fixed_integrator_t), intent(inout) :: self  !! integrator
+    type(sim_t), intent(inout) :: sim                 !! simulation
+    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
+    integer, intent(out) :: n_eval                    !! force evaluations made (none) [-]
+    integer, intent(out) :: stat                      !! 0, or STAT_INPUT for a stop time between steps
+    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
+    real(wp) :: steps
+    n_eval = 0
+    stat = STAT_OK
+    sim%ext_changed = .false.
+    if (sim%t_stop >= inp%simulation%t_end) return
+    steps = sim%t_stop/self%dt
+    if (abs(steps - anint(steps)) > 1.0e-9_wp*max(1.0_wp, steps)) then
+      stat = STAT_INPUT
+      errmsg = 'fixed integrator: t = '//fmt_real(sim%t_stop)//' s is not a whole number of steps &simulation dt = ' &
+               //fmt_real(self%dt)//' s'
+    end if
+  end subroutine fixed_retarget
+
+  !> The sample of the state after the last step, with the evaluation its next step makes.
+  subroutine fixed_sample(self, sim, inp, res, stat, errmsg)
+    class(fixed_integrator_t), intent(inout) :: self  !! integrator (its work record is used)
+    type(sim_t), intent(inout) :: sim                 !! simulation (velocities restored on return)
+    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
+    type(sim_result_t), intent(inout) :: res          !! result the sample is appended to
+    integer, intent(out) :: stat                      !! 0 on success
+    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
+    call sim_evaluate(sim, inp, sim%loop%n*self%dt, self%dt, self%ev, stat, errmsg)
+    if (stat /= 0) return
+    call record_sample(sim, inp, res, self%ev, self%dt)
+  end subroutine fixed_sample
 
 end module landyn_integrator_fixed

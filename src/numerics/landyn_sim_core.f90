@@ -33,7 +33,7 @@ module landyn_sim_core
 
   public :: sim_result_t
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
-  public :: sim_evaluate, sim_book, sim_accept, finish, body_is_finite
+  public :: sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
   public :: n_energy, energy_names
   public :: SIM_NON_FINITE
 
@@ -209,7 +209,13 @@ contains
       thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
       thrust_l = 0.0_wp
       if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
-      ev%thrust_g = mv3(r, thrust_l)
+      if (sim%ext_on) then
+        ! a caller's engine inputs (landyn_session): added to the deck's thrust
+        ev%thrust_g = mv3(r, thrust_l + sim%ext_force)
+        ev%ext_moment = sim%ext_moment
+      else
+        ev%thrust_g = mv3(r, thrust_l)
+      end if
 
       ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
       ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
@@ -266,6 +272,7 @@ contains
         if (thrusting) then
           moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
         end if
+        if (sim%ext_on) moment = moment + cross3(inp%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
         force = force + ev%thrust_g
         ! ---- Step 6: body accelerations
         call body_accelerations(body, force, moment)
@@ -287,7 +294,8 @@ contains
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the current state
-    real(wp), intent(in) :: h_sync              !! the stored velocities lag the positions by h_sync/2 [s]
+    real(wp), intent(in) :: h_sync              !! the step just taken: the stored velocities lag the positions
+                                                !! by h_sync/2 [s]
     real(wp), intent(in) :: slack               !! a sample is due this close before its time [s]
     integer :: ng, i, ns
     real(wp) :: fnm, xt(3)
@@ -308,7 +316,12 @@ contains
         xt = body_point_position(model%body, inp%engine%point)
         sim%loop%w_thrust = sim%loop%w_thrust + dot_product(0.5_wp*(sim%loop%thrust_prev + ev%thrust_g), xt - sim%loop%xt_prev)
         sim%loop%xt_prev = xt
+        ! a caller's pure moment: the trapezoid of its power M . omega over the step (the stored
+        ! rates belong to the middle of the step, as the displacement of the thrust point above)
+        if (sim%ext_on) sim%loop%w_thrust = sim%loop%w_thrust &
+          + dot_product(0.5_wp*(sim%loop%moment_prev + ev%ext_moment), model%body%omega)*h_sync
       end if
+      if (sim%ext_on) sim%loop%moment_prev = ev%ext_moment
       do i = 1, ng
         res%peak_penetration(i) = max(res%peak_penetration(i), ev%delta(i))
         res%peak_normal_force(i) = max(res%peak_normal_force(i), ev%fn(i))
@@ -405,6 +418,7 @@ contains
       end do
       sim%loop%locked_last = locked_now
       res%n_steps = sim%loop%n
+      sim%loop%t = t
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then

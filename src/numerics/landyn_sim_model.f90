@@ -49,6 +49,7 @@ module landyn_sim_model
   !> The integrator's own evolving state (accumulators of the fixed-step loop).
   type :: sim_loop_t
     integer :: n = 0                                   !! steps taken [-]
+    real(wp) :: t = 0.0_wp                             !! time of the last accepted state (sim_accept) [s]
     real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
     integer :: next_progress = 1                       !! next progress report (in 5 % of the steps) [-]
     real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
@@ -64,6 +65,7 @@ module landyn_sim_model
     real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
     real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous step [m]
     real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
+    real(wp) :: moment_prev(3) = 0.0_wp                !! input moment at the previous step (ext_on), lander axes [N m]
     real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
     logical :: touched = .false.                       !! a footpad has touched the ground [-]
     integer :: mode(max_struts, max_gears) = 0         !! crush mode of each strut at the last step [-]
@@ -80,6 +82,13 @@ module landyn_sim_model
     real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
     real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
     logical :: loads = .true.                          !! compute and record the interface loads [-]
+    ! a caller that drives the simulation (the C API's session, landyn_session): where a step must
+    ! end, and engine inputs added to the deck's thrust. Their defaults leave a run untouched.
+    real(wp) :: t_stop = huge(1.0_wp)                  !! the adaptive integrators end a step exactly here [s]
+    logical :: ext_on = .false.                        !! the engine inputs below are applied [-]
+    logical :: ext_changed = .false.                   !! they changed since the integrator's retarget [-]
+    real(wp) :: ext_force(3) = 0.0_wp                  !! input force at the &engine point, lander axes [N]
+    real(wp) :: ext_moment(3) = 0.0_wp                 !! input pure moment, lander axes [N m]
   end type sim_t
 
   !> One evaluation of forces and accelerations (sim_evaluate) of the state at t, for a step dt.
@@ -95,7 +104,8 @@ module landyn_sim_model
     real(wp) :: fn(max_gears) = 0.0_wp                 !! normal forces [N]
     real(wp) :: fground(3, max_gears) = 0.0_wp         !! ground forces on the footpads, global [N]
     type(footpad_state_t) :: trial(max_gears)          !! footpad states advanced by this evaluation
-    real(wp) :: thrust_g(3) = 0.0_wp                   !! thrust, global [N]
+    real(wp) :: thrust_g(3) = 0.0_wp                   !! thrust (with the input force when ext_on), global [N]
+    real(wp) :: ext_moment(3) = 0.0_wp                 !! input pure moment applied (ext_on), lander axes [N m]
     real(wp) :: acc(3) = 0.0_wp                        !! mass-centre acceleration, global [m/s^2]
     real(wp) :: alpha(3) = 0.0_wp                      !! body angular acceleration, lander axes [rad/s^2]
     real(wp) :: ovl(3) = 0.0_wp                        !! overload (a - g)/g0, lander axes [g]

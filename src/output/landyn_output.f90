@@ -22,8 +22,11 @@ module landyn_output
 contains
 
   !> Writes the result file `path` (via `path`.partial and a rename).
-  !! With `health`, the run-health checks go to /summary/health (docs/output.md).
-  subroutine write_result_file(path, inp, res, command_line, stat, errmsg, health)
+  !! With `health`, the run-health checks go to /summary/health (docs/output.md). A run driven
+  !! through the C API (landyn_session) names itself in `program` and gives the engine inputs it
+  !! applied (/api/inputs).
+  subroutine write_result_file(path, inp, res, command_line, stat, errmsg, health, program, input_time, &
+                               input_force, input_moment)
     character(len=*), intent(in) :: path           !! result file name
     type(landyn_input_t), intent(in) :: inp        !! resolved input
     type(sim_result_t), intent(in) :: res          !! results
@@ -31,30 +34,59 @@ contains
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message on failure
     type(health_t), intent(in), optional :: health !! run-health checks [-]
+    character(len=*), intent(in), optional :: program  !! producer's program name (default: the landyn program) [-]
+    real(wp), intent(in), optional :: input_time(:)       !! (m) times the engine inputs were set [s]
+    real(wp), intent(in), optional :: input_force(:, :)   !! (3, m) input force from then on, lander axes [N]
+    real(wp), intent(in), optional :: input_moment(:, :)  !! (3, m) input moment from then on, lander axes [N m]
     type(h5_file_t) :: f
 
     call h5_create_partial(f, path, stat, errmsg)
     if (stat /= 0) return
-    call write_all(f, inp, res, command_line, stat, errmsg)
+    if (present(program)) then
+      call write_all(f, inp, res, command_line, stat, errmsg, program)
+    else
+      call write_all(f, inp, res, command_line, stat, errmsg, '')
+    end if
     if (stat == 0 .and. present(health)) call write_health_group(f, health, stat, errmsg)
+    if (stat == 0 .and. present(input_time) .and. present(input_force) .and. present(input_moment)) &
+      call write_api_inputs(f, input_time, input_force, input_moment, stat, errmsg)
     call h5_commit_partial(f, path, stat, errmsg)
   end subroutine write_result_file
 
+  !> /api/inputs: the engine inputs a caller of the C API applied, each from its time on.
+  subroutine write_api_inputs(f, t, force, moment, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file
+    real(wp), intent(in) :: t(:)                   !! (m) times the inputs were set [s]
+    real(wp), intent(in) :: force(:, :)            !! (3, m) force at the &engine point, lander axes [N]
+    real(wp), intent(in) :: moment(:, :)           !! (3, m) pure moment, lander axes [N m]
+    integer, intent(out) :: stat                   !! 0 on success
+    character(len=*), intent(inout) :: errmsg      !! message on failure
+    call h5_write(f, '/api/inputs/time', t, 's', stat, errmsg, &
+      description='simulation time at which landyn_set_input set the inputs (held until the next row)')
+    if (stat /= 0) return
+    call h5_write(f, '/api/inputs/force', force, 'N', stat, errmsg, &
+      description='input force at the &engine point, lander axes, added to the deck''s thrust; shape (m, 3)')
+    if (stat /= 0) return
+    call h5_write(f, '/api/inputs/moment', moment, 'N m', stat, errmsg, &
+      description='input pure moment, lander axes; shape (m, 3)')
+  end subroutine write_api_inputs
+
   !> Root attributes, /meta (write_meta and the run's deck), /timeseries and /summary of a run.
-  subroutine write_all(f, inp, res, command_line, stat, errmsg)
+  subroutine write_all(f, inp, res, command_line, stat, errmsg, program)
     type(h5_file_t), intent(inout) :: f            !! open file
     type(landyn_input_t), intent(in) :: inp        !! resolved input
     type(sim_result_t), intent(in) :: res          !! results
     character(len=*), intent(in) :: command_line   !! command line
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message
+    character(len=*), intent(in) :: program        !! producer's program name, blank for landyn [-]
     integer :: n, k
     n = res%n_out
 
     ! ---- root attributes and /meta (provenance)
     call h5_write_attr(f, '/', 'title', trim(inp%simulation%title), stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
-    call write_meta(f, '', command_line, stat, errmsg); if (stat /= 0) return
+    call write_meta(f, program, command_line, stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/meta/deck_name', nonempty(inp%deck_name, '(built-in default)'), '-', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/meta/deck_text', nonempty(inp%deck_text, '(none: built-in default input)'), '-', stat, errmsg, &
                   description='the input deck as given'); if (stat /= 0) return

@@ -10,7 +10,7 @@ import os
 import re
 import sys
 
-LAYERS = ("core", "input", "physics", "numerics", "output", "study", "campaign", "app")
+LAYERS = ("core", "input", "physics", "numerics", "output", "api", "study", "campaign", "app")
 
 
 def main():
