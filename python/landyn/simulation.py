@@ -196,8 +196,9 @@ class Simulation:
 
     def advance_to(self, t: float) -> bool:
         """Advances to time ``t`` [s] (time now <= t <= &simulation t_end; 'fixed' integrator: a whole
-        number of steps dt). True while the run goes on; False when it ended before ``t`` (at rest,
-        tipped over: the state stays at the end time, see :attr:`outcome`).
+        number of steps dt). True when it got to ``t`` (at t_end the run ends there too: see :attr:`ended`);
+        False when the run ended before ``t`` (at rest, tipped over: the state stays at the end time,
+        see :attr:`outcome`).
 
         Raises LandynOrderError (t before the simulation's time, past t_end, after a failure),
         LandynInputError (t not finite), LandynFailedError (the simulation diverged).

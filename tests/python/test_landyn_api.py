@@ -30,14 +30,21 @@ def short_deck(path):
     return text
 
 
+PROVENANCE = ("meta/command_line", "meta/date", "meta/deck_name", "summary/wall_time")
+
+
 def datasets(path):
-    """{name: value} of every dataset of an HDF5 file but the provenance and wall-clock times."""
+    """{name: value} of every dataset of an HDF5 file but the provenance that names the producer, its
+    command, date and deck name, and the wall time; /meta/resolved_input without the two lines that
+    hold the deck's name ('! Read from deck:' and &output file, the deck's base name + .h5)."""
     out = {}
     with h5py.File(path, "r") as f:
         def visit(name, obj):
-            if isinstance(obj, h5py.Dataset) and "provenance" not in name and "wall" not in name:
+            if isinstance(obj, h5py.Dataset) and name not in PROVENANCE:
                 out[name] = obj[()]
         f.visititems(visit)
+    text = out["meta/resolved_input"].decode()
+    out["meta/resolved_input"] = re.sub(r"(?m)^(! Read from deck: |  file = ).*$", "", text)
     return out
 
 
@@ -104,16 +111,16 @@ def test_run_equals_the_landyn_program(tmp_path):
     a, b = datasets(prog), datasets(tmp_path / "api.h5")
     assert set(a) == set(b)
     assert len(a) > 50 and "timeseries/gears/stroke" in a
-    differ = [k for k in a if not np.array_equal(a[k], b[k], equal_nan=a[k].dtype.kind == "f")]
+    differ = [k for k in a if not np.array_equal(a[k], b[k], equal_nan=np.asarray(a[k]).dtype.kind == "f")]
     assert differ == []
 
 
 def test_bad_deck_lists_every_problem():
     with pytest.raises(LandynInputError) as e:
-        Simulation("&simulation t_end = -1.0 /\n&initial_state velocity = 0.0, 0.0, 1.0e9 /\n")
+        Simulation("&simulation t_end = -1.0 /\n&terrain slope = 4*95.0 /\n")
     msg = str(e.value)
     assert "simulation" in msg and "t_end" in msg and "-1" in msg
-    assert "initial_state" in msg and "velocity" in msg
+    assert all(f"&terrain: slope({i}) = 95.0" in msg for i in (1, 2, 3, 4))
     assert e.value.status == 1
 
 
@@ -136,13 +143,11 @@ def test_time_order_and_range():
         sim.advance_to(0.05)
         with pytest.raises(LandynOrderError) as e:
             sim.advance_to(0.04)
-        assert str(e.value) and e.value.status == 3
-        with pytest.raises(LandynOrderError) as e:
+        assert "0.04" in str(e.value) and e.value.status == 3
+        with pytest.raises(LandynOrderError, match="t_end"):
             sim.advance_to(0.3)                           # past t_end = 0.2 s
-        assert str(e.value)
-        with pytest.raises(LandynError) as e:
+        with pytest.raises(LandynInputError, match="not finite"):
             sim.advance_to(math.nan)
-        assert str(e.value)
         assert sim.time == 0.05                           # nothing moved
         assert sim.advance_to(0.05) is True               # to the time it is at: nothing to do
 
@@ -151,7 +156,7 @@ def test_unknown_output_name():
     with Simulation(LC1, overrides=SHORT) as sim:
         with pytest.raises(LandynOutputNameError) as e:
             sim.output("gear1.strut1.strok")
-        assert isinstance(e.value, KeyError) and isinstance(e.value, LandynInputError)
+        assert isinstance(e.value, KeyError) and isinstance(e.value, LandynInputError) and isinstance(e.value, LandynError)
         assert "gear1.strut1.strok" in str(e.value) and "gear1.strut1.stroke" in str(e.value)
         with pytest.raises(KeyError):
             sim["nothing"]
@@ -161,9 +166,10 @@ def test_set_input_misuse():
     with Simulation(LC1, overrides=SHORT) as sim:
         with pytest.raises(LandynInputError, match="force"):
             sim.set_input(force=(1.0, 2.0))
-        with pytest.raises(LandynInputError) as e:
+        with pytest.raises(LandynInputError, match="moment.*not finite"):
             sim.set_input(moment=(0.0, math.inf, 0.0))
-        assert str(e.value)
+        with pytest.raises(LandynInputError, match="force.*not finite"):
+            sim.set_input(force=(math.nan, 0.0, 0.0))
 
 
 def test_after_close_every_call_raises():
@@ -268,9 +274,8 @@ def test_write_result_never_overwrites_an_input(tmp_path):
     before = deck.read_text()
     with Simulation(deck) as sim:
         sim.advance_to(0.01)
-        with pytest.raises(LandynFileError) as e:
+        with pytest.raises(LandynFileError, match="deck.nml"):
             sim.write_result(deck)
-        assert str(e.value)
     assert deck.read_text() == before
 
 
