@@ -77,8 +77,8 @@ def _deck_text(deck: DeckLike) -> Tuple[str, Optional[str]]:
         try:
             return path.read_text(encoding="utf-8"), str(path)
         except (OSError, UnicodeDecodeError) as exc:
-            raise LandynInputError(f"deck file {str(path)!r} cannot be read: {exc} (deck text must hold "
-                                   f"a namelist group '&group ... /')") from exc
+            raise LandynInputError(f"deck file {str(path)!r} cannot be read: {exc} (a str with neither '&' "
+                                   f"nor a newline is taken as the path of a deck file)") from exc
     if isinstance(deck, str):
         return deck, None
     raise LandynInputError(f"deck: deck text, a path or None expected, got {type(deck).__name__}")
@@ -101,7 +101,7 @@ class Simulation:
     """
 
     def __init__(self, deck: DeckLike = None, *, overrides: OverridesLike = None) -> None:
-        self._handle: Optional[ctypes.c_void_p] = None   # set last: __del__ of a half-built object is safe
+        self._handle: Optional[ctypes.c_void_p] = None   # None until created: a half-built object frees nothing
         self._lock = threading.RLock()
         self._lib = _lib.load()
         text, self.deck_file = _deck_text(deck)
@@ -146,6 +146,16 @@ class Simulation:
             self.close()
         except Exception:  # interpreter shutdown: the library may be gone already
             pass
+
+    def __copy__(self) -> "Simulation":
+        raise TypeError("a landyn.Simulation cannot be copied (two objects would free one handle); "
+                        "create another Simulation from the same deck")
+
+    def __deepcopy__(self, memo: dict) -> "Simulation":
+        return self.__copy__()
+
+    def __reduce__(self) -> tuple:
+        raise TypeError("a landyn.Simulation cannot be pickled: its state lives in liblandyn.so")
 
     def __repr__(self) -> str:
         src = f"deck_file={self.deck_file!r}" if getattr(self, "deck_file", None) else "deck=<text>"

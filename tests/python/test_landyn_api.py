@@ -3,8 +3,10 @@
 Environment: LANDYN_LIBRARY (the library under test), LANDYN_EXE (the landyn program of the same
 build, for the comparison of result files); PYTHONPATH holds the source tree's python/.
 """
+import copy
 import math
 import os
+import pickle
 import re
 import subprocess
 import threading
@@ -170,6 +172,14 @@ def test_set_input_misuse():
             sim.set_input(moment=(0.0, math.inf, 0.0))
         with pytest.raises(LandynInputError, match="force.*not finite"):
             sim.set_input(force=(math.nan, 0.0, 0.0))
+
+
+def test_no_copy_of_a_handle():
+    with Simulation(LC1, overrides=SHORT) as sim:
+        for dup in (copy.copy, copy.deepcopy, pickle.dumps):
+            with pytest.raises(TypeError, match="Simulation"):
+                dup(sim)
+        assert sim.advance_to(0.01)
 
 
 def test_after_close_every_call_raises():
