@@ -10,5 +10,5 @@ bash scripts/build.sh --debug
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 status=0
 ctest --test-dir build/release -LE bench -j 2 --output-on-failure || status=1
-ctest --test-dir build/debug -L "unit|cli" -j 2 --output-on-failure || status=1
+ctest --test-dir build/debug -L "unit|cli|api" -j 2 --output-on-failure || status=1
 exit $status

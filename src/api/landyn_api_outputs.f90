@@ -34,7 +34,7 @@ module landyn_api_outputs
   integer, parameter :: n_body = 22        !! outputs before the gears [-]
   integer, parameter :: n_footpad = 11     !! outputs of a gear's footpad [-]
   integer, parameter :: n_strut = 3        !! outputs of a strut [-]
-  character(len=1), parameter :: xyz(3) = ['x', 'y', 'z']
+  character(len=1), parameter :: xyz(3) = ['x', 'y', 'z']  !! the components of a vector [-]
 
 contains
 
