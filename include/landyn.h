@@ -61,26 +61,31 @@ int landyn_create(const char *deck_text, const char *overrides, landyn_sim **sim
 int landyn_free(landyn_sim **sim);
 
 /* Engine inputs, lander frame, held from now until the next call: force [N] applied at the
- * &engine point and a pure moment [N m]. They add to the deck's &engine thrust (zero inputs give
- * the deck's run). Non-finite values are LANDYN_ERR_INPUT; after the run ended, LANDYN_ERR_ORDER. */
+ * &engine point and a pure moment [N m] (NULL for either: zeros). They add to the deck's &engine
+ * thrust (zero inputs give the deck's run). Non-finite values are LANDYN_ERR_INPUT; after the run
+ * ended, LANDYN_ERR_ORDER. The result file records every call (/api/inputs). */
 int landyn_set_input(landyn_sim *sim, const double force[3], const double moment[3],
                      char *msg, size_t msg_len);
 
 /* Advances to time t [s] (t_now <= t <= &simulation t_end); the integrator of the deck takes its own
- * steps and ends one exactly at t ('fixed': t must be a whole number of steps dt). Returns
- * LANDYN_ENDED when the run ended before t, LANDYN_ERR_FAILED when it failed. */
+ * steps and ends one exactly at t ('fixed': t must be a whole number of steps dt, else
+ * LANDYN_ERR_INPUT). Returns LANDYN_ENDED when the run ended before t (and for any later t after
+ * that), LANDYN_ERR_FAILED when it failed. t = t_now does nothing and returns LANDYN_OK. */
 int landyn_advance_to(landyn_sim *sim, double t, char *msg, size_t msg_len);
 
 /* The simulation's time [s]. */
 int landyn_time(const landyn_sim *sim, double *t);
 
 /* The outputs of this simulation: their number (it depends on the deck's gears and struts), and
- * for 0 <= i < count their name, unit and one-line meaning. */
+ * for 0 <= i < count their name, unit and one-line meaning (each buffer may be NULL with length 0;
+ * an index out of range is LANDYN_ERR_INPUT). Table: docs/api.md. */
 int landyn_output_count(const landyn_sim *sim, int *count);
 int landyn_output_info(const landyn_sim *sim, int i, char *name, size_t name_len,
                        char *unit, size_t unit_len, char *meaning, size_t meaning_len);
 
-/* All outputs at the current time into values[0 .. n-1] (n >= landyn_output_count). */
+/* All outputs at the current time into values[0 .. count-1] (n >= landyn_output_count, else
+ * LANDYN_ERR_INPUT): the values the result file would record as a sample now; after the run
+ * ended or failed, those of its last sample. */
 int landyn_get_outputs(const landyn_sim *sim, double *values, int n, char *msg, size_t msg_len);
 
 /* One output by name. LANDYN_ERR_INPUT for an unknown name (msg suggests the closest). */
@@ -88,8 +93,10 @@ int landyn_get_output(const landyn_sim *sim, const char *name, double *value,
                       char *msg, size_t msg_len);
 
 /* Writes the result file (docs/output.md) of what was run so far, with its provenance; the
- * output-file policy of the landyn program (docs/files.md) applies: an existing input file is
- * never overwritten, the file is published whole. */
+ * output-file policy of the landyn program (docs/files.md) applies: an existing file that is not
+ * an HDF5 file (an input deck) is never overwritten, the file is published whole. A run not yet
+ * at its end is written with the end reason "stopped by the caller at t = ... s" and the outcome
+ * still_moving (inconclusive); the simulation can go on afterwards. */
 int landyn_write_result(landyn_sim *sim, const char *path, char *msg, size_t msg_len);
 
 #ifdef __cplusplus

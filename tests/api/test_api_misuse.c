@@ -149,6 +149,46 @@ static void fixed_steps(void) {
   landyn_free(&sim);
 }
 
+/* A run stopped before t_end and written, before touchdown: check_stopped.py reads stopped.h5. */
+static void stopped_early(const char *workdir) {
+  char msg[512], path[1024];
+  landyn_sim *sim = NULL;
+  double f[3] = {0.0, 0.0, -1000.0};
+  if (landyn_create(short_deck, "&initial_state\n clearance = 1.0\n/\n", &sim, msg, sizeof msg) != LANDYN_OK) {
+    CHECK(0, "create a deck starting 1 m up");
+    return;
+  }
+  CHECK(landyn_set_input(sim, f, NULL, msg, sizeof msg) == LANDYN_OK, "an input at t = 0");
+  CHECK(landyn_advance_to(sim, 0.0105, msg, sizeof msg) == LANDYN_OK, "advance to 0.0105 s");
+  snprintf(path, sizeof path, "%s/stopped.h5", workdir);
+  remove(path);
+  CHECK(landyn_write_result(sim, path, msg, sizeof msg) == LANDYN_OK, "write a run stopped before t_end");
+  CHECK(landyn_advance_to(sim, 0.02, msg, sizeof msg) == LANDYN_OK, "the run goes on after writing");
+  landyn_free(&sim);
+}
+
+/* A run that comes to rest before the requested time: LANDYN_ENDED, the state at its end. */
+static void ended_early(void) {
+  char msg[512];
+  landyn_sim *sim = NULL;
+  double t = 0, outcome = -1, f[3] = {1.0, 0.0, 0.0};
+  const char *deck = "&simulation\n t_end = 3.0\n stop_at_rest = .true.\n rest_speed = 0.02\n rest_time = 0.1\n/\n"
+                     "&initial_state\n clearance = 0.0\n velocity = 0.0, 0.0, 1.0\n/\n";
+  if (landyn_create(deck, NULL, &sim, msg, sizeof msg) != LANDYN_OK) {
+    CHECK(0, "create a deck that comes to rest");
+    return;
+  }
+  CHECK(landyn_advance_to(sim, 3.0, msg, sizeof msg) == LANDYN_ENDED && strstr(msg, "at rest"),
+        "at rest before t: LANDYN_ENDED saying why");
+  fprintf(stderr, "ended: %s\n", msg);
+  CHECK(landyn_time(sim, &t) == LANDYN_OK && t > 1.0 && t < 3.0, "the state stays at the end time");
+  CHECK(landyn_get_output(sim, "outcome", &outcome, msg, sizeof msg) == LANDYN_OK && outcome == LANDYN_OUTCOME_AT_REST,
+        "outcome at rest");
+  CHECK(landyn_advance_to(sim, 3.0, msg, sizeof msg) == LANDYN_ENDED, "LANDYN_ENDED again");
+  CHECK(landyn_set_input(sim, f, NULL, msg, sizeof msg) == LANDYN_ERR_ORDER, "no input after the end");
+  landyn_free(&sim);
+}
+
 int main(int argc, char **argv) {
   if (argc != 2) {
     fprintf(stderr, "usage: test_api_misuse WORKDIR\n");
@@ -159,6 +199,8 @@ int main(int argc, char **argv) {
   handles();
   order_and_values(argv[1]);
   fixed_steps();
+  stopped_early(argv[1]);
+  ended_early();
   printf("%s: %d failed checks\n", argv[0], n_failed);
   return n_failed ? 1 : 0;
 }
