@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what LANDYN needs on Debian 12: compilers and libraries from Debian's packages, and the
-# Python post-processing packages (pinned in post/requirements.txt) and FORD (docs/api/requirements.txt)
-# into a virtual environment .venv in the source tree. Run as root or with sudo available.
+# Python post-processing packages (pinned in post/requirements.txt), FORD (docs/api/requirements.txt)
+# and the packages landyn_post (post/) and landyn (python/, the Python API) into a virtual environment
+# .venv in the source tree. Run as root or with sudo available.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -28,4 +29,5 @@ fi
 .venv/bin/python -m pip install -q -r post/requirements.txt
 .venv/bin/python -m pip install -q -r docs/api/requirements.txt   # FORD, for the api_docs target
 .venv/bin/python -m pip install -q -e post/
+.venv/bin/python -m pip install -q -e python/      # the landyn package (Python API over build/release/liblandyn.so)
 echo "install_prereqs: done"

@@ -5,10 +5,11 @@
 
 Every line of the fenced ```sh blocks and every ```python block of the two files is run, in file
 order, in one temporary directory laid out like a repository checkout after scripts/setup.sh:
-build/release -> BUILD_DIR, input/ and post/ -> the source tree, examples/ a copy of it, .venv ->
-the virtual environment of VENV_PYTHON. PATH starts with .venv/bin (so `python3` and the console
-scripts are the environment's) and PYTHONPATH with SOURCE_DIR/post, so the console scripts and
-`python3 post/landyn_*.py` run the landyn_post of the source tree under test. A command passes
+build/release -> BUILD_DIR, input/, post/ and python/ -> the source tree, examples/ a copy of it,
+.venv -> the virtual environment of VENV_PYTHON. PATH starts with .venv/bin (so `python3` and the
+console scripts are the environment's) and PYTHONPATH with SOURCE_DIR/post and SOURCE_DIR/python, so
+the console scripts, `python3 post/landyn_*.py` and `import landyn` run the landyn_post and the
+landyn (Python API, its library from LANDYN_LIBRARY = BUILD_DIR/liblandyn.so) of the tree under test. A command passes
 when it exits 0. Skipped (listed in SKIP with the reason, and printed):
 
   * set-up and test commands: scripts/setup.sh, scripts/test.sh, the pip installs, the pytest run
@@ -38,6 +39,7 @@ SKIP = {
     "bash scripts/test.sh": "runs the whole test suite, which this test is part of",
     "pip install -r post/requirements.txt": "set-up: the environment under test has the pinned packages",
     "pip install -e post/": "set-up: the console scripts are provided (shims for missing ones)",
+    ".venv/bin/python -m pip install -e python/": "set-up: the landyn package of the tree is on PYTHONPATH",
     "LANDYN_EXE=build/release/landyn python3 -m pytest post/tests -q": "the post_pytest test itself",
     "build/release/landyn_study input/study_contact.nml": "long (8 variants x 2 load cases, ~30 s); "
                                                           "study_tube.nml runs the same program",
@@ -82,7 +84,7 @@ def setup_dir(a):
         shutil.rmtree(a.workdir)
     os.makedirs(os.path.join(a.workdir, "build"))
     os.symlink(os.path.abspath(a.build), os.path.join(a.workdir, "build", "release"))
-    for d in ("input", "post"):
+    for d in ("input", "post", "python"):
         os.symlink(os.path.join(a.src, d), os.path.join(a.workdir, d))
     shutil.copytree(os.path.join(a.src, "examples"), os.path.join(a.workdir, "examples"))
     for rel, subs in SHORTEN.items():
@@ -113,7 +115,9 @@ def setup_dir(a):
                   f"equivalent to the console script {mod}:{func}")
     env = dict(os.environ)
     env["PATH"] = vbin + os.pathsep + env.get("PATH", "")
-    env["PYTHONPATH"] = os.path.join(a.src, "post") + (os.pathsep + env["PYTHONPATH"] if env.get("PYTHONPATH") else "")
+    env["PYTHONPATH"] = os.pathsep.join([os.path.join(a.src, "post"), os.path.join(a.src, "python")]
+                                        + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
+    env["LANDYN_LIBRARY"] = os.path.join(os.path.abspath(a.build), "liblandyn.so")
     env.update(MPLBACKEND="Agg", OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1")
     env.pop("LANDYN_EXE", None)
