@@ -37,12 +37,12 @@ extern "C" {
 #define LANDYN_ENDED 6        /* not an error: the run ended before the requested time (at rest,
                                  tipped over); the state stays at the end time */
 
-/* ---- outcome codes (output "outcome") --------------------------------------------------------- */
+/* ---- outcome codes (output "outcome"; 1 to 4 are the result file's /summary/outcome codes) ------ */
 #define LANDYN_OUTCOME_RUNNING 0       /* the run has not ended */
 #define LANDYN_OUTCOME_NO_TOUCHDOWN 1  /* ended at t_end without a footpad touching the ground */
 #define LANDYN_OUTCOME_AT_REST 2       /* came to rest */
-#define LANDYN_OUTCOME_TIPPED_OVER 3   /* tilt passed &simulation tipover_angle */
-#define LANDYN_OUTCOME_MOVING 4        /* still moving at t_end: inconclusive */
+#define LANDYN_OUTCOME_MOVING 3        /* still moving at t_end: inconclusive */
+#define LANDYN_OUTCOME_TIPPED_OVER 4   /* tilt passed &simulation tipover_angle */
 #define LANDYN_OUTCOME_FAILED 5        /* the simulation failed */
 
 typedef struct landyn_sim landyn_sim;  /* opaque */
@@ -56,6 +56,11 @@ const char *landyn_version(void);
  * rules, input health); on failure *sim is NULL and msg lists every problem. */
 int landyn_create(const char *deck_text, const char *overrides, landyn_sim **sim,
                   char *msg, size_t msg_len);
+
+/* landyn_create with the deck's name (e.g. its file path) for messages and the result file's
+ * provenance; NULL or "" gives landyn_create's "(deck text)". */
+int landyn_create_named(const char *deck_text, const char *deck_name, const char *overrides,
+                        landyn_sim **sim, char *msg, size_t msg_len);
 
 /* Frees the simulation and sets *sim to NULL. LANDYN_ERR_HANDLE if sim or *sim is NULL. */
 int landyn_free(landyn_sim **sim);

@@ -79,6 +79,7 @@ def _prototype(lib: ctypes.CDLL) -> ctypes.CDLL:
     protos = {
         "landyn_version": ([], c_char_p),
         "landyn_create": ([c_char_p, c_char_p, pp_void, c_char_p, c_size_t], c_int),
+        "landyn_create_named": ([c_char_p, c_char_p, c_char_p, pp_void, c_char_p, c_size_t], c_int),
         "landyn_free": ([pp_void], c_int),
         "landyn_set_input": ([c_void_p, p_double, p_double, c_char_p, c_size_t], c_int),
         "landyn_advance_to": ([c_void_p, c_double, c_char_p, c_size_t], c_int),

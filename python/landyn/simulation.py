@@ -16,7 +16,7 @@ DeckLike = Union[str, "os.PathLike[str]", None]
 OverridesLike = Union[str, Mapping[str, object], None]
 
 #: Outcome codes of the output ``outcome`` (LANDYN_OUTCOME_* of include/landyn.h) and their names.
-OUTCOMES: Dict[int, str] = {0: "running", 1: "no_touchdown", 2: "at_rest", 3: "tipped_over", 4: "still_moving",
+OUTCOMES: Dict[int, str] = {0: "running", 1: "no_touchdown", 2: "at_rest", 3: "still_moving", 4: "tipped_over",
                             5: "failed"}
 
 _MSG_LEN = 4096          # messages of advance, outputs, files [characters]
@@ -109,8 +109,9 @@ class Simulation:
         self._msg = ctypes.create_string_buffer(_MSG_LEN)
         msg = ctypes.create_string_buffer(_CREATE_MSG_LEN)
         handle = ctypes.c_void_p()
-        status = self._lib.landyn_create(text.encode("utf-8"), extra.encode("utf-8"), ctypes.byref(handle),
-                                         msg, _CREATE_MSG_LEN)
+        name = (self.deck_file or "").encode("utf-8")   # the file names the deck in messages and provenance
+        status = self._lib.landyn_create_named(text.encode("utf-8"), name, extra.encode("utf-8"),
+                                               ctypes.byref(handle), msg, _CREATE_MSG_LEN)
         if status != _lib.OK:
             raise error_for(status, _decode(msg))
         self._handle = handle
@@ -282,7 +283,7 @@ class Simulation:
 
     @property
     def outcome_code(self) -> int:
-        """The output ``outcome``: 0 running, 1 no_touchdown, 2 at_rest, 3 tipped_over, 4 still_moving, 5 failed."""
+        """The output ``outcome``: 0 running, 1 no_touchdown, 2 at_rest, 3 still_moving, 4 tipped_over, 5 failed."""
         return int(self.output("outcome"))
 
     @property

@@ -23,12 +23,13 @@ module landyn_api_outputs
     character(len=96) :: meaning = ''   !! one line [-]
   end type api_output_t
 
-  ! the outcome codes of include/landyn.h (LANDYN_OUTCOME_*)
+  ! the outcome codes of include/landyn.h (LANDYN_OUTCOME_*); 1 to 4 are the result file's
+  ! /summary/outcome codes (landyn_outcome), 0 and 5 the API's own
   integer, parameter :: api_outcome_running = 0        !! the run has not ended [-]
   integer, parameter :: api_outcome_no_touchdown = 1   !! ended at t_end without touchdown [-]
   integer, parameter :: api_outcome_at_rest = 2        !! came to rest [-]
-  integer, parameter :: api_outcome_tipped_over = 3    !! tipped over [-]
-  integer, parameter :: api_outcome_moving = 4         !! still moving at t_end: inconclusive [-]
+  integer, parameter :: api_outcome_moving = 3         !! still moving at t_end: inconclusive [-]
+  integer, parameter :: api_outcome_tipped_over = 4    !! tipped over [-]
   integer, parameter :: api_outcome_failed = 5         !! the simulation failed [-]
 
   integer, parameter :: n_body = 22        !! outputs before the gears [-]
@@ -57,7 +58,7 @@ contains
     k = 0
     call put(list, k, 'time', 's', 'simulation time')
     call put(list, k, 'outcome', '-', &
-             'LANDYN_OUTCOME_*: 0 running, 1 no touchdown, 2 at rest, 3 tipped over, 4 moving, 5 failed')
+             'LANDYN_OUTCOME_*: 0 running, 1 no touchdown, 2 at rest, 3 moving, 4 tipped over, 5 failed')
     call put(list, k, 'touched', '-', '1 once a footpad has touched the ground, else 0')
     call put3(list, k, 'position', 'm', 'lander-frame origin O_L, global frame (z down)')
     call put3(list, k, 'mc_position', 'm', 'mass centre, global frame (z down)')

@@ -14,8 +14,8 @@ module landyn_capi
   implicit none
   private
 
-  public :: landyn_create, landyn_free, landyn_set_input, landyn_advance_to, landyn_time, landyn_output_count, &
-            landyn_output_info, landyn_get_outputs, landyn_get_output, landyn_write_result
+  public :: landyn_create, landyn_create_named, landyn_free, landyn_set_input, landyn_advance_to, landyn_time, &
+            landyn_output_count, landyn_output_info, landyn_get_outputs, landyn_get_output, landyn_write_result
 
   !> "LANDYN26" in ASCII: marks a live handle.
   integer(c_int64_t), parameter :: magic_live = int(z'4C414E44594E3236', c_int64_t)
@@ -45,6 +45,31 @@ contains
     type(c_ptr), value, intent(in) :: msg          !! char *: message buffer, may be NULL when msg_len is 0 [-]
     integer(c_size_t), value, intent(in) :: msg_len  !! its size in bytes [-]
     integer(c_int) :: rc                           !! status [-]
+    rc = create_handle(deck_text, c_null_ptr, overrides, sim, msg, msg_len)
+  end function landyn_create
+
+  !> landyn_create_named: landyn_create with the deck's name (its file) for messages and provenance.
+  function landyn_create_named(deck_text, deck_name, overrides, sim, msg, msg_len) result(rc) &
+      bind(C, name='landyn_create_named')
+    type(c_ptr), value, intent(in) :: deck_text    !! const char *: deck text, NULL or "" for the default [-]
+    type(c_ptr), value, intent(in) :: deck_name    !! const char *: the deck's name, NULL or "" for '(deck text)' [-]
+    type(c_ptr), value, intent(in) :: overrides    !! const char *: deck text applied on top, NULL or "" [-]
+    type(c_ptr), value, intent(in) :: sim          !! landyn_sim **: receives the handle (NULL on failure) [-]
+    type(c_ptr), value, intent(in) :: msg          !! char *: message buffer, may be NULL when msg_len is 0 [-]
+    integer(c_size_t), value, intent(in) :: msg_len  !! its size in bytes [-]
+    integer(c_int) :: rc                           !! status [-]
+    rc = create_handle(deck_text, deck_name, overrides, sim, msg, msg_len)
+  end function landyn_create_named
+
+  !> The two create calls: a new handle, its session created from the texts.
+  function create_handle(deck_text, deck_name, overrides, sim, msg, msg_len) result(rc)
+    type(c_ptr), value, intent(in) :: deck_text    !! const char *: deck text, NULL or "" for the default [-]
+    type(c_ptr), value, intent(in) :: deck_name    !! const char *: the deck's name, NULL or "" [-]
+    type(c_ptr), value, intent(in) :: overrides    !! const char *: deck text applied on top, NULL or "" [-]
+    type(c_ptr), value, intent(in) :: sim          !! landyn_sim **: receives the handle (NULL on failure) [-]
+    type(c_ptr), value, intent(in) :: msg          !! char *: message buffer, may be NULL when msg_len is 0 [-]
+    integer(c_size_t), value, intent(in) :: msg_len  !! its size in bytes [-]
+    integer(c_int) :: rc                           !! status [-]
     type(c_ptr), pointer :: out
     type(handle_t), pointer :: h
     character(len=:), allocatable :: text
@@ -57,7 +82,7 @@ contains
     call c_f_pointer(sim, out)
     out = c_null_ptr
     allocate (h)
-    call session_create(h%s, c_text(deck_text), c_text(overrides), stat, text)
+    call session_create(h%s, c_text(deck_text), c_text(overrides), stat, text, deck_name=c_text(deck_name))
     call put_text(text, msg, msg_len)
     rc = int(stat, c_int)
     if (stat /= api_ok) then
@@ -66,7 +91,7 @@ contains
     end if
     h%magic = magic_live
     out = c_loc(h)
-  end function landyn_create
+  end function create_handle
 
   !> landyn_free: frees the simulation and sets *sim to NULL.
   function landyn_free(sim) result(rc) bind(C, name='landyn_free')

@@ -75,12 +75,14 @@ contains
   !> Creates a simulation at t = 0 from deck text (blank: the built-in default) and overrides
   !! applied on top (blank: none), with the landyn program's checks: reader, registry ranges,
   !! cross-variable rules, input health. On failure `msg` lists every problem.
-  subroutine session_create(s, deck_text, overrides, stat, msg)
+  subroutine session_create(s, deck_text, overrides, stat, msg, deck_name)
     type(session_t), intent(inout) :: s             !! new session (fresh)
     character(len=*), intent(in) :: deck_text       !! deck as a file holds it [-]
     character(len=*), intent(in) :: overrides       !! deck text applied on top [-]
     integer, intent(out) :: stat                    !! api_ok or api_err_input (api_err_failed: set-up failed) [-]
     character(len=:), allocatable, intent(out) :: msg  !! the problems, one per line [-]
+    character(len=*), intent(in), optional :: deck_name  !! the deck's name in messages and provenance (its file),
+                                                         !! default '(deck text)' [-]
     type(input_errors_t) :: errors
     integer :: st, i
     character(len=msg_len) :: m2
@@ -88,7 +90,7 @@ contains
     if (len_trim(deck_text) == 0) then
       s%inp = default_input()
     else
-      call read_input_text(deck_text, '(deck text)', s%inp, errors, st)
+      call read_input_text(deck_text, name_of_deck(deck_name), s%inp, errors, st)
     end if
     if (len_trim(overrides) > 0) call apply_input_text(overrides, '(overrides)', s%inp, errors, st)
     call resolve_input(s%inp, errors)
@@ -123,6 +125,16 @@ contains
     call update_values(s, stat, msg)
   end subroutine session_create
 
+  !> The name a deck read from text goes by: the caller's (its file), or '(deck text)'.
+  pure function name_of_deck(deck_name) result(name)
+    character(len=*), intent(in), optional :: deck_name  !! the caller's name for the deck, may be blank [-]
+    character(len=:), allocatable :: name                 !! the name [-]
+    name = '(deck text)'
+    if (present(deck_name)) then
+      if (len_trim(deck_name) > 0) name = trim(deck_name)
+    end if
+  end function name_of_deck
+
   !> Sets the engine inputs held from now on: a force at the &engine point and a pure moment,
   !! lander axes, added to the deck's thrust. Recorded with the time for the result file.
   subroutine session_set_input(s, force, moment, stat, msg)
@@ -136,19 +148,19 @@ contains
     msg = ''
     if (s%state /= state_running) then
       stat = api_err_order
-      msg = 'landyn_set_input: the run has '//merge('ended ', 'failed', s%state == state_ended)//' at t = '// &
+      msg = 'landyn_set_input: the run has '//trim(merge('ended ', 'failed', s%state == state_ended))//' at t = '// &
             fmt_real(s%t)//' s; no input can be applied'
       return
     end if
     do i = 1, 3
       if (.not. ieee_is_finite(force(i))) then
         stat = api_err_input
-        msg = 'landyn_set_input: force('//achar(iachar('0') + i - 1)//') is not finite'
+        msg = 'landyn_set_input: force('//achar(iachar('0') + i)//') is not finite'
         return
       end if
       if (.not. ieee_is_finite(moment(i))) then
         stat = api_err_input
-        msg = 'landyn_set_input: moment('//achar(iachar('0') + i - 1)//') is not finite'
+        msg = 'landyn_set_input: moment('//achar(iachar('0') + i)//') is not finite'
         return
       end if
     end do

@@ -248,7 +248,7 @@ static fmi2Status create_sim(landyn_fmu *c) {
     free(deck);
     return fail(c, "out of memory");
   }
-  rc = landyn_create(deck, over, &c->sim, msg, sizeof msg);
+  rc = landyn_create_named(deck, path, over, &c->sim, msg, sizeof msg);
   free(deck);
   free(over);
   if (rc != LANDYN_OK) return fail(c, "the deck is invalid:\n%s", msg);
