@@ -30,8 +30,6 @@ ALLOWED = {
         "issue 27: split pending (file owned by the API work)",
     ("output/landyn_health.f90", "check_health"):
         "issue 27: split pending (file owned by the API work)",
-    ("numerics/landyn_sim_model.f90", "setup_model"):
-        "issue 27: split pending (file owned by the API work)",
 }
 
 PROC_START = re.compile(
