@@ -28,8 +28,6 @@ ALLOWED = {
         "issue 27: split pending (file owned by the API work)",
     ("output/landyn_output.f90", "write_all"):
         "issue 27: split pending (file owned by the API work)",
-    ("output/landyn_health.f90", "check_health"):
-        "issue 27: split pending (file owned by the API work)",
 }
 
 PROC_START = re.compile(
