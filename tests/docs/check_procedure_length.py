@@ -26,8 +26,6 @@ MAX_LINES = 100
 ALLOWED = {
     ("numerics/landyn_sim_core.f90", "sim_evaluate"):
         "issue 27: split pending (file owned by the API work)",
-    ("output/landyn_output.f90", "write_all"):
-        "issue 27: split pending (file owned by the API work)",
 }
 
 PROC_START = re.compile(
