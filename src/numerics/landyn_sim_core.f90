@@ -21,7 +21,7 @@ module landyn_sim_core
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
   use landyn_contact, only: advance_contact_state
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, STAT_NON_FINITE
   use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
                               sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
                               max_primary_stroke
@@ -35,9 +35,6 @@ module landyn_sim_core
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
   public :: sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
   public :: n_energy, energy_names
-  public :: SIM_NON_FINITE
-
-  integer, parameter :: SIM_NON_FINITE = 4   !! from sim_accept when the solution became non-finite [-]
 
 contains
 
@@ -431,7 +428,7 @@ contains
   end subroutine record_sample
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
-  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = SIM_NON_FINITE = 4).
+  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = STAT_NON_FINITE).
   subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due, ev)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
@@ -476,7 +473,7 @@ contains
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then
-        stat = SIM_NON_FINITE
+        stat = STAT_NON_FINITE
         write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t, &
           ' s: the integration diverged (reduce &simulation dt or check the input)'
         call finish(model, res, t)
