@@ -133,8 +133,8 @@ program landyn_study_main
   if (app%quiet) progress = -1
   cmd = command_line()
   msg = ''
-  call run_study(study, progress, cmd, run_stat, msg)
-  if (run_stat == STAT_FILE) then
+  call run_study(study, progress, cmd, run_stat, stat, msg)
+  if (stat == STAT_FILE) then
     write (error_unit, '(a)') 'landyn_study: '//trim(msg)
     call terminate(EXIT_FILE)
   end if

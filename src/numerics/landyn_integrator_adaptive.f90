@@ -32,7 +32,7 @@ module landyn_integrator_adaptive
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
                              sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_NO_STEP
   use landyn_integrator, only: integrator_t
   use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_event_locator, only: event_fraction
@@ -40,9 +40,6 @@ module landyn_integrator_adaptive
   private
 
   public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change, weighted_max, predicted_field
-
-  integer, parameter :: NO_STEP = 4   !! from adaptive_step when no step down to dt_min succeeds (the value sim_accept
-                                      !! gives a non-finite state, SIM_NON_FINITE) [-]
 
   !> Adaptive integrator and its state between steps.
   type, extends(integrator_t) :: adaptive_integrator_t
@@ -175,7 +172,7 @@ contains
         cycle
       end if
       if (.not. ok) then
-        stat = max(stat, NO_STEP)
+        stat = STAT_NO_STEP
         write (errmsg, '(a,a,es10.3,a,es12.5,a,a)') trim(res%integrator), ' integrator: no step down to dt_min = ', &
           self%h_min, &
           ' s succeeds at t = ', self%t, ' s: ', trim(m2)

@@ -21,7 +21,7 @@ module landyn_sim_core
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
   use landyn_contact, only: advance_contact_state
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, STAT_NON_FINITE
   use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
                               sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
                               max_primary_stroke
@@ -35,9 +35,6 @@ module landyn_sim_core
   public :: sim_t, sim_snapshot_t, sim_eval_t, sim_init, sim_step, sim_save, sim_restore
   public :: sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
   public :: n_energy, energy_names
-  public :: SIM_NON_FINITE
-
-  integer, parameter :: SIM_NON_FINITE = 4   !! from sim_accept when the solution became non-finite [-]
 
 contains
 
@@ -139,30 +136,72 @@ contains
                                                       !! taken with the stored velocities advanced by v_lead
                                                       !! times the committed accelerations (the leapfrog's
                                                       !! velocities lag the positions by half a step); default 0 [s]
-    integer :: ng, i, ns, nq, pass, n_pass
-    logical :: on_demand
+    integer :: pass, n_pass
+    logical :: on_demand, thrusting
     type(body_t) :: body
-    logical :: thrusting, locked(max_struts)
-    real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
-    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), hslip
-    real(wp) :: field(3), ffoot(3), force(3), moment(3), fb_l(3), thrust_l(3), gf(3, max_gears), gm(3, max_gears)
-    character(len=msg_len) :: m2
+    real(wp) :: thrust_l(3)
 
     stat = STAT_OK
-    ng = sim%model%n_gears
     ev%t = t
     ev%dt = dt
+    ! the body as this evaluation sees it: its velocities led for the footpads, then its
+    ! accelerations for the legs' frame field and the new ones
+    body = sim%model%body
+    if (present(v_lead)) then
+      body%v = sim%model%body%v + v_lead*sim%model%body%acc
+      body%omega = sim%model%body%omega + v_lead*sim%model%body%alpha
+    end if
+    ! ---- Step 2: footpads and ground forces
+    call ground_forces(sim, t, body, ev, v_lead)
+    body%v = sim%model%body%v
+    body%omega = sim%model%body%omega
+    call engine_thrust(sim, inp, t, ev, thrusting, thrust_l)
+
+    ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
+    ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
+    ! evaluation's, an integrator may pass a better estimate.
+    if (present(acc_field)) body%acc = acc_field
+    if (present(alpha_field)) body%alpha = alpha_field
+    ! With frame_field_passes > 1 the gears are evaluated again in the field of the body
+    ! acceleration the previous pass gave (a fixed-point iteration of the body-leg coupling,
+    ! contracting by about the legs' mass over the body's), so that a lock's stopping force
+    ! reaches the other legs in the step it acts (docs/theory.md, "Frame field"). With 0 (the
+    ! adaptive integrator's own field) the field passed in is a prediction: a second pass only
+    ! where the first changed a lock; without one, two passes.
+    n_pass = inp%simulation%frame_field_passes
+    on_demand = n_pass == 0 .and. present(acc_field)
+    if (n_pass == 0) n_pass = 2
+    do pass = 1, n_pass
+      if (on_demand .and. pass == 2) then
+        if (.not. ev%locks_changed) exit
+      end if
+      call frame_field_pass(sim, inp, t, dt, thrusting, thrust_l, sim%loads .and. (pass == n_pass .or. on_demand), &
+                            body, ev, stat, errmsg)
+      if (stat /= 0) return
+    end do
+    ev%acc = body%acc
+    ev%alpha = body%alpha
+    ev%ovl = mtv3(sim%model%body%r, body%acc - sim%model%g_vec)/g_earth
+    ev%tilt = acos(max(-1.0_wp, min(1.0_wp, sim%model%body%r(3, 3))))
+  end subroutine sim_evaluate
+
+  !> Step 2 of an evaluation: per footpad its position and velocity, penetration, the trial footpad
+  !! state (committed with the step, sim_commit_discrete) and the ground force (contact and
+  !! friction laws) in the global frame.
+  subroutine ground_forces(sim, t, body, ev, v_lead)
+    type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
+    real(wp), intent(in) :: t                   !! time of the state [s]
+    type(body_t), intent(in) :: body            !! the body, its velocities led by v_lead [-]
+    type(sim_eval_t), intent(inout) :: ev       !! the evaluation: footpads and ground forces set [-]
+    real(wp), intent(in), optional :: v_lead    !! the gears' velocities are led by v_lead times the committed
+                                                !! accelerations (as sim_evaluate's); default 0 [s]
+    integer :: i, nq
+    real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
+    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), hslip
+
     associate (model => sim%model)
       r = model%body%r
-      ! the body as this evaluation sees it: its velocities led for the footpads, then its
-      ! accelerations for the legs' frame field and the new ones
-      body = model%body
-      if (present(v_lead)) then
-        body%v = model%body%v + v_lead*model%body%acc
-        body%omega = model%body%omega + v_lead*model%body%alpha
-      end if
-      ! ---- Step 2: footpads and ground forces
-      do i = 1, ng
+      do i = 1, model%n_gears
         rg = model%rot(:, :, i)
         if (present(v_lead)) then
           nq = model%n_q(i)
@@ -204,85 +243,97 @@ contains
         end if
         ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])
       end do
-      body%v = model%body%v
-      body%omega = model%body%omega
-      thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
-      thrust_l = 0.0_wp
-      if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
-      if (sim%ext_on) then
-        ! a caller's engine inputs (landyn_session): added to the deck's thrust
-        ev%thrust_g = mv3(r, thrust_l + sim%ext_force)
-        ev%ext_moment = sim%ext_moment
-      else
-        ev%thrust_g = mv3(r, thrust_l)
-      end if
-
-      ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
-      ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
-      ! evaluation's, an integrator may pass a better estimate.
-      if (present(acc_field)) body%acc = acc_field
-      if (present(alpha_field)) body%alpha = alpha_field
-      ! With frame_field_passes > 1 the gears are evaluated again in the field of the body
-      ! acceleration the previous pass gave (a fixed-point iteration of the body-leg coupling,
-      ! contracting by about the legs' mass over the body's), so that a lock's stopping force
-      ! reaches the other legs in the step it acts (docs/theory.md, "Frame field"). With 0 (the
-      ! adaptive integrator's own field) the field passed in is a prediction: a second pass only
-      ! where the first changed a lock; without one, two passes.
-      n_pass = inp%simulation%frame_field_passes
-      on_demand = n_pass == 0 .and. present(acc_field)
-      if (n_pass == 0) n_pass = 2
-      do pass = 1, n_pass
-        if (on_demand .and. pass == 2) then
-          if (.not. ev%locks_changed) exit
-        end if
-        force = model%body%mass*model%g_vec
-        moment = 0.0_wp
-        ev%locks_changed = .false.
-        ev%acc_field = body%acc
-        ev%alpha_field = body%alpha
-        do i = 1, ng
-          rg = model%rot(:, :, i)
-          field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
-          ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
-          call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), &
-                                       sim%loads .and. (pass == n_pass .or. on_demand))
-          if (stat /= 0) then
-            write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
-            return
-          end if
-          ns = model%n_struts(i)
-          nq = model%n_q(i)
-          associate (ge => ev%gear(i), g => model%gear(i)%g)
-            call g%locks(locked(1:ns))
-            if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
-            gf(:, i) = mv3(rg, ge%f_body)
-            gm(:, i) = mv3(rg, ge%m_body)
-            ev%qdd(1:nq, i) = ge%qdd(1:nq)
-            call g%strut_modes(ev%mode(1:ns, i), ge)
-            call g%coordinate_weights(ev%q_weight(1:nq, i))
-            call g%law_segments(ev%segment(1:ns, i))
-          end associate
-          ev%contact(i) = ev%delta(i) > 0.0_wp
-          ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
-        end do
-        fb_l = symmetric_sum(gf, ng)
-        force = force + mv3(r, fb_l)
-        moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
-        ! engine thrust (computed with the footpad forces above)
-        if (thrusting) then
-          moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
-        end if
-        if (sim%ext_on) moment = moment + cross3(inp%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
-        force = force + ev%thrust_g
-        ! ---- Step 6: body accelerations
-        call body_accelerations(body, force, moment)
-      end do
-      ev%acc = body%acc
-      ev%alpha = body%alpha
-      ev%ovl = mtv3(r, body%acc - model%g_vec)/g_earth
-      ev%tilt = acos(max(-1.0_wp, min(1.0_wp, r(3, 3))))
     end associate
-  end subroutine sim_evaluate
+  end subroutine ground_forces
+
+  !> The engine's thrust at t, lander axes, and the global thrust force with a caller's engine
+  !! inputs (landyn_session) added to the deck's.
+  subroutine engine_thrust(sim, inp, t, ev, thrusting, thrust_l)
+    type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    real(wp), intent(in) :: t                   !! time of the state [s]
+    type(sim_eval_t), intent(inout) :: ev       !! the evaluation: thrust_g (and ext_moment) set [-]
+    logical, intent(out) :: thrusting           !! the deck's engine thrusts at t [-]
+    real(wp), intent(out) :: thrust_l(3)        !! the deck's thrust at t, lander axes [N]
+
+    thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
+    thrust_l = 0.0_wp
+    if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
+    if (sim%ext_on) then
+      ! a caller's engine inputs (landyn_session): added to the deck's thrust
+      ev%thrust_g = mv3(sim%model%body%r, thrust_l + sim%ext_force)
+      ev%ext_moment = sim%ext_moment
+    else
+      ev%thrust_g = mv3(sim%model%body%r, thrust_l)
+    end if
+  end subroutine engine_thrust
+
+  !> One pass of Steps 3-4 and 6: every gear's crush logic and DAE in the frame field of the body's
+  !! present accelerations, the loads on the body (gears, gravity, thrust, a caller's inputs) and
+  !! the body's new accelerations.
+  subroutine frame_field_pass(sim, inp, t, dt, thrusting, thrust_l, loads, body, ev, stat, errmsg)
+    type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    real(wp), intent(in) :: t                   !! time of the state [s]
+    real(wp), intent(in) :: dt                  !! step to come [s]
+    logical, intent(in) :: thrusting            !! the deck's engine thrusts at t [-]
+    real(wp), intent(in) :: thrust_l(3)         !! the deck's thrust at t, lander axes [N]
+    logical, intent(in) :: loads                !! the gears record their interface loads [-]
+    type(body_t), intent(inout) :: body         !! the body: its accelerations, the field in, the new ones out [-]
+    type(sim_eval_t), intent(inout) :: ev       !! the evaluation: the gears' part and the field set [-]
+    integer, intent(out) :: stat                !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure [-]
+    integer :: ng, i, ns, nq
+    logical :: locked(max_struts)
+    real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), force(3), moment(3), fb_l(3), gf(3, max_gears), gm(3, max_gears)
+    character(len=msg_len) :: m2
+
+    stat = STAT_OK
+    ng = sim%model%n_gears
+    associate (model => sim%model)
+      r = model%body%r
+      force = model%body%mass*model%g_vec
+      moment = 0.0_wp
+      ev%locks_changed = .false.
+      ev%acc_field = body%acc
+      ev%alpha_field = body%alpha
+      do i = 1, ng
+        rg = model%rot(:, :, i)
+        field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
+        ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
+        call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), loads)
+        if (stat /= 0) then
+          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+          return
+        end if
+        ns = model%n_struts(i)
+        nq = model%n_q(i)
+        associate (ge => ev%gear(i), g => model%gear(i)%g)
+          call g%locks(locked(1:ns))
+          if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
+          gf(:, i) = mv3(rg, ge%f_body)
+          gm(:, i) = mv3(rg, ge%m_body)
+          ev%qdd(1:nq, i) = ge%qdd(1:nq)
+          call g%strut_modes(ev%mode(1:ns, i), ge)
+          call g%coordinate_weights(ev%q_weight(1:nq, i))
+          call g%law_segments(ev%segment(1:ns, i))
+        end associate
+        ev%contact(i) = ev%delta(i) > 0.0_wp
+        ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
+      end do
+      fb_l = symmetric_sum(gf, ng)
+      force = force + mv3(r, fb_l)
+      moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
+      ! engine thrust (computed with the footpad forces above)
+      if (thrusting) then
+        moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
+      end if
+      if (sim%ext_on) moment = moment + cross3(inp%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
+      force = force + ev%thrust_g
+      ! ---- Step 6: body accelerations
+      call body_accelerations(body, force, moment)
+    end associate
+  end subroutine frame_field_pass
 
   !> Books an accepted evaluation: the work of the ground forces and the thrust since the previous
   !! booked evaluation (trapezoidal rule: the scheme is the leapfrog, positions at t, stored
@@ -377,7 +428,7 @@ contains
   end subroutine record_sample
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
-  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = SIM_NON_FINITE = 4).
+  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = STAT_NON_FINITE).
   subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due, ev)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
@@ -422,7 +473,7 @@ contains
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then
-        stat = SIM_NON_FINITE
+        stat = STAT_NON_FINITE
         write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t, &
           ' s: the integration diverged (reduce &simulation dt or check the input)'
         call finish(model, res, t)

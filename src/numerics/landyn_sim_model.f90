@@ -146,21 +146,36 @@ contains
   !! tripod gears (landyn_tripod_gear); gears of any other type given in `gears` take the place of
   !! the input's (in the gear frames the input defines), before the lander is placed.
   subroutine setup_model(inp, model, stat, errmsg, gears)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
-    type(model_t), intent(out) :: model         !! model at t = 0
-    integer, intent(out) :: stat                !! 0 on success, STAT_INPUT when a gear exceeds the capacities
-    character(len=*), intent(inout) :: errmsg   !! message on failure
-    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i
-    type(gear_geometry_t) :: geom
-    type(strut_mass_t) :: sm(3)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(model_t), intent(out) :: model         !! model at t = 0 [-]
+    integer, intent(out) :: stat                !! 0 on success, STAT_INPUT when a gear exceeds the capacities [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i [-]
     type(tube_friction_t) :: tube
-    real(wp) :: rot(3, 3), pts(3, 6), x_ol(3), dz, xd(3), pos(3), vel(3)
-    integer :: i
-    character(len=msg_len) :: m2
 
     stat = STAT_OK
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
+    call make_laws(inp, model, tube, stat, errmsg)
+    if (stat /= 0) return
+    call build_tripod_gears(inp, tube, model, stat, errmsg)
+    if (stat /= 0) return
+    if (present(gears)) call replace_gears(gears, model)
+    call check_gear_capacities(model, stat, errmsg)
+    if (stat /= 0) return
+    call place_lander(inp, model, stat, errmsg)
+  end subroutine setup_model
+
+  !> The laws of the model (contact, friction, terrain planes), its footpad states at rest, and
+  !! the primary struts' tube friction the gears are built with.
+  subroutine make_laws(inp, model, tube, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(model_t), intent(inout) :: model       !! model with n_gears set; its laws, planes, footpads are set [-]
+    type(tube_friction_t), intent(out) :: tube  !! the primary struts' tube friction [-]
+    integer, intent(out) :: stat                !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    character(len=msg_len) :: m2
+
     call make_contact_law(inp%contact, model%contact, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
     call make_friction_law(inp%friction, model%friction, stat, m2)
@@ -172,7 +187,22 @@ contains
     if (stat /= 0) then; errmsg = m2; return; end if
     call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
+  end subroutine make_laws
 
+  !> The input's gears, tripods (landyn_tripod_gear), in the model with their counts cached.
+  subroutine build_tripod_gears(inp, tube, model, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(tube_friction_t), intent(in) :: tube   !! the primary struts' tube friction [-]
+    type(model_t), intent(inout) :: model       !! model with n_gears set; its gears are set [-]
+    integer, intent(out) :: stat                !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(gear_geometry_t) :: geom
+    type(strut_mass_t) :: sm(3)
+    real(wp) :: rot(3, 3), pts(3, 6)
+    integer :: i
+    character(len=msg_len) :: m2
+
+    stat = STAT_OK
     sm(1) = strut_mass_t(inp%primary%outer_mass, inp%primary%outer_cm, inp%primary%outer_inertia, &
                          inp%primary%inner_mass, inp%primary%inner_cm, inp%primary%inner_inertia, &
                          inp%primary%footpad_mass)
@@ -208,14 +238,28 @@ contains
       end block
       call gear_counts(model, i)
     end do
-    if (present(gears)) then
-      do i = 1, min(model%n_gears, size(gears))
-        if (.not. allocated(gears(i)%g)) cycle
-        deallocate (model%gear(i)%g)
-        allocate (model%gear(i)%g, source=gears(i)%g)
-        call gear_counts(model, i)
-      end do
-    end if
+  end subroutine build_tripod_gears
+
+  !> Gear i of `gears`, where allocated, takes the place of the model's gear i.
+  subroutine replace_gears(gears, model)
+    type(gear_slot_t), intent(in) :: gears(:)   !! replacing gears [-]
+    type(model_t), intent(inout) :: model       !! model with its gears set [-]
+    integer :: i
+    do i = 1, min(model%n_gears, size(gears))
+      if (.not. allocated(gears(i)%g)) cycle
+      deallocate (model%gear(i)%g)
+      allocate (model%gear(i)%g, source=gears(i)%g)
+      call gear_counts(model, i)
+    end do
+  end subroutine replace_gears
+
+  !> STAT_INPUT when a gear has more struts or coordinates than the evaluation records hold.
+  subroutine check_gear_capacities(model, stat, errmsg)
+    type(model_t), intent(in) :: model          !! model with its gears set [-]
+    integer, intent(out) :: stat                !! 0 when all fit, STAT_INPUT otherwise [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    integer :: i
+    stat = STAT_OK
     do i = 1, model%n_gears
       if (model%n_struts(i) > max_struts .or. model%n_q(i) > max_gear_q) then
         stat = STAT_INPUT
@@ -224,8 +268,19 @@ contains
         return
       end if
     end do
+  end subroutine check_gear_capacities
 
-    ! Placement: the given position, or the lowest footpad at `clearance` above its surface.
+  !> Places the lander at t = 0: at the given position, or with the lowest footpad at `clearance`
+  !! above its surface; free fall, and the legs' first moments at rest.
+  subroutine place_lander(inp, model, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(model_t), intent(inout) :: model       !! model with its gears and planes set; its body is set [-]
+    integer, intent(out) :: stat                !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    real(wp) :: x_ol(3), dz, xd(3), pos(3), vel(3)
+    integer :: i
+    character(len=msg_len) :: m2
+
     if (all(is_set(inp%initial%position))) then
       x_ol = inp%initial%position
     else
@@ -253,7 +308,7 @@ contains
     do i = 1, model%n_gears
       call model%gear(i)%g%leg_momentum(pos, model%first_moment0(:, i), dz)
     end do
-  end subroutine setup_model
+  end subroutine place_lander
 
   !> Caches gear i's rotation, strut and coordinate counts in the model (after the gear is set or
   !! replaced; before its first evaluation).

@@ -68,28 +68,51 @@ contains
     type(landyn_input_t), intent(in) :: inp    !! resolved, validated input [-]
     type(sim_result_t), intent(in) :: res      !! finished run [-]
     type(health_t), intent(out) :: h           !! outcome [-]
-    real(wp) :: legs, ratio, d, worst, r
-    integer :: i, j, ng, n, ig, k
-    character(len=64) :: b1, b2
+    integer :: ng, n
 
     h%messages = ''
     ng = inp%gears%n_gears
+    call check_leg_mass(inp, ng, h)
+    call check_gear_separation(inp, ng, h)
+    n = res%n_out
+    call check_initial_penetration(res, ng, n, h)
+    call check_strut_lengths(res, ng, n, h)
+    if (n < 1) return   ! input checks only
+    call check_energy_residual(res, h)
+    call check_finite_peaks(res, h)
+  end subroutine check_health
 
-    ! ---- 1 leg mass against the total mass
+  !> Check 1: the legs' mass against the total mass.
+  subroutine check_leg_mass(inp, ng, h)
+    type(landyn_input_t), intent(in) :: inp    !! resolved, validated input [-]
+    integer, intent(in) :: ng                  !! number of gears [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    real(wp) :: legs, ratio
+    character(len=64) :: b1, b2
+
     legs = real(ng, wp)*(inp%primary%outer_mass + inp%primary%inner_mass + inp%primary%footpad_mass + &
                          2.0_wp*(inp%secondary%outer_mass + inp%secondary%inner_mass))
     ratio = legs/inp%lander%mass
     write (b1, '(es10.3)') legs
     write (b2, '(f0.1)') 100.0_wp*ratio
     if (ratio >= leg_mass_fail) then
-      call put(1, health_fail, 'the legs weigh '//trim(adjustl(b1))//' kg, '//trim(b2)//' % of &lander mass '// &
+      call put(h, 1, health_fail, 'the legs weigh '//trim(adjustl(b1))//' kg, '//trim(b2)//' % of &lander mass '// &
                '(which includes them); at least 50 % is meaningless for a body carried by legs')
     else if (ratio > leg_mass_warn) then
-      call put(1, health_warn, 'the legs weigh '//trim(adjustl(b1))//' kg, '//trim(b2)//' % of &lander mass; '// &
+      call put(h, 1, health_warn, 'the legs weigh '//trim(adjustl(b1))//' kg, '//trim(b2)//' % of &lander mass; '// &
                'above 25 % the legs'' inertia dominates the body''s')
     end if
+  end subroutine check_leg_mass
 
-    ! ---- 2 coincident or stacked gears (upper joints a or footpad joints d too close)
+  !> Check 2: coincident or stacked gears (upper joints a or footpad joints d too close).
+  subroutine check_gear_separation(inp, ng, h)
+    type(landyn_input_t), intent(in) :: inp    !! resolved, validated input [-]
+    integer, intent(in) :: ng                  !! number of gears [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    real(wp) :: d, worst
+    integer :: i, j
+    character(len=64) :: b1, b2
+
     worst = huge(1.0_wp)
     do i = 1, ng - 1
       do j = i + 1, ng
@@ -103,83 +126,109 @@ contains
     end do
     if (worst < gear_separation_min) then
       write (b2, '(es10.3)') worst
-      call put(2, health_fail, 'gears '//trim(b1)//' coincide (joints a or d '//trim(adjustl(b2))// &
+      call put(h, 2, health_fail, 'gears '//trim(b1)//' coincide (joints a or d '//trim(adjustl(b2))// &
                ' m apart; at least 0.05 m): stacked legs, check &gears rotation and points')
     end if
+  end subroutine check_gear_separation
 
-    ! ---- 3 initial penetration (first stored sample)
-    n = res%n_out
-    if (n >= 1 .and. allocated(res%penetration)) then
-      ! (finiteness first: comparing a NaN traps in Debug builds)
-      if (all(ieee_is_finite(res%penetration(1:ng, 1)))) then
-        r = maxval(res%penetration(1:ng, 1))
-      else
-        r = huge(1.0_wp)
-      end if
-      if (r > initial_penetration_max) then
-        write (b1, '(es10.3)') r
-        call put(3, health_fail, 'a footpad starts '//trim(adjustl(b1))//' m below the ground (at most 1 mm): '// &
-                 'check &initial_state position and &terrain')
-      end if
+  !> Check 3: initial penetration (first stored sample).
+  subroutine check_initial_penetration(res, ng, n, h)
+    type(sim_result_t), intent(in) :: res      !! finished run [-]
+    integer, intent(in) :: ng                  !! number of gears [-]
+    integer, intent(in) :: n                   !! stored samples [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    real(wp) :: r
+    character(len=64) :: b1
+
+    if (n < 1 .or. .not. allocated(res%penetration)) return
+    ! (finiteness first: comparing a NaN traps in Debug builds)
+    if (all(ieee_is_finite(res%penetration(1:ng, 1)))) then
+      r = maxval(res%penetration(1:ng, 1))
+    else
+      r = huge(1.0_wp)
     end if
+    if (r > initial_penetration_max) then
+      write (b1, '(es10.3)') r
+      call put(h, 3, health_fail, 'a footpad starts '//trim(adjustl(b1))//' m below the ground (at most 1 mm): '// &
+               'check &initial_state position and &terrain')
+    end if
+  end subroutine check_initial_penetration
 
-    ! ---- 4 strut lengths within their geometry (positive and finite at every stored sample)
-    if (n >= 1 .and. allocated(res%strut_length)) then
-      do ig = 1, ng
-        do k = 1, size(res%strut_length, 1)
-          if (all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
-            r = minval(res%strut_length(k, ig, 1:n))
-          else
-            r = -huge(1.0_wp)
-          end if
-          if (r <= 0.0_wp) then
-            write (b1, '(es10.3)') r
-            write (b2, '(i0,a,i0)') ig, ', strut ', k
-            call put(4, health_fail, 'gear '//trim(b2)//': strut length reaches '//trim(adjustl(b1))// &
-                     ' m (must stay positive): the stroke exceeds the strut''s geometry; check &primary_strut '// &
-                     'stage_end and &secondary_strut strokes')
-          end if
-        end do
+  !> Check 4: strut lengths within their geometry (positive and finite at every stored sample).
+  subroutine check_strut_lengths(res, ng, n, h)
+    type(sim_result_t), intent(in) :: res      !! finished run [-]
+    integer, intent(in) :: ng                  !! number of gears [-]
+    integer, intent(in) :: n                   !! stored samples [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    real(wp) :: r
+    integer :: ig, k
+    character(len=64) :: b1, b2
+
+    if (n < 1 .or. .not. allocated(res%strut_length)) return
+    do ig = 1, ng
+      do k = 1, size(res%strut_length, 1)
+        if (all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
+          r = minval(res%strut_length(k, ig, 1:n))
+        else
+          r = -huge(1.0_wp)
+        end if
+        if (r <= 0.0_wp) then
+          write (b1, '(es10.3)') r
+          write (b2, '(i0,a,i0)') ig, ', strut ', k
+          call put(h, 4, health_fail, 'gear '//trim(b2)//': strut length reaches '//trim(adjustl(b1))// &
+                   ' m (must stay positive): the stroke exceeds the strut''s geometry; check &primary_strut '// &
+                   'stage_end and &secondary_strut strokes')
+        end if
       end do
-    end if
+    end do
+  end subroutine check_strut_lengths
 
-    if (n < 1) return   ! input checks only
+  !> Check 5: the energy audit's residual.
+  subroutine check_energy_residual(res, h)
+    type(sim_result_t), intent(in) :: res      !! finished run [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    real(wp) :: r
+    character(len=64) :: b1
 
-    ! ---- 5 energy audit
     r = abs(res%energy_residual)
     if (.not. ieee_is_finite(res%energy_residual)) r = huge(1.0_wp)
     write (b1, '(es10.3)') 100.0_wp*res%energy_residual
     if (r > residual_fail) then
-      call put(5, health_fail, 'energy residual '//trim(adjustl(b1))//' % of the energy input (at most 10 %): '// &
+      call put(h, 5, health_fail, 'energy residual '//trim(adjustl(b1))//' % of the energy input (at most 10 %): '// &
                'the run does not conserve energy; reduce dt')
     else if (r > residual_warn) then
-      call put(5, health_warn, 'energy residual '//trim(adjustl(b1))//' % of the energy input (above 1 %); '// &
+      call put(h, 5, health_warn, 'energy residual '//trim(adjustl(b1))//' % of the energy input (above 1 %); '// &
                'consider a smaller dt')
     end if
+  end subroutine check_energy_residual
 
-    ! ---- 6 finite, plausible peaks
+  !> Check 6: finite, plausible peaks.
+  subroutine check_finite_peaks(res, h)
+    type(sim_result_t), intent(in) :: res      !! finished run [-]
+    type(health_t), intent(inout) :: h         !! outcome so far [-]
+    character(len=64) :: b1
+
     if (.not. ieee_is_finite(res%peak_overload) .or. .not. ieee_is_finite(res%energy_input)) then
-      call put(6, health_fail, 'peak overload or energy input is not finite')
+      call put(h, 6, health_fail, 'peak overload or energy input is not finite')
     else if (res%peak_overload > overload_warn) then
       write (b1, '(es10.3)') res%peak_overload
-      call put(6, health_warn, 'peak overload '//trim(adjustl(b1))//' g (above 1000 g): implausible for a lander')
+      call put(h, 6, health_warn, 'peak overload '//trim(adjustl(b1))//' g (above 1000 g): implausible for a lander')
     end if
+  end subroutine check_finite_peaks
 
-  contains
-
-    !> Records a check that did not pass: its level and a message line.
-    subroutine put(c, level, text)
-      integer, intent(in) :: c               !! check index [-]
-      integer, intent(in) :: level           !! health_warn or health_fail [-]
-      character(len=*), intent(in) :: text   !! what is wrong [-]
-      if (level < h%result(c)) return
-      if (h%result(c) /= health_ok .and. level == h%result(c)) return   ! one message per check
-      h%result(c) = level
-      if (len(h%messages) > 0) h%messages = h%messages//new_line('a')
-      h%messages = h%messages//merge('FAILED ', 'warning', level == health_fail)//' '//trim(check_names(c))// &
-                   ': '//text
-    end subroutine put
-  end subroutine check_health
+  !> Records a check that did not pass: its level and a message line.
+  subroutine put(h, c, level, text)
+    type(health_t), intent(inout) :: h     !! outcome so far [-]
+    integer, intent(in) :: c               !! check index [-]
+    integer, intent(in) :: level           !! health_warn or health_fail [-]
+    character(len=*), intent(in) :: text   !! what is wrong [-]
+    if (level < h%result(c)) return
+    if (h%result(c) /= health_ok .and. level == h%result(c)) return   ! one message per check
+    h%result(c) = level
+    if (len(h%messages) > 0) h%messages = h%messages//new_line('a')
+    h%messages = h%messages//merge('FAILED ', 'warning', level == health_fail)//' '//trim(check_names(c))// &
+                 ': '//text
+  end subroutine put
 
   !> The checks that did not pass, one line each with a prefix, on a unit (nothing when all pass).
   subroutine write_health(unit, prefix, h)

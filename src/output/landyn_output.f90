@@ -73,17 +73,35 @@ contains
 
   !> Root attributes, /meta (write_meta and the run's deck), /timeseries and /summary of a run.
   subroutine write_all(f, inp, res, command_line, stat, errmsg, program)
-    type(h5_file_t), intent(inout) :: f            !! open file
-    type(landyn_input_t), intent(in) :: inp        !! resolved input
-    type(sim_result_t), intent(in) :: res          !! results
-    character(len=*), intent(in) :: command_line   !! command line
-    integer, intent(out) :: stat                   !! 0 on success
-    character(len=*), intent(inout) :: errmsg      !! message
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
+    type(sim_result_t), intent(in) :: res          !! results [-]
+    character(len=*), intent(in) :: command_line   !! command line [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
     character(len=*), intent(in) :: program        !! producer's program name, blank for landyn [-]
-    integer :: n, k
-    n = res%n_out
 
-    ! ---- root attributes and /meta (provenance)
+    call write_root_and_meta(f, inp, command_line, stat, errmsg, program)
+    if (stat /= 0) return
+    call write_timeseries(f, res, stat, errmsg)
+    if (stat /= 0) return
+    call write_summary_crush(f, res, stat, errmsg)
+    if (stat /= 0) return
+    call write_summary_peaks(f, res, stat, errmsg)
+    if (stat /= 0) return
+    call write_summary_integration(f, res, stat, errmsg)
+    if (stat /= 0) return
+    call write_outcome_group(f, res, stat, errmsg)
+  end subroutine write_all
+
+  !> Root attributes (title, schema version) and /meta: provenance (write_meta) and the run's deck.
+  subroutine write_root_and_meta(f, inp, command_line, stat, errmsg, program)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
+    character(len=*), intent(in) :: command_line   !! command line [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    character(len=*), intent(in) :: program        !! producer's program name, blank for landyn [-]
     call h5_write_attr(f, '/', 'title', trim(inp%simulation%title), stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
     call write_meta(f, program, command_line, stat, errmsg); if (stat /= 0) return
@@ -94,8 +112,16 @@ contains
                   description='fully resolved input as a namelist deck (angles in degrees)'); if (stat /= 0) return
     call h5_write(f, '/meta/units', 'SI (m, kg, s, N, J); angles in deg; overload in g = 9.80665 m/s^2; '// &
                   'global frame z down', '-', stat, errmsg); if (stat /= 0) return
+  end subroutine write_root_and_meta
 
-    ! ---- /timeseries
+  !> /timeseries: the body's and the gears' histories, the energy audit's terms, the interface loads.
+  subroutine write_timeseries(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(sim_result_t), intent(in) :: res          !! results [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    integer :: n, k
+    n = res%n_out
     call h5_write(f, '/timeseries/time', res%t(1:n), 's', stat, errmsg); if (stat /= 0) return
     call h5_write(f, '/timeseries/body/position', res%position(:, 1:n), 'm', stat, errmsg, &
       description='lander-frame origin O_L, global frame (z down), shape (n, 3)'); if (stat /= 0) return
@@ -142,8 +168,14 @@ contains
     end do
     call write_interface_loads(f, res, stat, errmsg)
     if (stat /= 0) return
+  end subroutine write_timeseries
 
-    ! ---- /summary
+  !> /summary: the struts' crush, strokes and crush-mode changes.
+  subroutine write_summary_crush(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(sim_result_t), intent(in) :: res          !! results [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
     call h5_write(f, '/summary/crush_length', res%crush_net, 'm', stat, errmsg, &
       description='signed net crush per gear and strut, shape (n_gears, 3): primary, secondary left, '// &
                   'secondary right; primary shortening and secondary lengthening positive (Table 3 sense)')
@@ -161,6 +193,16 @@ contains
     call h5_write(f, '/summary/mode_switches', res%mode_switches, '-', stat, errmsg, &
       description='number of crush-mode changes per strut (locked, crushing, sliding freely; each direction)')
     if (stat /= 0) return
+  end subroutine write_summary_crush
+
+  !> /summary: peaks, the final state, the end reason and the energy audit.
+  subroutine write_summary_peaks(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(sim_result_t), intent(in) :: res          !! results [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
+    integer :: n, k
+    n = res%n_out
     call h5_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg, &
       description='largest |axial force| over all steps'); if (stat /= 0) return
     call h5_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
@@ -186,6 +228,14 @@ contains
         description='final value of /timeseries/energy/'//trim(energy_names(k)))
       if (stat /= 0) return
     end do
+  end subroutine write_summary_peaks
+
+  !> /summary: constraint violations, time, steps, /summary/integrator and the wall time.
+  subroutine write_summary_integration(f, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(sim_result_t), intent(in) :: res          !! results [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message [-]
     call h5_write(f, '/summary/max_constraint_violation', res%max_violation, 'm', stat, errmsg, &
       description='largest constraint violation after correction'); if (stat /= 0) return
     call h5_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg, &
@@ -213,8 +263,7 @@ contains
     call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &
       description='largest accepted step'); if (stat /= 0) return
     call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
-    call write_outcome_group(f, res, stat, errmsg)
-  end subroutine write_all
+  end subroutine write_summary_integration
 
   !> The outcome under /summary/outcome (docs/output.md, "Outcome"; landyn_outcome).
   subroutine write_outcome_group(f, res, stat, errmsg)

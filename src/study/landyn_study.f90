@@ -409,22 +409,26 @@ contains
   ! ================================================================ running
 
   !> Run every prepared (case, variant). `progress_unit` < 0 silences the progress lines.
-  !! stat: the worst run status (landyn_run's worse_status: status_failed before status_unhealthy
-  !! before status_no_touchdown before STAT_OK; the records say which runs), or STAT_FILE when a kept
-  !! result file could not be written.
-  subroutine run_study(study, progress_unit, command_line, stat, errmsg)
-    type(study_t), intent(inout) :: study        !! prepared study; runs are filled in
+  !! Two statuses of two kinds: `stat`, the library status (landyn_status STAT_*): STAT_OK, or
+  !! STAT_FILE when a kept result file could not be written (the study stops there); `worst`, a run
+  !! status (the program kind, EXIT_* as landyn_run's run_case): the worst of the runs so far
+  !! (landyn_run's worse_status: status_failed before status_unhealthy before status_no_touchdown
+  !! before status_ok; the records say which runs).
+  subroutine run_study(study, progress_unit, command_line, worst, stat, errmsg)
+    type(study_t), intent(inout) :: study        !! prepared study; runs are filled in [-]
     integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none [-]
     character(len=*), intent(in) :: command_line !! command line (stored in kept result files) [-]
-    integer, intent(out) :: stat                 !! STAT_OK, status_failed, status_unhealthy, status_no_touchdown
-                                                 !! or STAT_FILE [-]
-    character(len=*), intent(inout) :: errmsg    !! message of a file failure
+    integer, intent(out) :: worst                !! worst run status: status_ok, status_failed, status_unhealthy
+                                                 !! or status_no_touchdown (EXIT_* values) [-]
+    integer, intent(out) :: stat                 !! STAT_OK, or STAT_FILE when a kept result file is not written [-]
+    character(len=*), intent(inout) :: errmsg    !! message of a file failure [-]
     type(sim_result_t) :: res
     type(health_t) :: health
     integer :: c, v, k, n, st
     logical :: ran
     character(len=msg_len) :: msg
     stat = STAT_OK
+    worst = status_ok
     k = 0
     n = study%n_cases*study%n_variants
     do v = 1, study%n_variants
@@ -445,10 +449,10 @@ contains
             r%message = msg
             if (st == status_unhealthy) r%message = 'run-health check failed: '//health%messages
             r%crush = reshape([ieee_value(1.0_wp, ieee_quiet_nan)], [1, 1])
-            stat = worse_status(stat, st)
+            worst = worse_status(worst, st)
           else
             r%status = st
-            stat = worse_status(stat, st)
+            worst = worse_status(worst, st)
             if (st == status_unhealthy) then
               r%message = 'run-health check failed: '//health%messages
             else if (st == status_no_touchdown) then
