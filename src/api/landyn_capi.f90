@@ -120,11 +120,8 @@ contains
     type(handle_t), pointer :: h
     character(len=:), allocatable :: text
     integer :: stat
-    call handle_of(sim, h, rc)
-    if (rc /= api_ok) then
-      call put_text('landyn_set_input: not a live LANDYN handle', msg, msg_len)
-      return
-    end if
+    call handle_of(sim, h, rc, 'landyn_set_input', msg, msg_len)
+    if (rc /= api_ok) return
     call session_set_input(h%s, c_vector(force), c_vector(moment), stat, text)
     call put_text(text, msg, msg_len)
     rc = int(stat, c_int)
@@ -140,11 +137,8 @@ contains
     type(handle_t), pointer :: h
     character(len=:), allocatable :: text
     integer :: stat
-    call handle_of(sim, h, rc)
-    if (rc /= api_ok) then
-      call put_text('landyn_advance_to: not a live LANDYN handle', msg, msg_len)
-      return
-    end if
+    call handle_of(sim, h, rc, 'landyn_advance_to', msg, msg_len)
+    if (rc /= api_ok) return
     call session_advance_to(h%s, real(t, wp), stat, text)
     call put_text(text, msg, msg_len)
     rc = int(stat, c_int)
@@ -224,11 +218,8 @@ contains
     type(handle_t), pointer :: h
     real(c_double), pointer :: v(:)
     integer :: m
-    call handle_of(sim, h, rc)
-    if (rc /= api_ok) then
-      call put_text('landyn_get_outputs: not a live LANDYN handle', msg, msg_len)
-      return
-    end if
+    call handle_of(sim, h, rc, 'landyn_get_outputs', msg, msg_len)
+    if (rc /= api_ok) return
     m = size(h%s%values)
     if (.not. c_associated(values) .or. n < m) then
       rc = api_err_input
@@ -253,11 +244,8 @@ contains
     real(c_double), pointer :: vp
     character(len=:), allocatable :: key, closest
     integer :: k
-    call handle_of(sim, h, rc)
-    if (rc /= api_ok) then
-      call put_text('landyn_get_output: not a live LANDYN handle', msg, msg_len)
-      return
-    end if
+    call handle_of(sim, h, rc, 'landyn_get_output', msg, msg_len)
+    if (rc /= api_ok) return
     if (.not. c_associated(value)) then
       rc = api_err_input
       call put_text('landyn_get_output: value is NULL', msg, msg_len)
@@ -285,11 +273,8 @@ contains
     type(handle_t), pointer :: h
     character(len=:), allocatable :: text
     integer :: stat
-    call handle_of(sim, h, rc)
-    if (rc /= api_ok) then
-      call put_text('landyn_write_result: not a live LANDYN handle', msg, msg_len)
-      return
-    end if
+    call handle_of(sim, h, rc, 'landyn_write_result', msg, msg_len)
+    if (rc /= api_ok) return
     call session_write(h%s, c_text(path), stat, text)
     call put_text(text, msg, msg_len)
     rc = int(stat, c_int)
@@ -298,19 +283,25 @@ contains
   ! ---------------------------------------------------------------- helpers
 
   !> The handle behind a C pointer: api_ok and h associated when it is live, else api_err_handle.
-  subroutine handle_of(p, h, rc)
+  subroutine handle_of(p, h, rc, caller, msg, msg_len)
     type(c_ptr), intent(in) :: p                   !! the caller's pointer [-]
     type(handle_t), pointer, intent(out) :: h      !! the handle, null unless live [-]
     integer(c_int), intent(out) :: rc              !! api_ok or api_err_handle [-]
+    character(len=*), intent(in), optional :: caller       !! the C function, for the message [-]
+    type(c_ptr), intent(in), optional :: msg               !! char *: message buffer (with caller) [-]
+    integer(c_size_t), intent(in), optional :: msg_len     !! its size in bytes [-]
     h => null()
     rc = api_err_handle
-    if (.not. c_associated(p)) return
-    call c_f_pointer(p, h)
-    if (h%magic /= magic_live) then
+    if (c_associated(p)) then
+      call c_f_pointer(p, h)
+      if (h%magic == magic_live) then
+        rc = api_ok
+        return
+      end if
       h => null()
-      return
     end if
-    rc = api_ok
+    if (present(caller) .and. present(msg) .and. present(msg_len)) &
+      call put_text(caller//': not a live LANDYN handle', msg, msg_len)
   end subroutine handle_of
 
   !> A NUL-terminated C string as Fortran text ('' for NULL).
