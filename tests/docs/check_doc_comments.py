@@ -17,7 +17,7 @@ import sys
 DECL = re.compile(r"^\s*(real|integer|logical|character|complex|type\s*\(|class\s*\(|procedure\s*\()", re.I)
 PROC_START = re.compile(
     r"^\s*((pure|elemental|impure|recursive|module|non_recursive)\s+)*"
-    r"((real|integer|logical|character|complex|type|class)(\s*\([^)]*\))?\s+)?"
+    r"((real|integer|logical|character|complex|double\s+precision|type|class)(\s*\([^)]*\))?\s+)?"
     r"(subroutine|function)\s+(\w+)", re.I)
 MODPROC_START = re.compile(r"^\s*module\s+procedure\s+(\w+)\s*$", re.I)
 PROC_END = re.compile(r"^\s*end\s*(subroutine|function|procedure)\b", re.I)

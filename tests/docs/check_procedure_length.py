@@ -25,31 +25,17 @@ MAX_LINES = 100
 # (file relative to src/, procedure name) -> the reason it remains over the limit
 ALLOWED = {}   # none since issue 27: every procedure of src/ has at most MAX_LINES lines
 
-PROC_START = re.compile(
-    r"^\s*((pure|elemental|impure|recursive|non_recursive|module)\s+)*"
-    r"((real|integer|logical|character|complex|double\s+precision|type|class)(\s*\([^)]*\))?\s+)?"
-    r"(subroutine|function)\s+(\w+)", re.I)
-MODPROC_START = re.compile(r"^\s*module\s+procedure\s+(\w+)\s*$", re.I)
-PROC_END = re.compile(r"^\s*end\s*(subroutine|function|procedure)\b", re.I)
+# the Fortran statement patterns and comment splitting of the doc-comment check (one reading of a source)
+from check_doc_comments import IFACE_END, IFACE_START, MODPROC_START, PROC_END, PROC_START, code_and_comment  # noqa: E402
+
 BARE_END = re.compile(r"^\s*end\s*$", re.I)
 UNIT_START = re.compile(r"^\s*(module|submodule\s*\([^)]*\)|program|block\s*data)\s+(\w+)\s*$", re.I)
 UNIT_END = re.compile(r"^\s*end\s*(module|submodule|program|block\s*data)\b", re.I)
-IFACE_START = re.compile(r"^\s*(abstract\s+)?interface\b", re.I)
-IFACE_END = re.compile(r"^\s*end\s*interface\b", re.I)
 
 
 def code_of(line):
     """The code of a line: up to a `!` outside quotes."""
-    quote = None
-    for i, ch in enumerate(line):
-        if quote:
-            if ch == quote:
-                quote = None
-        elif ch in "'\"":
-            quote = ch
-        elif ch == "!":
-            return line[:i]
-    return line
+    return code_and_comment(line)[0]
 
 
 def statements(lines):
