@@ -23,5 +23,6 @@ configure_file(${CMAKE_SOURCE_DIR}/cmake/landyn_integrator_names.f90.in
                ${CMAKE_BINARY_DIR}/generated/landyn_integrator_names.f90 @ONLY)
 configure_file(${CMAKE_SOURCE_DIR}/cmake/landyn_integrators.f90.in
                ${CMAKE_BINARY_DIR}/generated/landyn_integrators.f90 @ONLY)
-set(LANDYN_INTEGRATOR_GENERATED ${CMAKE_BINARY_DIR}/generated/landyn_integrator_names.f90
-    ${CMAKE_BINARY_DIR}/generated/landyn_integrators.f90)
+# The names belong to the layer config (the input types' choices), make_integrator to numerics.
+set(LANDYN_INTEGRATOR_NAMES_SOURCE ${CMAKE_BINARY_DIR}/generated/landyn_integrator_names.f90)
+set(LANDYN_INTEGRATOR_FACTORY_SOURCE ${CMAKE_BINARY_DIR}/generated/landyn_integrators.f90)

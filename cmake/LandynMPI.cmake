@@ -1,8 +1,9 @@
 # MPI campaigns: the landyn_batch program (docs/campaign.md).
 #
 # Included from the top-level CMakeLists.txt after the landyn executable. Builds
-#   landyn_campaign_lib  the campaign modules of src/campaign/ (deck, cases, summary file, MPI driver),
-#                        linked with landyn_lib and MPI; the serial landyn_lib does not depend on MPI;
+#   landyn_campaign_lib  the campaign modules of src/campaign/ (deck, cases, summary file, MPI driver;
+#                        the layer landyn_layer_campaign), linked with landyn_lib and MPI; the serial
+#                        landyn_lib does not depend on MPI;
 #   landyn_batch         src/app/landyn_batch.f90.
 # LANDYN_WITH_MPI (default ON when an MPI with the Fortran mpi_f08 module is found) switches it on.
 # For the campaign tests it sets LANDYN_MPIEXEC (launcher and flags as a list) and
@@ -25,14 +26,13 @@ if(LANDYN_WITH_MPI)
   endif()
   message(STATUS "LANDYN campaigns: landyn_batch with MPI ${MPI_Fortran_VERSION} (${MPIEXEC_EXECUTABLE})")
 
-  file(GLOB LANDYN_CAMPAIGN_SOURCES CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/src/campaign/*.f90)
-  add_library(landyn_campaign_lib STATIC ${LANDYN_CAMPAIGN_SOURCES})
-  set_target_properties(landyn_campaign_lib PROPERTIES
-    Fortran_MODULE_DIRECTORY ${CMAKE_BINARY_DIR}/mod_campaign
-    OUTPUT_NAME landyn_campaign)
-  target_include_directories(landyn_campaign_lib PUBLIC $<BUILD_INTERFACE:${CMAKE_BINARY_DIR}/mod_campaign>)
-  target_link_libraries(landyn_campaign_lib PUBLIC landyn_lib MPI::MPI_Fortran)
-  landyn_set_flags(landyn_campaign_lib)
+  # The layer campaign (src/campaign/*.f90; module directory mod/campaign), then its static library
+  # of the layer's objects, linked with landyn_lib for the layers below.
+  landyn_layer(campaign USES core config physics input numerics output)
+  target_link_libraries(landyn_layer_campaign PUBLIC MPI::MPI_Fortran)
+  add_library(landyn_campaign_lib STATIC)
+  set_target_properties(landyn_campaign_lib PROPERTIES OUTPUT_NAME landyn_campaign LINKER_LANGUAGE Fortran)
+  target_link_libraries(landyn_campaign_lib PUBLIC landyn_layer_campaign landyn_lib MPI::MPI_Fortran)
 
   add_executable(landyn_batch src/app/landyn_batch.f90)
   target_link_libraries(landyn_batch PRIVATE landyn_campaign_lib)
