@@ -1,7 +1,8 @@
 !> The sizes and markers of the run-deck types that the input registry, the generated group types
 !! (landyn_input_groups) and their users share: the unset marker of reals, the largest number of
 !! primary stages, the lengths of law names and file names, and the integrator names (re-exported
-!! from landyn_integrator_names, which CMake generates from the integrators in src/numerics/).
+!! from landyn_integrator_names, which CMake generates from the integrator registry
+!! src/numerics/landyn_integrators.f90).
 !! Hand-written, used by the registry (so the registry does not depend on the types generated from it).
 module landyn_input_limits
   use landyn_kinds, only: wp

@@ -4,9 +4,10 @@
 !! marker comments `table_begin` and `table_end`; the prose around it is hand-written. The
 !! generator program and the currency test are in tests/input.
 !!
-!! Library code: every procedure is pure.
+!! Library code; pure but for the two that list a choice variable's names, which ask its registry.
 module landyn_input_docs
-  use landyn_config, only: landyn_input_t, default_input, integrator_names
+  use landyn_config, only: landyn_input_t, default_input
+  use landyn_input_choices, only: choice_list
   use landyn_strings, only: fmt_int => int_text
   use landyn_input_registry, only: input_var_t, input_vars, range_text, k_int, k_logical, k_string
   use landyn_input_access, only: input_value_t, access_var
@@ -23,7 +24,7 @@ module landyn_input_docs
 contains
 
   !> The markdown table of group ig (with a trailing line end, without the markers).
-  pure function docs_table(ig) result(md)
+  function docs_table(ig) result(md)
     integer, intent(in) :: ig              !! group index [-]
     character(len=:), allocatable :: md    !! table [-]
     type(landyn_input_t) :: inp
@@ -61,8 +62,8 @@ contains
       if (len(default) == 0) default = '`'//entry_text(iv, v)//'`'
       valid = trim(e%doc_valid)
       if (len(valid) == 0) then
-        if (trim(e%choices) == 'integrator') then
-          valid = quoted_list(integrator_names)   ! generated from the integrators in src/numerics/
+        if (len_trim(e%choices) > 0) then
+          valid = quoted_list(choice_list(e%choices))   ! the names of the choice's registry
         else if (len_trim(e%hi_op) > 0) then
           valid = '`'//range_text(iv, .false.)//'`'
         else if (len_trim(e%lo_op) > 0) then
@@ -110,7 +111,7 @@ contains
   !> The page text with the table of group ig between the markers (inserted in place of the first
   !! table whose header starts with '| Variable |' when the page has no markers yet). ok is false
   !! when the page has neither.
-  pure subroutine replace_table(page, ig, new_page, ok)
+  subroutine replace_table(page, ig, new_page, ok)
     character(len=*), intent(in) :: page                  !! page text [-]
     integer, intent(in) :: ig                             !! group index [-]
     character(len=:), allocatable, intent(out) :: new_page  !! page with the current table [-]

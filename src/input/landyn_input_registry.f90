@@ -71,7 +71,8 @@ module landyn_input_registry
     character(len=2) :: hi_op = ''      !! upper bound: '<', '<=' or '' (none) [-]
     character(len=8) :: hi = ''         !! upper bound as written in messages [deck unit]
     integer :: msg_unit = 1             !! unit in range messages: 1 value and range, 2 value only, 0 none [-]
-    character(len=16) :: choices = ''   !! list of valid names ('integrator', 'contact_law', 'friction_law') [-]
+    character(len=16) :: choices = ''   !! registry of the valid names ('integrator', 'contact_law', 'friction_law',
+                                        !! 'buffer_law', 'gear_type'; landyn_input_choices) [-]
     character(len=96) :: fixed = ''     !! why a campaign cannot vary it ('' : derived from the kind) [-]
     character(len=248) :: doc = ''      !! meaning as docs/input writes it (markdown) [-]
     character(len=136) :: doc_valid = '' !! valid range as docs/input writes it, when more than the range [-]
@@ -188,6 +189,9 @@ module landyn_input_registry
       doc='the thrust acts for `0 <= t < cutoff_time`')]
   !> The registry entries of &gears.
   type(input_var_t), parameter :: vars_gears(*) = [ &
+    input_var_t(g_gears, 'gear_type', k_string, default="'tripod'", &
+      length='name_len', takes='a quoted character string', meaning='type of every landing gear', &
+      choices='gear_type', doc='type of every landing gear (case-insensitive; the gear types above)'), &
     input_var_t(g_gears, 'n_gears', k_int, default="4", &
       takes='an integer', meaning='number of landing gears', lo_op='>=', lo='3', &
       hi_op='<=', hi='8', fixed='the summary has one column per gear and strut, so every case needs the same gears', &
@@ -224,6 +228,9 @@ module landyn_input_registry
       doc_default='gear 1: `4.65, -0.109, -0.505`')]
   !> The registry entries of &primary_strut.
   type(input_var_t), parameter :: vars_primary(*) = [ &
+    input_var_t(g_primary, 'buffer_law', k_string, default="'honeycomb'", &
+      length='name_len', takes='a quoted character string', meaning='buffer (crush) law of the primary strut', &
+      choices='buffer_law', doc='buffer (crush) law of the primary strut (case-insensitive; the laws above)'), &
     input_var_t(g_primary, 'n_stages', k_int, default="2", takes='an integer', meaning='number of honeycomb stages', &
       lo_op='>=', lo='1', hi_op='<=', hi='5', doc='number of honeycomb stages'), &
     input_var_t(g_primary, 'stage_force', k_real, default="[78000.0_wp, 156000.0_wp, 0.0_wp, 0.0_wp, 0.0_wp]", &
@@ -282,6 +289,9 @@ module landyn_input_registry
       'outer tube)')]
   !> The registry entries of &secondary_strut.
   type(input_var_t), parameter :: vars_secondary(*) = [ &
+    input_var_t(g_secondary, 'buffer_law', k_string, default="'honeycomb'", &
+      length='name_len', takes='a quoted character string', meaning='buffer (crush) law of the secondary struts', &
+      choices='buffer_law', doc='buffer (crush) law of both secondary struts (case-insensitive; the laws above)'), &
     input_var_t(g_secondary, 'force_lengthening', k_real, default="43000.0_wp", unit='N', takes='a real number', &
       meaning='crush force resisting lengthening (F_com)', lo_op='>', lo='0', &
       doc='crush force resisting lengthening (Table 1 F_com)'), &

@@ -8,12 +8,14 @@
 module landyn_input_validate
   use landyn_kinds, only: wp, max_gears
   use landyn_errors, only: input_errors_t
-  use landyn_contact, only: contact_law_names, check_contact_law_input
-  use landyn_friction, only: friction_law_names, check_friction_law_input
+  use landyn_contact, only: check_contact_law_input
+  use landyn_friction, only: check_friction_law_input
+  use landyn_buffer_laws, only: check_buffer_law_input
+  use landyn_gear_types, only: check_gear_type_input
+  use landyn_input_choices, only: choice_list
   use landyn_kinematics, only: det3
   use landyn_config, only: landyn_input_t, simulation_cfg_t, lander_cfg_t, gears_cfg_t, primary_cfg_t, &
-                           secondary_cfg_t, terrain_cfg_t, initial_cfg_t, output_cfg_t, is_set, max_stages, &
-                           integrator_names
+                           secondary_cfg_t, terrain_cfg_t, initial_cfg_t, output_cfg_t, is_set, max_stages
   use landyn_strings, only: lower => lower_case, fmt_int => int_text, quoted => quote_text
   use landyn_input_registry, only: input_var_t, input_vars, group_names, range_text, k_int, k_string
   use landyn_input_access, only: input_value_t, access_var
@@ -52,15 +54,18 @@ contains
     call validate_terrain_initial(inp%terrain, inp%initial, inp%gears%n_gears, pre, errors)
   end subroutine validate_input
 
-  !> The law-dependent checks of &contact and &friction (those that depend on the law name or
-  !! compare two variables of those groups): the law registries' checks, the same code the law
-  !! factories run, so a deck is accepted exactly when its laws can be built.
+  !> The checks that depend on a registry's choice: the law-dependent checks of &contact and
+  !! &friction (those that depend on the law name or compare two variables of those groups), of the
+  !! struts' buffer laws and of the gear type: the registries' checks, the same code their factories
+  !! run, so a deck is accepted exactly when its laws and gears can be built.
   subroutine validate_laws(inp, pre, errors)
     type(landyn_input_t), intent(in) :: inp        !! resolved input
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     call check_contact_law_input(inp%contact, pre, errors)
     call check_friction_law_input(inp%friction, pre, errors)
+    call check_buffer_law_input(inp%primary, inp%secondary, pre, errors)
+    call check_gear_type_input(inp, pre, errors)
   end subroutine validate_laws
 
   !> The generic checks of the registry: each scalar with a range (real values that are set),
@@ -139,20 +144,6 @@ contains
       end select
     end function holds
   end subroutine check_registry_ranges
-
-  !> The valid names of a registry choice list.
-  function choice_list(which) result(list)
-    character(len=*), intent(in) :: which   !! 'integrator', 'contact_law' or 'friction_law' [-]
-    character(len=:), allocatable :: list   !! comma-separated names [-]
-    select case (trim(which))
-    case ('contact_law')
-      list = contact_law_names()
-    case ('friction_law')
-      list = friction_law_names()
-    case default
-      list = integrator_names
-    end select
-  end function choice_list
 
   !> Cross-variable checks of &simulation (and its relation to &output).
   subroutine validate_simulation(s, o, pre, errors)

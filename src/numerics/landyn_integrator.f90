@@ -1,7 +1,8 @@
 !> The time-integrator interface: an integrator advances a simulation (landyn_sim_core's sim_t)
-!! by one accepted step at a time, from the state sim_init built to the end of the run. Two
-!! implementations, chosen in &simulation: landyn_integrator_fixed (the paper's fixed-step scheme)
-!! and landyn_integrator_adaptive (error-controlled steps with event location, the default).
+!! by one accepted step at a time, from the state sim_init built to the end of the run. The
+!! implementations are chosen in &simulation integrator from the integrator registry
+!! (landyn_integrators); each integrator module has a builder `build(b)`, b an integrator_build_t,
+!! that allocates b%integ.
 !!
 !! A caller that drives a simulation to times of its own (landyn_session, the C API) sets
 !! sim%t_stop and the engine inputs, calls `retarget`, steps until sim%loop%t reaches t_stop, and
@@ -9,10 +10,11 @@
 module landyn_integrator
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t
+  use landyn_law_checks, only: law_build_t
   implicit none
   private
 
-  public :: integrator_t
+  public :: integrator_t, integrator_build_t
 
   !> An integrator: start once after sim_init, then step until done.
   type, abstract :: integrator_t
@@ -22,6 +24,12 @@ module landyn_integrator
     procedure(retarget_iface), deferred :: retarget  !! takes a new sim%t_stop or changed engine inputs into account
     procedure(sample_iface), deferred :: sample      !! the output sample of the current state
   end type integrator_t
+
+  !> A build of the integrator registry (landyn_integrators): group 'simulation', variable
+  !! 'integrator'.
+  type, extends(law_build_t) :: integrator_build_t
+    class(integrator_t), allocatable :: integ     !! the integrator built
+  end type integrator_build_t
 
   abstract interface
     !> Prepares the integrator once after sim_init (step settings from the input; the adaptive one also

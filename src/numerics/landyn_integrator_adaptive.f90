@@ -33,13 +33,13 @@ module landyn_integrator_adaptive
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
                              sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_NO_STEP
-  use landyn_integrator, only: integrator_t
+  use landyn_integrator, only: integrator_t, integrator_build_t
   use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_event_locator, only: event_fraction
   implicit none
   private
 
-  public :: adaptive_integrator_t, error_norm, error_norm2, discrete_change, weighted_max, predicted_field
+  public :: adaptive_integrator_t, build, error_norm, error_norm2, discrete_change, weighted_max, predicted_field
 
   !> Adaptive integrator and its state between steps.
   type, extends(integrator_t) :: adaptive_integrator_t
@@ -84,6 +84,12 @@ module landyn_integrator_adaptive
   end type adaptive_integrator_t
 
 contains
+
+  !> The registry's builder of 'adaptive' (landyn_integrators).
+  subroutine build(b)
+    type(integrator_build_t), intent(inout) :: b   !! the build
+    allocate (adaptive_integrator_t :: b%integ)
+  end subroutine build
 
   !> Reads the settings, evaluates and records t = 0; the first step tried is &simulation dt.
   subroutine adaptive_start(self, sim, inp, res, stat, errmsg)

@@ -7,11 +7,11 @@ module landyn_integrator_fixed
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step, sim_evaluate, record_sample
   use landyn_real_text, only: fmt_real
-  use landyn_integrator, only: integrator_t
+  use landyn_integrator, only: integrator_t, integrator_build_t
   implicit none
   private
 
-  public :: fixed_integrator_t
+  public :: fixed_integrator_t, build
 
   !> Fixed-step integrator (the step count lives in the simulation).
   type, extends(integrator_t) :: fixed_integrator_t
@@ -25,6 +25,12 @@ module landyn_integrator_fixed
   end type fixed_integrator_t
 
 contains
+
+  !> The registry's builder of 'fixed' (landyn_integrators).
+  subroutine build(b)
+    type(integrator_build_t), intent(inout) :: b   !! the build
+    allocate (fixed_integrator_t :: b%integ)
+  end subroutine build
 
   !> Nothing to prepare: the first sim_step evaluates and records t = 0.
   subroutine fixed_start(self, sim, inp, res, stat, errmsg)

@@ -15,11 +15,12 @@ module landyn_integrator_imex
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t
   use landyn_integrator_adaptive, only: adaptive_integrator_t, weighted_max
+  use landyn_integrator, only: integrator_build_t
   use landyn_scheme_imex, only: imex_advance, imex_responses, imex_response_t
   implicit none
   private
 
-  public :: imex_integrator_t
+  public :: imex_integrator_t, build
 
   !> The imex integrator: the adaptive one's state and the footpads' responses at the current state.
   type, extends(adaptive_integrator_t) :: imex_integrator_t
@@ -31,6 +32,12 @@ module landyn_integrator_imex
   end type imex_integrator_t
 
 contains
+
+  !> The registry's builder of 'imex' (landyn_integrators).
+  subroutine build(b)
+    type(integrator_build_t), intent(inout) :: b   !! the build
+    allocate (imex_integrator_t :: b%integ)
+  end subroutine build
 
   !> The adaptive integrator's start; the result names this integrator.
   subroutine imex_start(self, sim, inp, res, stat, errmsg)

@@ -6,18 +6,15 @@ module landyn_sim_model
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q
   use landyn_config, only: landyn_input_t, is_set
-  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t, cross3, mv3
+  use landyn_kinematics, only: cross3, mv3
   use landyn_body, only: body_t, body_init, body_point_position, inertia_tensor
   use landyn_gear_base, only: gear_eval_t, gear_slot_t, gear_snapshot_slot_t
-  use landyn_strut, only: strut_mass_t
-  use landyn_tripod_gear, only: tripod_gear_t, tripod_init
-  use landyn_buffer, only: primary_honeycomb_t, secondary_honeycomb_t
+  use landyn_gear_types, only: make_gear
   use landyn_terrain, only: terrain_plane_t, make_terrain_planes, penetration
   use landyn_contact, only: contact_law_t, make_contact_law
   use landyn_friction, only: friction_law_t, make_friction_law
   use landyn_footpad_state, only: footpad_state_t
   use landyn_status, only: STAT_OK, STAT_INPUT
-  use landyn_tube_friction, only: tube_friction_t, make_tube_friction
   implicit none
   private
 
@@ -142,8 +139,8 @@ module landyn_sim_model
 
 contains
 
-  !> Builds the model (body, gears, terrain, laws) and places it at t = 0. The input describes
-  !! tripod gears (landyn_tripod_gear); gears of any other type given in `gears` take the place of
+  !> Builds the model (body, gears, terrain, laws) and places it at t = 0. The input's gears are of
+  !! the type &gears gear_type names (landyn_gear_types); gears given in `gears` take the place of
   !! the input's (in the gear frames the input defines), before the lander is placed.
   subroutine setup_model(inp, model, stat, errmsg, gears)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
@@ -151,14 +148,13 @@ contains
     integer, intent(out) :: stat                !! 0 on success, STAT_INPUT when a gear exceeds the capacities [-]
     character(len=*), intent(inout) :: errmsg   !! message on failure [-]
     type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i [-]
-    type(tube_friction_t) :: tube
 
     stat = STAT_OK
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_laws(inp, model, tube, stat, errmsg)
+    call make_laws(inp, model, stat, errmsg)
     if (stat /= 0) return
-    call build_tripod_gears(inp, tube, model, stat, errmsg)
+    call build_gears(inp, model, stat, errmsg)
     if (stat /= 0) return
     if (present(gears)) call replace_gears(gears, model)
     call check_gear_capacities(model, stat, errmsg)
@@ -166,12 +162,11 @@ contains
     call place_lander(inp, model, stat, errmsg)
   end subroutine setup_model
 
-  !> The laws of the model (contact, friction, terrain planes), its footpad states at rest, and
-  !! the primary struts' tube friction the gears are built with.
-  subroutine make_laws(inp, model, tube, stat, errmsg)
+  !> The laws of the model (contact, friction, terrain planes) and its footpad states at rest. The
+  !! gears' own laws (buffers, tube friction) are their gear type's (build_gears).
+  subroutine make_laws(inp, model, stat, errmsg)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its laws, planes, footpads are set [-]
-    type(tube_friction_t), intent(out) :: tube  !! the primary struts' tube friction [-]
     integer, intent(out) :: stat                !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg   !! message on failure [-]
     character(len=msg_len) :: m2
@@ -181,64 +176,28 @@ contains
     call make_friction_law(inp%friction, model%friction, stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
     model%footpad = footpad_state_t()
-    call make_tube_friction(inp%primary%tube_friction, inp%primary%mu_tube, inp%primary%tube_outer_length, &
-                            inp%primary%tube_inner_length, inp%primary%tube_leg_length, inp%primary%tube_lever, &
-                            tube, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
     call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
     if (stat /= 0) then; errmsg = m2; return; end if
   end subroutine make_laws
 
-  !> The input's gears, tripods (landyn_tripod_gear), in the model with their counts cached.
-  subroutine build_tripod_gears(inp, tube, model, stat, errmsg)
+  !> The input's gears, of the type &gears gear_type names (made by the gear-type registry,
+  !! landyn_gear_types), in the model with their counts cached.
+  subroutine build_gears(inp, model, stat, errmsg)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
-    type(tube_friction_t), intent(in) :: tube   !! the primary struts' tube friction [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its gears are set [-]
     integer, intent(out) :: stat                !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg   !! message on failure [-]
-    type(gear_geometry_t) :: geom
-    type(strut_mass_t) :: sm(3)
-    real(wp) :: rot(3, 3), pts(3, 6)
     integer :: i
     character(len=msg_len) :: m2
 
     stat = STAT_OK
-    sm(1) = strut_mass_t(inp%primary%outer_mass, inp%primary%outer_cm, inp%primary%outer_inertia, &
-                         inp%primary%inner_mass, inp%primary%inner_cm, inp%primary%inner_inertia, &
-                         inp%primary%footpad_mass)
-    sm(2) = strut_mass_t(inp%secondary%outer_mass, inp%secondary%outer_cm, inp%secondary%outer_inertia, &
-                         inp%secondary%inner_mass, inp%secondary%inner_cm, inp%secondary%inner_inertia, 0.0_wp)
-    sm(3) = sm(2)
     do i = 1, model%n_gears
-      rot = rot_z(inp%gears%rotation(i))
-      pts(:, 1) = inp%gears%point_a(:, i)
-      pts(:, 2) = inp%gears%point_b(:, i)
-      pts(:, 3) = inp%gears%point_c(:, i)
-      pts(:, 4) = inp%gears%point_d(:, i)
-      pts(:, 5) = inp%gears%point_e(:, i)
-      pts(:, 6) = inp%gears%point_f(:, i)
-      model%point_a(:, i) = pts(:, 1)
-      pts = matmul(transpose(rot), pts)          ! lander frame -> gear frame
-      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
-      if (stat /= 0) then
-        write (errmsg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
-        return
-      end if
-      ! the input describes tripods (landyn_tripod_gear); the model holds any gear type
-      block
-        type(tripod_gear_t) :: tripod
-        call tripod_init(tripod, geom, rot, sm, primary_honeycomb_t(n_stages=inp%primary%n_stages, &
-          stage_force=inp%primary%stage_force, stage_end=inp%primary%stage_end, &
-          k_stop=inp%primary%stop_stiffness, c_stop=inp%primary%stop_damping), secondary_honeycomb_t( &
-          f_lengthening=inp%secondary%force_lengthening, f_shortening=inp%secondary%force_shortening, &
-          stroke_lengthening=inp%secondary%stroke_lengthening, stroke_shortening=inp%secondary%stroke_shortening, &
-          k_stop=inp%secondary%stop_stiffness, c_stop=inp%secondary%stop_damping), stat, m2, tube)
-        if (stat /= 0) then; errmsg = m2; return; end if
-        allocate (model%gear(i)%g, source=tripod)
-      end block
+      model%point_a(:, i) = inp%gears%point_a(:, i)
+      call make_gear(inp, i, model%gear(i)%g, stat, m2)
+      if (stat /= 0) then; errmsg = m2; return; end if
       call gear_counts(model, i)
     end do
-  end subroutine build_tripod_gears
+  end subroutine build_gears
 
   !> Gear i of `gears`, where allocated, takes the place of the model's gear i.
   subroutine replace_gears(gears, model)

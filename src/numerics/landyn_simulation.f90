@@ -1,7 +1,6 @@
 !> One touchdown simulation: builds the model (landyn_sim_core), makes the integrator chosen in
-!! &simulation (make_integrator of the generated registry landyn_integrators: every
-!! src/numerics/landyn_integrator_<name>.f90) and steps it to the end of the run. Re-exports the
-!! model and result types the callers use.
+!! &simulation (make_integrator of the integrator registry landyn_integrators) and steps it to the
+!! end of the run. Re-exports the model and result types the callers use.
 module landyn_simulation
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp

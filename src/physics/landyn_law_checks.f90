@@ -1,7 +1,12 @@
-!> Parameter checks shared by the contact and friction law modules. Every problem is one message
+!> The walk of a registry and the parameter checks its builders share. Every registry of
+!! interchangeable parts (contact laws, friction laws, buffer laws, gear types, integrators) is a
+!! subroutine `walk(b)` with one line per part,
+!!   block; use <module>, only: build; if (b%offered('<name>')) call build(b); end block
+!! and b extends law_build_t: the factory, the input checks and the list of names (messages,
+!! the input registry's choices, docs/input) walk the same lines. Every problem is one message
 !! in the format of the input validation,
 !!   pre//'&'//group//': '//var//' = '//value//' is invalid; valid: '//requirement
-!! appended to an error collector, so the law factories and the input validation report alike.
+!! appended to an error collector, so the factories and the input validation report alike.
 module landyn_law_checks
   use landyn_kinds, only: wp
   use landyn_errors, only: input_errors_t
@@ -13,11 +18,15 @@ module landyn_law_checks
 
   public :: law_build_t, positive
 
-  !> What a law builder works on besides the input and the law (extended by contact_build_t and
-  !! friction_build_t): the namelist group, the message prefix, the messages so far, and whether
-  !! only the law-dependent checks run (the input validation) or the law is built (the factory).
+  !> What a builder works on besides the input and the part it builds (extended by each registry's
+  !! build type: contact_build_t, friction_build_t, buffer_build_t, gear_build_t,
+  !! integrator_build_t): the namelist group and variable of the choice, the message prefix, the
+  !! messages so far, and whether only the choice-dependent checks run (the input validation) or
+  !! the part is built (the factory).
   type :: law_build_t
     character(len=16) :: group = ''                 !! namelist group without '&': 'contact', 'friction' [-]
+    character(len=16) :: var = 'law'                !! the variable naming the choice: 'law', 'gear_type' [-]
+    character(len=16) :: noun = 'laws'              !! what the registry holds, in messages: 'laws', 'gear types' [-]
     character(len=:), allocatable :: pre            !! message prefix (deck name or '') [-]
     type(input_errors_t) :: errors                  !! problems found so far
     logical :: check_only = .false.                 !! only the law-dependent checks, build nothing [-]
@@ -90,16 +99,17 @@ contains
     if (len(unit) > 0) s = ' '//unit
   end function unit_suffix
 
-  !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown law name
-  !! first adds "&group law = 'name' is not known; known laws: names").
+  !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown name first
+  !! adds "&group var = 'name' is not known; known noun: names", e.g. "&contact law = 'x' is not
+  !! known; known laws: base, ...").
   subroutine build_outcome(self, law, names, stat, errmsg)
     class(law_build_t), intent(inout) :: self      !! the build, after the registry walk
     character(len=*), intent(in) :: law           !! law name as given [-]
     character(len=*), intent(in) :: names          !! the registered names, for the message [-]
     integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
     character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
-    if (.not. self%found) call self%errors%add('&'//trim(self%group)//" law = '"//trim(adjustl(law))// &
-                                          "' is not known; known laws: "//names)
+    if (.not. self%found) call self%errors%add('&'//trim(self%group)//' '//trim(self%var)//" = '"// &
+                                               trim(adjustl(law))//"' is not known; known "//trim(self%noun)//': '//names)
     stat = STAT_OK
     errmsg = ''
     if (self%errors%count() > 0) then
@@ -108,17 +118,24 @@ contains
     end if
   end subroutine build_outcome
 
-  !> Set up a walk of the registry: build (or, with check_only, only check) the law named `law`
+  !> Set up a walk of the registry: build (or, with check_only, only check) the part named `law`
   !! (case-insensitive, blanks ignored) of namelist group `group`, messages prefixed by `pre`; with
-  !! `listing`, collect the registered names instead.
-  subroutine build_start(self, group, law, pre, check_only, listing)
+  !! `listing`, collect the registered names instead. `var` and `noun` name the choice in messages
+  !! (default 'law' and 'laws').
+  subroutine build_start(self, group, law, pre, check_only, listing, var, noun)
     class(law_build_t), intent(inout) :: self      !! the build
     character(len=*), intent(in) :: group          !! namelist group without '&' [-]
     character(len=*), intent(in) :: law            !! law name as given ('' for a listing) [-]
     character(len=*), intent(in) :: pre            !! message prefix (deck name or '') [-]
     logical, intent(in), optional :: check_only    !! only the law-dependent checks [-]
     logical, intent(in), optional :: listing       !! list the registered names [-]
+    character(len=*), intent(in), optional :: var  !! the variable naming the choice (default 'law') [-]
+    character(len=*), intent(in), optional :: noun !! what the registry holds, plural (default 'laws') [-]
     self%group = group
+    self%var = 'law'
+    if (present(var)) self%var = var
+    self%noun = 'laws'
+    if (present(noun)) self%noun = noun
     self%key = lower_case(trim(adjustl(law)))
     self%pre = pre
     self%found = .false.

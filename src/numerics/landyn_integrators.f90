@@ -1,0 +1,60 @@
+!> The integrator registry: the one place that lists the time integrators (&simulation
+!! integrator) and their factory.
+!!
+!! Adding an integrator: write landyn_integrator_<name>.f90 (a type extending integrator_t of
+!! landyn_integrator, and a `build(b)` subroutine, b an integrator_build_t, that allocates b%integ,
+!! like landyn_integrator_fixed's), then add its ONE line to `walk` below:
+!!   block; use landyn_integrator_<name>, only: build; if (b%offered('<name>')) call build(b); end block
+!! make_integrator and registered_integrators() walk these lines. The input layer, which validates
+!! and documents &simulation integrator, may not use numerics/: cmake/LandynRegistries.cmake copies
+!! the names these lines offer into the generated constant integrator_names (module
+!! landyn_integrator_names) when CMake configures, again whenever this file changes; the unit test
+!! test_registries checks the copy against the walk.
+module landyn_integrators
+  use landyn_status, only: STAT_INPUT, STAT_OK
+  use landyn_config, only: landyn_input_t
+  use landyn_integrator, only: integrator_t, integrator_build_t
+  implicit none
+  private
+
+  public :: make_integrator, registered_integrators
+
+contains
+
+  !> The integrator named by &simulation integrator (case-insensitive). stat = STAT_INPUT and
+  !! errmsg naming the known integrators for an unknown name.
+  subroutine make_integrator(inp, integ, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp                    !! resolved, validated input
+    class(integrator_t), allocatable, intent(out) :: integ     !! the integrator
+    integer, intent(out) :: stat                               !! STAT_OK, STAT_INPUT for an unknown name
+    character(len=*), intent(inout) :: errmsg                  !! message on failure
+    type(integrator_build_t) :: b
+    call b%start('simulation', inp%simulation%integrator, '', var='integrator', noun='integrators')
+    call walk(b)
+    call b%outcome(inp%simulation%integrator, registered_integrators(), stat, errmsg)
+    if (stat == STAT_OK) then
+      call move_alloc(b%integ, integ)
+    else
+      stat = STAT_INPUT
+    end if
+  end subroutine make_integrator
+
+  !> Names accepted in &simulation integrator, in the order of the registry: 'adaptive, ...'.
+  function registered_integrators() result(names)
+    character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
+    type(integrator_build_t) :: b
+    call b%start('simulation', '', '', listing=.true., var='integrator', noun='integrators')
+    call walk(b)
+    names = b%names
+  end function registered_integrators
+
+  !> The registry: every integrator, one line each, in the order of the documentation. A line
+  !! offers its integrator's name; the one asked for is built, a listing collects the names.
+  subroutine walk(b)
+    type(integrator_build_t), intent(inout) :: b   !! the build (or the listing)
+    block; use landyn_integrator_adaptive, only: build; if (b%offered('adaptive')) call build(b); end block
+    block; use landyn_integrator_fixed, only: build; if (b%offered('fixed')) call build(b); end block
+    block; use landyn_integrator_imex, only: build; if (b%offered('imex')) call build(b); end block
+  end subroutine walk
+
+end module landyn_integrators

@@ -1,0 +1,108 @@
+!> The buffer-law registry: the one place that lists the struts' buffer (crush) laws
+!! (&primary_strut buffer_law, &secondary_strut buffer_law), their factory and the input checks
+!! that depend on the law.
+!!
+!! Adding a law: write landyn_buffer_<law>.f90 (a type extending buffer_law_t of landyn_buffer
+!! with pure, allocation-free procedures, and a `build(b)` subroutine, b a buffer_build_t, like
+!! landyn_buffer_honeycomb's), then add its ONE line to `walk` below:
+!!   block; use landyn_buffer_<law>, only: build; if (b%offered('<law>')) call build(b); end block
+!! The factory, the input checks and buffer_law_names() all walk the same lines, so the law is
+!! reachable from a deck and named in the messages and in docs/input.
+module landyn_buffer_laws
+  use landyn_config, only: primary_cfg_t, secondary_cfg_t
+  use landyn_errors, only: input_errors_t
+  use landyn_status, only: STAT_OK
+  use landyn_buffer, only: buffer_law_t
+  use landyn_buffer_build, only: buffer_build_t
+  implicit none
+  private
+
+  public :: make_buffer_law, check_buffer_law_input, buffer_law_names
+
+contains
+
+  !> Build the buffer law of the primary strut (primary) or of the secondary struts, named by
+  !! pri%buffer_law or sec%buffer_law (case-insensitive). stat = STAT_FAILED and errmsg set for an
+  !! unknown name or invalid parameters (the first problem found; law is then unallocated).
+  subroutine make_buffer_law(pri, sec, primary, law, stat, errmsg)
+    type(primary_cfg_t), intent(in) :: pri                     !! resolved &primary_strut input
+    type(secondary_cfg_t), intent(in) :: sec                   !! resolved &secondary_strut input
+    logical, intent(in) :: primary                             !! the primary's law (else the secondaries') [-]
+    class(buffer_law_t), allocatable, intent(out) :: law       !! the law
+    integer, intent(out) :: stat                               !! STAT_OK on success
+    character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
+    type(buffer_build_t) :: b
+    call start(b, pri, sec, primary, '', .false.)
+    call walk(b)
+    call b%outcome(chosen(pri, sec, primary), buffer_law_names(), stat, errmsg)
+    if (stat == STAT_OK) call move_alloc(b%law, law)
+  end subroutine make_buffer_law
+
+  !> The law-dependent checks of &primary_strut and &secondary_strut, one message per problem in
+  !! the input validation's format. Nothing for an unknown law name (the input validation checks the
+  !! names against buffer_law_names()).
+  subroutine check_buffer_law_input(pri, sec, pre, errors)
+    type(primary_cfg_t), intent(in) :: pri         !! resolved &primary_strut input
+    type(secondary_cfg_t), intent(in) :: sec       !! resolved &secondary_strut input
+    character(len=*), intent(in) :: pre            !! message prefix [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    integer :: k
+    do k = 1, 2   ! the primary's law, then the secondaries'
+      block
+        type(buffer_build_t) :: b
+        call start(b, pri, sec, k == 1, pre, .true.)
+        call walk(b)
+        if (b%found) call b%pass_on(errors)
+      end block
+    end do
+  end subroutine check_buffer_law_input
+
+  !> Names accepted in buffer_law, in the order of the registry, for messages and documentation:
+  !! 'honeycomb, ...'.
+  function buffer_law_names() result(names)
+    character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
+    type(buffer_build_t) :: b
+    call b%start('primary_strut', '', '', listing=.true., var='buffer_law', noun='buffer laws')
+    call walk(b)
+    names = b%names
+  end function buffer_law_names
+
+  !> The registry: every buffer law, one line each, in the order of the documentation. A line
+  !! offers its law's name; the law asked for is built, a listing collects the names.
+  subroutine walk(b)
+    type(buffer_build_t), intent(inout) :: b       !! the build (or the listing)
+    block; use landyn_buffer_honeycomb, only: build; if (b%offered('honeycomb')) call build(b); end block
+  end subroutine walk
+
+  !> Set up a build (or a check) of the primary's or the secondaries' law.
+  subroutine start(b, pri, sec, primary, pre, check_only)
+    type(buffer_build_t), intent(inout) :: b       !! the build
+    type(primary_cfg_t), intent(in) :: pri         !! resolved &primary_strut input
+    type(secondary_cfg_t), intent(in) :: sec       !! resolved &secondary_strut input
+    logical, intent(in) :: primary                 !! the primary's law (else the secondaries') [-]
+    character(len=*), intent(in) :: pre            !! message prefix [-]
+    logical, intent(in) :: check_only              !! only the law-dependent checks [-]
+    character(len=15) :: group
+    group = 'secondary_strut'
+    if (primary) group = 'primary_strut'
+    call b%start(trim(group), chosen(pri, sec, primary), pre, check_only=check_only, var='buffer_law', &
+                 noun='buffer laws')
+    b%primary = primary
+    b%pri = pri
+    b%sec = sec
+  end subroutine start
+
+  !> The law name the input chooses for the primary (primary) or the secondaries.
+  function chosen(pri, sec, primary) result(name)
+    type(primary_cfg_t), intent(in) :: pri         !! resolved &primary_strut input
+    type(secondary_cfg_t), intent(in) :: sec       !! resolved &secondary_strut input
+    logical, intent(in) :: primary                 !! the primary's law (else the secondaries') [-]
+    character(len=:), allocatable :: name          !! the name as given [-]
+    if (primary) then
+      name = trim(pri%buffer_law)
+    else
+      name = trim(sec%buffer_law)
+    end if
+  end function chosen
+
+end module landyn_buffer_laws

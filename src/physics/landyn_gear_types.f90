@@ -1,0 +1,72 @@
+!> The gear-type registry: the one place that lists the gear types (&gears gear_type), their
+!! factory and the input checks that depend on the type.
+!!
+!! Adding a gear type: write landyn_gear_type_<name>.f90 (a type extending gear_base_t of
+!! landyn_gear_base, or an existing gear type, and a `build(b)` subroutine, b a gear_build_t, like
+!! landyn_gear_type_tripod's), then add its ONE line to `walk` below:
+!!   block; use landyn_gear_type_<name>, only: build; if (b%offered('<name>')) call build(b); end block
+!! The factory, the input checks and gear_type_names() all walk the same lines, so the type is
+!! reachable from a deck and named in the messages and in docs/input.
+module landyn_gear_types
+  use landyn_config, only: landyn_input_t
+  use landyn_errors, only: input_errors_t
+  use landyn_status, only: STAT_OK
+  use landyn_gear_base, only: gear_base_t
+  use landyn_gear_build, only: gear_build_t
+  implicit none
+  private
+
+  public :: make_gear, check_gear_type_input, gear_type_names
+
+contains
+
+  !> Build gear i of the input, of the type &gears gear_type names (case-insensitive), in its gear
+  !! frame. stat = STAT_FAILED and errmsg set for an unknown name or a gear that cannot be built
+  !! (the first problem found; gear is then unallocated).
+  subroutine make_gear(inp, i, gear, stat, errmsg)
+    type(landyn_input_t), intent(in) :: inp                    !! resolved, validated input
+    integer, intent(in) :: i                                   !! the gear, 1..n_gears [-]
+    class(gear_base_t), allocatable, intent(out) :: gear       !! the gear
+    integer, intent(out) :: stat                               !! STAT_OK on success
+    character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
+    type(gear_build_t) :: b
+    call b%start('gears', inp%gears%gear_type, '', var='gear_type', noun='gear types')
+    b%inp = inp
+    b%i = i
+    call walk(b)
+    call b%outcome(inp%gears%gear_type, gear_type_names(), stat, errmsg)
+    if (stat == STAT_OK) call move_alloc(b%gear, gear)
+  end subroutine make_gear
+
+  !> The checks that depend on the gear type, one message per problem in the input validation's
+  !! format. Nothing for an unknown name (the input validation checks the name against
+  !! gear_type_names()).
+  subroutine check_gear_type_input(inp, pre, errors)
+    type(landyn_input_t), intent(in) :: inp        !! resolved input
+    character(len=*), intent(in) :: pre            !! message prefix [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    type(gear_build_t) :: b
+    call b%start('gears', inp%gears%gear_type, pre, check_only=.true., var='gear_type', noun='gear types')
+    b%inp = inp
+    call walk(b)
+    if (b%found) call b%pass_on(errors)
+  end subroutine check_gear_type_input
+
+  !> Names accepted in &gears gear_type, in the order of the registry, for messages and
+  !! documentation: 'tripod, ...'.
+  function gear_type_names() result(names)
+    character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
+    type(gear_build_t) :: b
+    call b%start('gears', '', '', listing=.true., var='gear_type', noun='gear types')
+    call walk(b)
+    names = b%names
+  end function gear_type_names
+
+  !> The registry: every gear type, one line each, in the order of the documentation. A line
+  !! offers its type's name; the type asked for is built, a listing collects the names.
+  subroutine walk(b)
+    type(gear_build_t), intent(inout) :: b         !! the build (or the listing)
+    block; use landyn_gear_type_tripod, only: build; if (b%offered('tripod')) call build(b); end block
+  end subroutine walk
+
+end module landyn_gear_types
