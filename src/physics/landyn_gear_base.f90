@@ -12,6 +12,7 @@
 !! max_struts and max_gear_q (landyn_kinds), the capacities the simulation's records are sized by.
 module landyn_gear_base
   use landyn_kinds, only: wp, max_struts, max_gear_q, max_gear_rows
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
@@ -61,48 +62,53 @@ module landyn_gear_base
     real(wp) :: free_hi(max_struts) = 0.0_wp      !! upper end [m]
   end type gear_eval_t
 
-  !> A landing gear: struts, footpad and their state.
+  !> A landing gear: struts, footpad and their state. Two parts:
+  !!
+  !! - the dynamics (deferred): what the simulation calls per step (landyn_sim_core, landyn_sim_state,
+  !!   landyn_impact, the integrators) and to set up and save its model (landyn_sim_model);
+  !! - the reports (defaults a simple gear inherits; a gear type overrides what it knows better):
+  !!   what the recorder, the summary and the health checks read (landyn_sim_result), the error
+  !!   weights and law segments the adaptive integrator compares, and the rigid gear's caches.
+  !!   strut_lengths and violations have no sensible default and stay deferred.
   type, abstract :: gear_base_t
   contains
+    ! ---- the dynamics
     procedure(count_iface), deferred :: strut_count                    !! number of struts [-]
     procedure(count_iface), deferred :: coordinate_count               !! number of generalized coordinates [-]
-    procedure(name_iface), deferred :: strut_name                      !! name of strut k (reports)
     procedure(rotation_iface), deferred :: rotation                    !! gear frame -> lander frame rotation [-]
     procedure(footpad_iface), deferred :: footpad                      !! footpad position and velocity, gear frame [m, m/s]
     procedure(evaluate_iface), deferred :: evaluate                    !! crush logic and accelerations into a gear_eval_t
     procedure(commit_iface), deferred :: commit                        !! makes an evaluation the committed state
-    procedure(dynamics_iface), deferred :: dynamics                    !! evaluate and commit in one call
     procedure(arrest_iface), deferred :: arrest                        !! crush modes at the end of a step
     procedure(increment_iface), deferred :: increment                  !! q <- q + qd h, with the crush work
     procedure(correct_iface), deferred :: correct_positions            !! position projection onto the constraints
     procedure(settle_iface), deferred :: settle                        !! all struts locked: the gear becomes rigid
-    procedure(prepare_iface), deferred :: prepare                      !! caches for the next evaluation of a rigid gear
-    procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
-    procedure(per_strut_pair_iface), deferred :: crush_history         !! most negative and positive strokes reached [m]
-    procedure(vector_iface), deferred :: axial_forces                  !! axial buffer forces [N]
-    procedure(vector_iface), deferred :: crush_work                    !! energy absorbed by each buffer [J]
-    procedure(vector_iface), deferred :: strut_lengths                 !! strut lengths [m]
-    procedure(int_per_strut_iface), deferred :: law_segments           !! piece of each buffer law [-]
-    procedure(locks_iface), deferred :: locks                          !! which struts are locked [-]
-    procedure(modes_iface), deferred :: strut_modes                    !! crush mode of each strut [-]
-    procedure(capacity_iface), deferred :: buffer_capacity             !! stroke capacity of strut k's buffer [m]
-    procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
-    procedure(vector_iface), deferred :: coordinate_weights            !! error-norm weights of the coordinates [-]
-    procedure(vector_iface), deferred :: coordinates                   !! generalized coordinates [m, rad]
-    procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
-    procedure(vector_iface), deferred :: accelerations                 !! committed generalized accelerations [m/s^2, rad/s^2]
-    procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
     procedure(rigid_iface), deferred :: is_rigid                       !! all struts locked and at rest
+    procedure(locks_iface), deferred :: locks                          !! which struts are locked [-]
+    procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
+    procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
+    procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
+    procedure(vector_iface), deferred :: accelerations                 !! committed generalized accelerations [m/s^2, rad/s^2]
     procedure(rows_iface), deferred :: velocity_rows                   !! velocity constraint rows (A qd = 0)
     procedure(vector_iface), deferred :: mass_diagonal                 !! mass matrix diagonal [kg, kg m^2]
     procedure(maps_iface), deferred :: momentum_maps                   !! maps from qd to the legs' momenta
     procedure(momenta_iface), deferred :: relative_momenta             !! legs' relative momenta and kinetic energy
     procedure(leg_momentum_iface), deferred :: leg_momentum            !! legs' momentum, first moment and mass
-    procedure(body_load_iface), deferred :: body_load                  !! load on the body and its moment [N, N m]
-    procedure(energy_iface), deferred :: relative_kinetic_energy       !! legs' kinetic energy relative to the body [J]
     procedure(new_snapshot_iface), deferred :: new_snapshot            !! allocates a snapshot of the gear's type
     procedure(save_iface), deferred :: save_state                      !! copies the evolving state out
     procedure(restore_iface), deferred :: restore_state                !! puts a saved state back
+    ! ---- the reports (strut_lengths and violations deferred, the others with defaults)
+    procedure(vector_iface), deferred :: strut_lengths                 !! strut lengths [m]
+    procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
+    procedure :: strut_name                                            !! name of strut k (reports)
+    procedure :: strut_modes                                           !! crush mode of each strut [-]
+    procedure :: axial_forces                                          !! axial buffer forces [N]
+    procedure :: crush_history                                         !! most negative and positive strokes reached [m]
+    procedure :: crush_work                                            !! energy absorbed by each buffer [J]
+    procedure :: buffer_capacity                                       !! stroke capacity of strut k's buffer [m]
+    procedure :: law_segments                                          !! piece of each buffer law [-]
+    procedure :: coordinate_weights                                    !! error-norm weights of the coordinates [-]
+    procedure :: prepare                                               !! caches for the next evaluation of a rigid gear
     procedure :: footpad_response                                      !! response to a footpad force [m/s^2/N, ...]
   end type gear_base_t
 
@@ -126,14 +132,6 @@ module landyn_gear_base
       import :: gear_base_t
       class(gear_base_t), intent(in) :: self      !! gear
     end function count_iface
-
-    !> The name of strut k (reports).
-    pure function name_iface(self, k) result(name)
-      import :: gear_base_t, strut_name_len
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(in) :: k                    !! strut [-]
-      character(len=strut_name_len) :: name       !! its name [-]
-    end function name_iface
 
     !> Gear frame -> lander frame rotation.
     pure function rotation_iface(self) result(rot)
@@ -176,18 +174,6 @@ module landyn_gear_base
       type(gear_eval_t), intent(in) :: ge         !! its evaluation
     end subroutine commit_iface
 
-    !> Crush logic and accelerations for a footpad force and the uniform field, committed as the
-    !! gear's state (buffer forces, modes, the load on the body).
-    subroutine dynamics_iface(self, f_foot, f_field, stat, errmsg, dt)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
-      real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
-      real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame, gear frame [m/s^2]
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-      real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
-    end subroutine dynamics_iface
-
     !> The crush law's decision over a step: a crushing strut whose stroke rate would reverse between
     !! the committed rates and the integrator's end-of-step rates locks at its present stroke. A gear
     !! that moves leaves the rigid state.
@@ -224,14 +210,6 @@ module landyn_gear_base
       class(gear_base_t), intent(inout) :: self   !! gear
     end subroutine settle_iface
 
-    !> Prepares what the next evaluation of a gear that has become rigid needs (caches).
-    subroutine prepare_iface(self, stat, errmsg)
-      import :: gear_base_t
-      class(gear_base_t), intent(inout) :: self   !! gear
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-    end subroutine prepare_iface
-
     !> Two per-strut quantities (strokes and their rates, or the crush history: most negative and
     !! most positive stroke reached).
     pure subroutine per_strut_pair_iface(self, s, sd)
@@ -255,37 +233,12 @@ module landyn_gear_base
       real(wp), intent(in) :: v(:)                !! per coordinate [m/s, rad/s]
     end subroutine set_vector_iface
 
-    !> One integer per strut (the piece of each buffer law at the current strokes).
-    pure subroutine int_per_strut_iface(self, v)
-      import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(out) :: v(:)                !! per strut [-]
-    end subroutine int_per_strut_iface
-
     !> Which struts are locked (committed state).
     pure subroutine locks_iface(self, locked)
       import :: gear_base_t
       class(gear_base_t), intent(in) :: self      !! gear
       logical, intent(out) :: locked(:)           !! per strut [-]
     end subroutine locks_iface
-
-    !> Crush mode of each strut (0 locked, +1/-1 crushing toward +s/-s, 2 free) of an evaluation,
-    !! or of the committed state.
-    pure subroutine modes_iface(self, m, ge)
-      import :: gear_base_t, gear_eval_t
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(out) :: m(:)                !! per strut [-]
-      type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
-    end subroutine modes_iface
-
-    !> Stroke capacity of strut k's buffer in each direction.
-    subroutine capacity_iface(self, k, cap_pos, cap_neg)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(in) :: k                    !! strut [-]
-      real(wp), intent(out) :: cap_pos            !! toward +s [m]
-      real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
-    end subroutine capacity_iface
 
     !> Largest constraint violation after and before the correction so far.
     pure subroutine violations_iface(self, violation, drift)
@@ -338,21 +291,6 @@ module landyn_gear_base
       real(wp), intent(out) :: first_moment(3)    !! sum m x [kg m]
       real(wp), intent(out) :: leg_mass           !! sum m [kg]
     end subroutine leg_momentum_iface
-
-    !> The gear's load on the body in the model (the ground force minus the rate of the legs'
-    !! relative momentum) and its moment about the lander origin, gear frame.
-    pure subroutine body_load_iface(self, f_body, m_body)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-      real(wp), intent(out) :: f_body(3)          !! force [N]
-      real(wp), intent(out) :: m_body(3)          !! moment [N m]
-    end subroutine body_load_iface
-
-    !> Kinetic energy of the leg parts relative to the body.
-    pure real(wp) function energy_iface(self)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-    end function energy_iface
 
     !> Allocates a snapshot record of the gear's type (once, before the time loop).
     subroutine new_snapshot_iface(self, snap)
@@ -417,6 +355,116 @@ contains
     f_body_u = (g2%f_body - ge%f_body)/df
     m_body_u = (g2%m_body - ge%m_body)/df
   end subroutine footpad_response
+
+  ! ---- the reports' defaults
+
+  !> Default name of strut k: 'strut <k>' ('(none)' beyond the gear's struts).
+  pure function strut_name(self, k) result(name)
+    class(gear_base_t), intent(in) :: self      !! gear
+    integer, intent(in) :: k                    !! strut [-]
+    character(len=strut_name_len) :: name       !! its name [-]
+    if (k < 1 .or. k > self%strut_count()) then
+      name = '(none)'
+    else
+      write (name, '(a,i0)') 'strut ', k
+    end if
+  end function strut_name
+
+  !> Crush mode of each strut (strut_mode; 0 locked, +1/-1 crushing toward +s/-s, 2 free) of an
+  !! evaluation (the mode it leaves the step in, strut_mode_after), or of the committed state.
+  !! Default for the committed state: from locks and axial_forces, a sliding strut crushing in
+  !! the direction of its axial force (true of a rigid-plastic buffer, whose force is the bound of
+  !! the side it slides toward).
+  pure subroutine strut_modes(self, m, ge)
+    class(gear_base_t), intent(in) :: self      !! gear
+    integer, intent(out) :: m(:)                !! per strut [-]
+    type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
+    logical :: locked(max_struts)
+    real(wp) :: axial(max_struts)
+    integer :: ns
+    ns = self%strut_count()
+    if (present(ge)) then
+      m(1:ns) = strut_mode_after(ge%locked(1:ns), ge%axial(1:ns), ge%dir(1:ns), ge%dir_after(1:ns), &
+                                 ge%axial_after(1:ns))
+    else
+      call self%locks(locked(1:ns))
+      call self%axial_forces(axial(1:ns))
+      m(1:ns) = strut_mode(locked(1:ns), axial(1:ns), merge(1, -1, axial(1:ns) >= 0.0_wp))
+    end if
+  end subroutine strut_modes
+
+  !> Axial buffer forces of the committed state. Default: 0 (a gear type that does not report them).
+  pure subroutine axial_forces(self, v)
+    class(gear_base_t), intent(in) :: self      !! gear
+    real(wp), intent(out) :: v(:)               !! per strut [N]
+    v(1:self%strut_count()) = 0.0_wp
+  end subroutine axial_forces
+
+  !> Most negative and most positive stroke reached by each strut. Default: what the present
+  !! strokes show (min(0, s), max(0, s)), for a gear type that keeps no history.
+  pure subroutine crush_history(self, s_min, s_max)
+    class(gear_base_t), intent(in) :: self      !! gear
+    real(wp), intent(out) :: s_min(:)           !! most negative strokes [m]
+    real(wp), intent(out) :: s_max(:)           !! most positive strokes [m]
+    real(wp) :: s(max_struts), sd(max_struts)
+    integer :: ns
+    ns = self%strut_count()
+    call self%strokes(s(1:ns), sd(1:ns))
+    s_min(1:ns) = min(0.0_wp, s(1:ns))
+    s_max(1:ns) = max(0.0_wp, s(1:ns))
+  end subroutine crush_history
+
+  !> Energy absorbed by each buffer so far. Default: 0 (a gear type that does not book it).
+  pure subroutine crush_work(self, v)
+    class(gear_base_t), intent(in) :: self      !! gear
+    real(wp), intent(out) :: v(:)               !! per strut [J]
+    v(1:self%strut_count()) = 0.0_wp
+  end subroutine crush_work
+
+  !> Stroke capacity of strut k's buffer in each direction. Default: unlimited toward +s, none
+  !! toward -s (no stroke margin to report); 0 beyond the gear's struts.
+  subroutine buffer_capacity(self, k, cap_pos, cap_neg)
+    class(gear_base_t), intent(in) :: self      !! gear
+    integer, intent(in) :: k                    !! strut [-]
+    real(wp), intent(out) :: cap_pos            !! toward +s [m]
+    real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
+    cap_pos = merge(huge(1.0_wp), 0.0_wp, k >= 1 .and. k <= self%strut_count())
+    cap_neg = 0.0_wp
+  end subroutine buffer_capacity
+
+  !> The piece of each strut's buffer law at the current strokes (the adaptive integrator bisects
+  !! a step in which one changes). Default: 1, one piece.
+  pure subroutine law_segments(self, v)
+    class(gear_base_t), intent(in) :: self      !! gear
+    integer, intent(out) :: v(:)                !! per strut [-]
+    v(1:self%strut_count()) = 1
+  end subroutine law_segments
+
+  !> Error-norm weights of the coordinates (the adaptive integrator's error norm). Default: 1.
+  pure subroutine coordinate_weights(self, v)
+    class(gear_base_t), intent(in) :: self      !! gear
+    real(wp), intent(out) :: v(:)               !! per coordinate [-]
+    v(1:self%coordinate_count()) = 1.0_wp
+  end subroutine coordinate_weights
+
+  !> Prepares what the next evaluation of a gear that has become rigid (settle) needs, its caches.
+  !! Default, for a gear type without caches: checks that a rigid gear is at rest (the contract of
+  !! settle and set_rates).
+  subroutine prepare(self, stat, errmsg)
+    class(gear_base_t), intent(inout) :: self   !! gear
+    integer, intent(out) :: stat                !! STAT_OK on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    real(wp) :: qd(max_gear_q)
+    integer :: nq
+    stat = STAT_OK
+    if (.not. self%is_rigid()) return
+    nq = self%coordinate_count()
+    call self%rates(qd(1:nq))
+    if (any(abs(qd(1:nq)) > 0.0_wp)) then
+      stat = STAT_FAILED
+      errmsg = 'a rigid gear is not at rest'
+    end if
+  end subroutine prepare
 
   !> The crush mode a strut has after the step of an evaluation (strut_mode of the mode it leaves the
   !! step in: a strut stopped in the step and leaving it sliding, gear_eval_t%dir_after /= 0, is not

@@ -9,14 +9,14 @@ module landyn_tripod_gear
   use landyn_buffer, only: buffer_law_t
   use landyn_tube_friction, only: tube_friction_t
   use landyn_gear, only: gear_t, gear_state_t, strut_mass_t, gear_init, gear_set_buffer, gear_footpad, gear_evaluate, &
-                         gear_commit, gear_dynamics, gear_arrest, gear_increment, gear_correct_positions, &
+                         gear_commit, gear_arrest, gear_increment, gear_correct_positions, &
                          gear_settle, gear_prepare, gear_strokes, &
                          gear_crush_history, gear_axial_forces, gear_crush_work, gear_strut_lengths, gear_law_segments, &
                          gear_locks, gear_strut_modes, strut_modes, gear_buffer_capacity, gear_violations, gear_rates, &
-                         gear_set_rates, gear_coordinates, gear_accelerations, gear_is_rigid, gear_velocity_rows, &
+                         gear_set_rates, gear_accelerations, gear_is_rigid, gear_velocity_rows, &
                          gear_cache_jacobian, &
                          gear_mass_diagonal, gear_momentum_maps, gear_relative_momenta, gear_leg_momentum, &
-                         gear_body_load, gear_relative_kinetic_energy, gear_rotation, gear_save_state, &
+                         gear_rotation, gear_save_state, &
                          gear_restore_state, n_struts, n_q, n_phi, strut_names, idx_len
   implicit none
   private
@@ -34,7 +34,6 @@ module landyn_tripod_gear
     procedure :: footpad => tripod_footpad                             !! footpad position and velocity, gear frame [m, m/s]
     procedure :: evaluate => tripod_evaluate                           !! crush logic and accelerations into a gear_eval_t
     procedure :: commit => tripod_commit                               !! makes an evaluation the committed state
-    procedure :: dynamics => tripod_dynamics                           !! evaluate and commit in one call
     procedure :: arrest => tripod_arrest                               !! crush modes at the end of a step
     procedure :: increment => tripod_increment                         !! q <- q + qd h, with the crush work
     procedure :: correct_positions => tripod_correct_positions         !! position projection onto the constraints
@@ -51,7 +50,6 @@ module landyn_tripod_gear
     procedure :: buffer_capacity => tripod_buffer_capacity             !! stroke capacity of strut k's buffer [m]
     procedure :: violations => tripod_violations                       !! largest constraint violations [m]
     procedure :: coordinate_weights => tripod_coordinate_weights       !! error-norm weights of the coordinates [-]
-    procedure :: coordinates => tripod_coordinates                     !! generalized coordinates [m, rad]
     procedure :: rates => tripod_rates                                 !! generalized velocities [m/s, rad/s]
     procedure :: accelerations => tripod_accelerations                 !! committed accelerations [m/s^2, rad/s^2]
     procedure :: set_rates => tripod_set_rates                         !! replaces the generalized velocities
@@ -61,8 +59,6 @@ module landyn_tripod_gear
     procedure :: momentum_maps => tripod_momentum_maps                 !! maps from qd to the legs' momenta
     procedure :: relative_momenta => tripod_relative_momenta           !! legs' relative momenta and kinetic energy
     procedure :: leg_momentum => tripod_leg_momentum                   !! legs' momentum, first moment and mass
-    procedure :: body_load => tripod_body_load                         !! load on the body and its moment [N, N m]
-    procedure :: relative_kinetic_energy => tripod_kinetic_energy      !! legs' kinetic energy relative to the body [J]
     procedure :: new_snapshot => tripod_new_snapshot                   !! allocates a snapshot of the gear's type
     procedure :: save_state => tripod_save_state                       !! copies the evolving state out
     procedure :: restore_state => tripod_restore_state                 !! puts a saved state back
@@ -155,17 +151,6 @@ contains
     call gear_commit(self%gear, ge)
   end subroutine tripod_commit
 
-  !> gear_dynamics.
-  subroutine tripod_dynamics(self, f_foot, f_field, stat, errmsg, dt)
-    class(tripod_gear_t), intent(inout) :: self     !! gear
-    real(wp), intent(in) :: f_foot(3)               !! ground force on the footpad, gear frame [N]
-    real(wp), intent(in) :: f_field(3)              !! uniform field, gear frame [m/s^2]
-    integer, intent(out) :: stat                    !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg       !! diagnosis on failure
-    real(wp), intent(in), optional :: dt            !! coming time step [s]
-    call gear_dynamics(self%gear, f_foot, f_field, stat, errmsg, dt)
-  end subroutine tripod_dynamics
-
   !> gear_arrest.
   pure subroutine tripod_arrest(self, qd_end)
     class(tripod_gear_t), intent(inout) :: self     !! gear
@@ -218,14 +203,14 @@ contains
   end subroutine tripod_strokes
 
   !> Most negative and most positive strokes reached (gear_crush_history).
-  pure subroutine tripod_crush_history(self, s, sd)
+  pure subroutine tripod_crush_history(self, s_min, s_max)
     class(tripod_gear_t), intent(in) :: self        !! gear
-    real(wp), intent(out) :: s(:)                   !! most negative strokes [m]
-    real(wp), intent(out) :: sd(:)                  !! most positive strokes [m]
+    real(wp), intent(out) :: s_min(:)                   !! most negative strokes [m]
+    real(wp), intent(out) :: s_max(:)                  !! most positive strokes [m]
     real(wp) :: s3(n_struts), sd3(n_struts)
     call gear_crush_history(self%gear, s3, sd3)
-    s(1:n_struts) = s3
-    sd(1:n_struts) = sd3
+    s_min(1:n_struts) = s3
+    s_max(1:n_struts) = sd3
   end subroutine tripod_crush_history
 
   !> Axial buffer forces.
@@ -314,13 +299,6 @@ contains
     v(1:n_q) = gear_rates(self%gear)
   end subroutine tripod_rates
 
-  !> gear_coordinates.
-  pure subroutine tripod_coordinates(self, v)
-    class(tripod_gear_t), intent(in) :: self        !! gear
-    real(wp), intent(out) :: v(:)                   !! [m, rad]
-    v(1:n_q) = gear_coordinates(self%gear)
-  end subroutine tripod_coordinates
-
   !> gear_accelerations.
   pure subroutine tripod_accelerations(self, v)
     class(tripod_gear_t), intent(in) :: self        !! gear
@@ -382,20 +360,6 @@ contains
     real(wp), intent(out) :: leg_mass               !! [kg]
     call gear_leg_momentum(self%gear, p_rel, first_moment, leg_mass)
   end subroutine tripod_leg_momentum
-
-  !> The load on the body (gear_body_load).
-  pure subroutine tripod_body_load(self, f_body, m_body)
-    class(tripod_gear_t), intent(in) :: self        !! gear
-    real(wp), intent(out) :: f_body(3)              !! [N]
-    real(wp), intent(out) :: m_body(3)              !! [N m]
-    call gear_body_load(self%gear, f_body, m_body)
-  end subroutine tripod_body_load
-
-  !> Relative kinetic energy of the legs.
-  pure real(wp) function tripod_kinetic_energy(self) result(t)
-    class(tripod_gear_t), intent(in) :: self        !! gear
-    t = gear_relative_kinetic_energy(self%gear)
-  end function tripod_kinetic_energy
 
   !> A tripod_snapshot_t.
   subroutine tripod_new_snapshot(self, snap)
