@@ -128,22 +128,22 @@ module landyn_gear_base
 
   abstract interface
     !> A count of the gear type (struts, generalized coordinates).
-    pure integer function count_iface(self)
+    pure integer function count_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
     end function count_iface
 
     !> Gear frame -> lander frame rotation.
-    pure function rotation_iface(self) result(rot)
+    pure function rotation_iface(gear) result(rot)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp) :: rot(3, 3)                       !! [-]
     end function rotation_iface
 
     !> Footpad joint position and its velocity relative to the body, gear frame.
-    pure subroutine footpad_iface(self, pos, vel, rates)
+    pure subroutine footpad_iface(gear, pos, vel, rates)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: pos(3)             !! position [m]
       real(wp), intent(out) :: vel(3)             !! velocity [m/s]
       real(wp), intent(in), optional :: rates(:)  !! generalized velocities to take it with; default the
@@ -153,9 +153,9 @@ module landyn_gear_base
     !> Crush logic and accelerations of the committed state for a footpad force and the uniform
     !! field, into an evaluation record (every component set anew); the gear is not changed
     !! (commit makes it its state).
-    subroutine evaluate_iface(self, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
+    subroutine evaluate_iface(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
       import :: gear_base_t, gear_eval_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+      class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
       ! inout, not out: the gear type resets the record itself (once, not once per layer)
       type(gear_eval_t), intent(inout) :: ge      !! the evaluation (previous contents replaced)
       real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
@@ -168,35 +168,35 @@ module landyn_gear_base
     end subroutine evaluate_iface
 
     !> Makes an evaluation the gear's committed state (accelerations, forces, lock decisions).
-    pure subroutine commit_iface(self, ge)
+    pure subroutine commit_iface(gear, ge)
       import :: gear_base_t, gear_eval_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       type(gear_eval_t), intent(in) :: ge         !! its evaluation
     end subroutine commit_iface
 
     !> The crush law's decision over a step: a crushing strut whose stroke rate would reverse between
     !! the committed rates and the integrator's end-of-step rates locks at its present stroke. A gear
     !! that moves leaves the rigid state.
-    pure subroutine arrest_iface(self, qd_end)
+    pure subroutine arrest_iface(gear, qd_end)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: qd_end(:)           !! end-of-step generalized velocities [m/s, rad/s]
     end subroutine arrest_iface
 
     !> Moves the coordinates by qd h and books the crush work of the committed buffer forces over
     !! the stroke increment of every strut that is not locked.
-    pure subroutine increment_iface(self, qd, h)
+    pure subroutine increment_iface(gear, qd, h)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: qd(:)               !! velocity the coordinates move with [m/s, rad/s]
       real(wp), intent(in) :: h                   !! duration of the move [s]
     end subroutine increment_iface
 
     !> Projects the coordinates onto the position constraints (holonomic ones and locked strokes)
     !! and updates the crush history.
-    subroutine correct_iface(self, tol, max_iter, max_drift, stat, errmsg)
+    subroutine correct_iface(gear, tol, max_iter, max_drift, stat, errmsg)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: tol                 !! correction tolerance [m]
       integer, intent(in) :: max_iter             !! iteration cap of the correction [-]
       real(wp), intent(in) :: max_drift           !! violation before correction that means the step is too large [m]
@@ -205,111 +205,111 @@ module landyn_gear_base
     end subroutine correct_iface
 
     !> After the system's velocity projection: a gear with all struts locked becomes rigid.
-    pure subroutine settle_iface(self)
+    pure subroutine settle_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
     end subroutine settle_iface
 
     !> Two per-strut quantities (strokes and their rates, or the crush history: most negative and
     !! most positive stroke reached).
-    pure subroutine per_strut_pair_iface(self, s, sd)
+    pure subroutine per_strut_pair_iface(gear, s, sd)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: s(:)               !! strokes, or most negative strokes [m]
       real(wp), intent(out) :: sd(:)              !! stroke rates [m/s], or most positive strokes [m]
     end subroutine per_strut_pair_iface
 
     !> One per-strut or per-coordinate quantity of the committed state.
-    pure subroutine vector_iface(self, v)
+    pure subroutine vector_iface(gear, v)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: v(:)               !! per strut or per coordinate [N, J, m, kg, m/s, rad/s or -]
     end subroutine vector_iface
 
     !> Replaces a per-coordinate quantity (the generalized velocities).
-    pure subroutine set_vector_iface(self, v)
+    pure subroutine set_vector_iface(gear, v)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: v(:)                !! per coordinate [m/s, rad/s]
     end subroutine set_vector_iface
 
     !> Which struts are locked (committed state).
-    pure subroutine locks_iface(self, locked)
+    pure subroutine locks_iface(gear, locked)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       logical, intent(out) :: locked(:)           !! per strut [-]
     end subroutine locks_iface
 
     !> Largest constraint violation after and before the correction so far.
-    pure subroutine violations_iface(self, violation, drift)
+    pure subroutine violations_iface(gear, violation, drift)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: violation          !! after correction [m]
       real(wp), intent(out) :: drift              !! before correction [m]
     end subroutine violations_iface
 
     !> The gear is rigid: all struts locked and at rest relative to the body (no part in the
     !! velocity projection).
-    pure logical function rigid_iface(self)
+    pure logical function rigid_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
     end function rigid_iface
 
     !> Velocity constraint rows at the current configuration (A qd = 0; the columns beyond the
     !! coordinate count zero); the gear may keep what it computed for its next evaluation at the
     !! same configuration.
-    pure subroutine rows_iface(self, a, nrow)
+    pure subroutine rows_iface(gear, a, nrow)
       import :: gear_base_t, wp, max_gear_rows, max_gear_q
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(out) :: a(max_gear_rows, max_gear_q)  !! rows (nrow x coordinate_count()) [m/rad, -]
       integer, intent(out) :: nrow                !! number of rows [-]
     end subroutine rows_iface
 
     !> Maps from the generalized velocities to the legs' relative linear momentum and their
     !! relative angular momentum about the lander origin, gear axes.
-    pure subroutine maps_iface(self, pm, hm)
+    pure subroutine maps_iface(gear, pm, hm)
       import :: gear_base_t, wp, max_gear_q
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: pm(3, max_gear_q)  !! d p_rel / d qd [kg, kg m]
       real(wp), intent(out) :: hm(3, max_gear_q)  !! d h_rel / d qd [kg m, kg m^2]
     end subroutine maps_iface
 
     !> The legs' relative momenta and relative kinetic energy, gear frame.
-    pure subroutine momenta_iface(self, p_rel, h_rel, t_rel)
+    pure subroutine momenta_iface(gear, p_rel, h_rel, t_rel)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
       real(wp), intent(out) :: h_rel(3)           !! relative angular momentum about O_L [kg m^2/s]
       real(wp), intent(out) :: t_rel              !! relative kinetic energy [J]
     end subroutine momenta_iface
 
     !> The legs' relative linear momentum, first moment of mass and mass, gear frame.
-    pure subroutine leg_momentum_iface(self, p_rel, first_moment, leg_mass)
+    pure subroutine leg_momentum_iface(gear, p_rel, first_moment, leg_mass)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
       real(wp), intent(out) :: first_moment(3)    !! sum m x [kg m]
       real(wp), intent(out) :: leg_mass           !! sum m [kg]
     end subroutine leg_momentum_iface
 
     !> Allocates a snapshot record of the gear's type (once, before the time loop).
-    subroutine new_snapshot_iface(self, snap)
+    subroutine new_snapshot_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       class(gear_snapshot_t), allocatable, intent(inout) :: snap  !! the record
     end subroutine new_snapshot_iface
 
     !> Copies the gear's evolving state out (restoring it repeats the gear bit for bit).
-    pure subroutine save_iface(self, snap)
+    pure subroutine save_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       class(gear_snapshot_t), intent(inout) :: snap  !! record from new_snapshot (contents replaced)
     end subroutine save_iface
 
     !> Puts a state from save_state back.
-    pure subroutine restore_iface(self, snap)
+    pure subroutine restore_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       class(gear_snapshot_t), intent(in) :: snap  !! saved state
     end subroutine restore_iface
   end interface
@@ -323,8 +323,8 @@ contains
   !! evaluation with the footpad force increased by df = max(1 N, 1e-4 |f_foot|) (the DAE is linear
   !! in the footpad force at fixed decisions; a gear type may override it with one more solve of its
   !! factorised system). ok = .false. (and the responses 0) when the decisions differ.
-  subroutine footpad_response(self, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
-    class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+  subroutine footpad_response(gear, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
+    class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
     type(gear_eval_t), intent(in) :: ge         !! its evaluation at f_foot and f_field
     real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame of that evaluation, gear frame [m/s^2]
@@ -341,13 +341,13 @@ contains
     real(wp) :: df
     integer :: ns
     df = max(1.0_wp, 1.0e-4_wp*norm2(f_foot))
-    call self%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
+    call gear%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
     qdd_u = 0.0_wp
     f_body_u = 0.0_wp
     m_body_u = 0.0_wp
     ok = .false.
     if (stat /= 0) return
-    ns = self%strut_count()
+    ns = gear%strut_count()
     ok = all(g2%locked(1:ns) .eqv. ge%locked(1:ns)) .and. all(g2%dir(1:ns) == ge%dir(1:ns)) &
          .and. (g2%rigid .eqv. ge%rigid)
     if (.not. ok) return
@@ -359,11 +359,11 @@ contains
   ! ---- the reports' defaults
 
   !> Default name of strut k: 'strut <k>' ('(none)' beyond the gear's struts).
-  pure function strut_name(self, k) result(name)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure function strut_name(gear, k) result(name)
+    class(gear_base_t), intent(in) :: gear      !! gear
     integer, intent(in) :: k                    !! strut [-]
     character(len=strut_name_len) :: name       !! its name [-]
-    if (k < 1 .or. k > self%strut_count()) then
+    if (k < 1 .or. k > gear%strut_count()) then
       name = '(none)'
     else
       write (name, '(a,i0)') 'strut ', k
@@ -375,91 +375,91 @@ contains
   !! Default for the committed state: from locks and axial_forces, a sliding strut crushing in
   !! the direction of its axial force (true of a rigid-plastic buffer, whose force is the bound of
   !! the side it slides toward).
-  pure subroutine strut_modes(self, m, ge)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine strut_modes(gear, m, ge)
+    class(gear_base_t), intent(in) :: gear      !! gear
     integer, intent(out) :: m(:)                !! per strut [-]
     type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
     logical :: locked(max_struts)
     real(wp) :: axial(max_struts)
     integer :: ns
-    ns = self%strut_count()
+    ns = gear%strut_count()
     if (present(ge)) then
       m(1:ns) = strut_mode_after(ge%locked(1:ns), ge%axial(1:ns), ge%dir(1:ns), ge%dir_after(1:ns), &
                                  ge%axial_after(1:ns))
     else
-      call self%locks(locked(1:ns))
-      call self%axial_forces(axial(1:ns))
+      call gear%locks(locked(1:ns))
+      call gear%axial_forces(axial(1:ns))
       m(1:ns) = strut_mode(locked(1:ns), axial(1:ns), merge(1, -1, axial(1:ns) >= 0.0_wp))
     end if
   end subroutine strut_modes
 
   !> Axial buffer forces of the committed state. Default: 0 (a gear type that does not report them).
-  pure subroutine axial_forces(self, v)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine axial_forces(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
     real(wp), intent(out) :: v(:)               !! per strut [N]
-    v(1:self%strut_count()) = 0.0_wp
+    v(1:gear%strut_count()) = 0.0_wp
   end subroutine axial_forces
 
   !> Most negative and most positive stroke reached by each strut. Default: what the present
   !! strokes show (min(0, s), max(0, s)), for a gear type that keeps no history.
-  pure subroutine crush_history(self, s_min, s_max)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine crush_history(gear, s_min, s_max)
+    class(gear_base_t), intent(in) :: gear      !! gear
     real(wp), intent(out) :: s_min(:)           !! most negative strokes [m]
     real(wp), intent(out) :: s_max(:)           !! most positive strokes [m]
     real(wp) :: s(max_struts), sd(max_struts)
     integer :: ns
-    ns = self%strut_count()
-    call self%strokes(s(1:ns), sd(1:ns))
+    ns = gear%strut_count()
+    call gear%strokes(s(1:ns), sd(1:ns))
     s_min(1:ns) = min(0.0_wp, s(1:ns))
     s_max(1:ns) = max(0.0_wp, s(1:ns))
   end subroutine crush_history
 
   !> Energy absorbed by each buffer so far. Default: 0 (a gear type that does not book it).
-  pure subroutine crush_work(self, v)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine crush_work(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
     real(wp), intent(out) :: v(:)               !! per strut [J]
-    v(1:self%strut_count()) = 0.0_wp
+    v(1:gear%strut_count()) = 0.0_wp
   end subroutine crush_work
 
   !> Stroke capacity of strut k's buffer in each direction. Default: unlimited toward +s, none
   !! toward -s (no stroke margin to report); 0 beyond the gear's struts.
-  subroutine buffer_capacity(self, k, cap_pos, cap_neg)
-    class(gear_base_t), intent(in) :: self      !! gear
+  subroutine buffer_capacity(gear, k, cap_pos, cap_neg)
+    class(gear_base_t), intent(in) :: gear      !! gear
     integer, intent(in) :: k                    !! strut [-]
     real(wp), intent(out) :: cap_pos            !! toward +s [m]
     real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
-    cap_pos = merge(huge(1.0_wp), 0.0_wp, k >= 1 .and. k <= self%strut_count())
+    cap_pos = merge(huge(1.0_wp), 0.0_wp, k >= 1 .and. k <= gear%strut_count())
     cap_neg = 0.0_wp
   end subroutine buffer_capacity
 
   !> The piece of each strut's buffer law at the current strokes (the adaptive integrator bisects
   !! a step in which one changes). Default: 1, one piece.
-  pure subroutine law_segments(self, v)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine law_segments(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
     integer, intent(out) :: v(:)                !! per strut [-]
-    v(1:self%strut_count()) = 1
+    v(1:gear%strut_count()) = 1
   end subroutine law_segments
 
   !> Error-norm weights of the coordinates (the adaptive integrator's error norm). Default: 1.
-  pure subroutine coordinate_weights(self, v)
-    class(gear_base_t), intent(in) :: self      !! gear
+  pure subroutine coordinate_weights(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
     real(wp), intent(out) :: v(:)               !! per coordinate [-]
-    v(1:self%coordinate_count()) = 1.0_wp
+    v(1:gear%coordinate_count()) = 1.0_wp
   end subroutine coordinate_weights
 
   !> Prepares what the next evaluation of a gear that has become rigid (settle) needs, its caches.
   !! Default, for a gear type without caches: checks that a rigid gear is at rest (the contract of
   !! settle and set_rates).
-  subroutine prepare(self, stat, errmsg)
-    class(gear_base_t), intent(inout) :: self   !! gear
+  subroutine prepare(gear, stat, errmsg)
+    class(gear_base_t), intent(inout) :: gear   !! gear
     integer, intent(out) :: stat                !! STAT_OK on success
     character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
     real(wp) :: qd(max_gear_q)
     integer :: nq
     stat = STAT_OK
-    if (.not. self%is_rigid()) return
-    nq = self%coordinate_count()
-    call self%rates(qd(1:nq))
+    if (.not. gear%is_rigid()) return
+    nq = gear%coordinate_count()
+    call gear%rates(qd(1:nq))
     if (any(abs(qd(1:nq)) > 0.0_wp)) then
       stat = STAT_FAILED
       errmsg = 'a rigid gear is not at rest'
