@@ -6,7 +6,7 @@
 !! integrator's (numerics/).
 submodule (landyn_tripod_gear) landyn_tripod_constraints
   use landyn_kinds, only: msg_len
-  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
+  use landyn_tripod_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK, STAT_DIVERGED

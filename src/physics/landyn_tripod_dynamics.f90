@@ -17,7 +17,8 @@
 !! cross-checking.
 submodule (landyn_tripod_gear) landyn_tripod_dynamics
   use landyn_buffer, only: rigid_force
-  use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3, axis_derivs_t
+  use landyn_kinematics, only: cross3, axis_derivs_t
+  use landyn_tripod_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
   use landyn_status, only: STAT_OK

@@ -2,7 +2,8 @@
 !! accessors through which the other layers and the tests read and set its (private) state.
 submodule (landyn_tripod_gear) landyn_tripod_setup
   use, intrinsic :: iso_fortran_env, only: int64
-  use landyn_kinematics, only: strut_axis_derivs, strut_axis_derivs_trig, gear_trig
+  use landyn_kinematics, only: strut_axis_derivs, strut_axis_derivs_trig
+  use landyn_tripod_kinematics, only: gear_trig
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strut, only: strut_from_mass
   implicit none
