@@ -5,7 +5,7 @@
 !! the table.
 module landyn_api_outputs
   use landyn_kinds, only: wp, deg2rad, rad2deg
-  use landyn_gear, only: strut_names
+  use landyn_tripod_gear, only: strut_names
   use landyn_loads, only: n_load, load_names
   use landyn_sim_result, only: sim_result_t
   use landyn_strings, only: int_text
@@ -97,7 +97,7 @@ contains
     end do
   end function api_output_list
 
-  !> A strut's name (landyn_gear's strut_names; 'strut <s>' beyond them).
+  !> A strut's name (landyn_tripod_gear's strut_names; 'strut <s>' beyond them).
   pure function strut_name(s) result(name)
     integer, intent(in) :: s                  !! strut number [-]
     character(len=:), allocatable :: name     !! its name [-]

@@ -2,7 +2,7 @@
 !!
 !! A buffer law does not integrate anything itself: it tells the gear solver how much axial force
 !! the strut can transmit before it gives way, in each direction of motion, given the stroke and
-!! the crush history. The gear solver (landyn_gear) enforces the crush logic of eqs. 12-13 with
+!! the crush history. The gear solver (landyn_tripod_gear) enforces the crush logic of eqs. 12-13 with
 !! these bounds: a strut at rest stays locked while the force it must carry lies within the bounds
 !! (N = F, no driving force); beyond a bound it crushes with N = bound and the excess drives its
 !! sliding coordinate; a crushing strut whose sliding speed reaches zero locks again.

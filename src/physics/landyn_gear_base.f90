@@ -12,6 +12,7 @@
 !! max_struts and max_gear_q (landyn_kinds), the capacities the simulation's records are sized by.
 module landyn_gear_base
   use landyn_kinds, only: wp, max_struts, max_gear_q, max_gear_rows
+  use landyn_status, only: STAT_OK, STAT_FAILED
   implicit none
   private
 
@@ -61,48 +62,53 @@ module landyn_gear_base
     real(wp) :: free_hi(max_struts) = 0.0_wp      !! upper end [m]
   end type gear_eval_t
 
-  !> A landing gear: struts, footpad and their state.
+  !> A landing gear: struts, footpad and their state. Two parts:
+  !!
+  !! - the dynamics (deferred): what the simulation calls per step (landyn_sim_core, landyn_sim_state,
+  !!   landyn_impact, the integrators) and to set up and save its model (landyn_sim_model);
+  !! - the reports (defaults a simple gear inherits; a gear type overrides what it knows better):
+  !!   what the recorder, the summary and the health checks read (landyn_sim_result), the error
+  !!   weights and law segments the adaptive integrator compares, and the rigid gear's caches.
+  !!   strut_lengths and violations have no sensible default and stay deferred.
   type, abstract :: gear_base_t
   contains
+    ! ---- the dynamics
     procedure(count_iface), deferred :: strut_count                    !! number of struts [-]
     procedure(count_iface), deferred :: coordinate_count               !! number of generalized coordinates [-]
-    procedure(name_iface), deferred :: strut_name                      !! name of strut k (reports)
     procedure(rotation_iface), deferred :: rotation                    !! gear frame -> lander frame rotation [-]
     procedure(footpad_iface), deferred :: footpad                      !! footpad position and velocity, gear frame [m, m/s]
     procedure(evaluate_iface), deferred :: evaluate                    !! crush logic and accelerations into a gear_eval_t
     procedure(commit_iface), deferred :: commit                        !! makes an evaluation the committed state
-    procedure(dynamics_iface), deferred :: dynamics                    !! evaluate and commit in one call
     procedure(arrest_iface), deferred :: arrest                        !! crush modes at the end of a step
     procedure(increment_iface), deferred :: increment                  !! q <- q + qd h, with the crush work
     procedure(correct_iface), deferred :: correct_positions            !! position projection onto the constraints
     procedure(settle_iface), deferred :: settle                        !! all struts locked: the gear becomes rigid
-    procedure(prepare_iface), deferred :: prepare                      !! caches for the next evaluation of a rigid gear
-    procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
-    procedure(per_strut_pair_iface), deferred :: crush_history         !! most negative and positive strokes reached [m]
-    procedure(vector_iface), deferred :: axial_forces                  !! axial buffer forces [N]
-    procedure(vector_iface), deferred :: crush_work                    !! energy absorbed by each buffer [J]
-    procedure(vector_iface), deferred :: strut_lengths                 !! strut lengths [m]
-    procedure(int_per_strut_iface), deferred :: law_segments           !! piece of each buffer law [-]
-    procedure(locks_iface), deferred :: locks                          !! which struts are locked [-]
-    procedure(modes_iface), deferred :: strut_modes                    !! crush mode of each strut [-]
-    procedure(capacity_iface), deferred :: buffer_capacity             !! stroke capacity of strut k's buffer [m]
-    procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
-    procedure(vector_iface), deferred :: coordinate_weights            !! error-norm weights of the coordinates [-]
-    procedure(vector_iface), deferred :: coordinates                   !! generalized coordinates [m, rad]
-    procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
-    procedure(vector_iface), deferred :: accelerations                 !! committed generalized accelerations [m/s^2, rad/s^2]
-    procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
     procedure(rigid_iface), deferred :: is_rigid                       !! all struts locked and at rest
+    procedure(locks_iface), deferred :: locks                          !! which struts are locked [-]
+    procedure(per_strut_pair_iface), deferred :: strokes               !! strokes and stroke rates [m, m/s]
+    procedure(vector_iface), deferred :: rates                         !! generalized velocities [m/s, rad/s]
+    procedure(set_vector_iface), deferred :: set_rates                 !! replaces the generalized velocities
+    procedure(vector_iface), deferred :: accelerations                 !! committed generalized accelerations [m/s^2, rad/s^2]
     procedure(rows_iface), deferred :: velocity_rows                   !! velocity constraint rows (A qd = 0)
     procedure(vector_iface), deferred :: mass_diagonal                 !! mass matrix diagonal [kg, kg m^2]
     procedure(maps_iface), deferred :: momentum_maps                   !! maps from qd to the legs' momenta
     procedure(momenta_iface), deferred :: relative_momenta             !! legs' relative momenta and kinetic energy
     procedure(leg_momentum_iface), deferred :: leg_momentum            !! legs' momentum, first moment and mass
-    procedure(body_load_iface), deferred :: body_load                  !! load on the body and its moment [N, N m]
-    procedure(energy_iface), deferred :: relative_kinetic_energy       !! legs' kinetic energy relative to the body [J]
     procedure(new_snapshot_iface), deferred :: new_snapshot            !! allocates a snapshot of the gear's type
     procedure(save_iface), deferred :: save_state                      !! copies the evolving state out
     procedure(restore_iface), deferred :: restore_state                !! puts a saved state back
+    ! ---- the reports (strut_lengths and violations deferred, the others with defaults)
+    procedure(vector_iface), deferred :: strut_lengths                 !! strut lengths [m]
+    procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
+    procedure :: strut_name                                            !! name of strut k (reports)
+    procedure :: strut_modes                                           !! crush mode of each strut [-]
+    procedure :: axial_forces                                          !! axial buffer forces [N]
+    procedure :: crush_history                                         !! most negative and positive strokes reached [m]
+    procedure :: crush_work                                            !! energy absorbed by each buffer [J]
+    procedure :: buffer_capacity                                       !! stroke capacity of strut k's buffer [m]
+    procedure :: law_segments                                          !! piece of each buffer law [-]
+    procedure :: coordinate_weights                                    !! error-norm weights of the coordinates [-]
+    procedure :: prepare                                               !! caches for the next evaluation of a rigid gear
     procedure :: footpad_response                                      !! response to a footpad force [m/s^2/N, ...]
   end type gear_base_t
 
@@ -122,30 +128,22 @@ module landyn_gear_base
 
   abstract interface
     !> A count of the gear type (struts, generalized coordinates).
-    pure integer function count_iface(self)
+    pure integer function count_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
     end function count_iface
 
-    !> The name of strut k (reports).
-    pure function name_iface(self, k) result(name)
-      import :: gear_base_t, strut_name_len
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(in) :: k                    !! strut [-]
-      character(len=strut_name_len) :: name       !! its name [-]
-    end function name_iface
-
     !> Gear frame -> lander frame rotation.
-    pure function rotation_iface(self) result(rot)
+    pure function rotation_iface(gear) result(rot)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp) :: rot(3, 3)                       !! [-]
     end function rotation_iface
 
     !> Footpad joint position and its velocity relative to the body, gear frame.
-    pure subroutine footpad_iface(self, pos, vel, rates)
+    pure subroutine footpad_iface(gear, pos, vel, rates)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: pos(3)             !! position [m]
       real(wp), intent(out) :: vel(3)             !! velocity [m/s]
       real(wp), intent(in), optional :: rates(:)  !! generalized velocities to take it with; default the
@@ -155,9 +153,9 @@ module landyn_gear_base
     !> Crush logic and accelerations of the committed state for a footpad force and the uniform
     !! field, into an evaluation record (every component set anew); the gear is not changed
     !! (commit makes it its state).
-    subroutine evaluate_iface(self, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
+    subroutine evaluate_iface(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
       import :: gear_base_t, gear_eval_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+      class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
       ! inout, not out: the gear type resets the record itself (once, not once per layer)
       type(gear_eval_t), intent(inout) :: ge      !! the evaluation (previous contents replaced)
       real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
@@ -170,47 +168,35 @@ module landyn_gear_base
     end subroutine evaluate_iface
 
     !> Makes an evaluation the gear's committed state (accelerations, forces, lock decisions).
-    pure subroutine commit_iface(self, ge)
+    pure subroutine commit_iface(gear, ge)
       import :: gear_base_t, gear_eval_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       type(gear_eval_t), intent(in) :: ge         !! its evaluation
     end subroutine commit_iface
-
-    !> Crush logic and accelerations for a footpad force and the uniform field, committed as the
-    !! gear's state (buffer forces, modes, the load on the body).
-    subroutine dynamics_iface(self, f_foot, f_field, stat, errmsg, dt)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
-      real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
-      real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame, gear frame [m/s^2]
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-      real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
-    end subroutine dynamics_iface
 
     !> The crush law's decision over a step: a crushing strut whose stroke rate would reverse between
     !! the committed rates and the integrator's end-of-step rates locks at its present stroke. A gear
     !! that moves leaves the rigid state.
-    pure subroutine arrest_iface(self, qd_end)
+    pure subroutine arrest_iface(gear, qd_end)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: qd_end(:)           !! end-of-step generalized velocities [m/s, rad/s]
     end subroutine arrest_iface
 
     !> Moves the coordinates by qd h and books the crush work of the committed buffer forces over
     !! the stroke increment of every strut that is not locked.
-    pure subroutine increment_iface(self, qd, h)
+    pure subroutine increment_iface(gear, qd, h)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: qd(:)               !! velocity the coordinates move with [m/s, rad/s]
       real(wp), intent(in) :: h                   !! duration of the move [s]
     end subroutine increment_iface
 
     !> Projects the coordinates onto the position constraints (holonomic ones and locked strokes)
     !! and updates the crush history.
-    subroutine correct_iface(self, tol, max_iter, max_drift, stat, errmsg)
+    subroutine correct_iface(gear, tol, max_iter, max_drift, stat, errmsg)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: tol                 !! correction tolerance [m]
       integer, intent(in) :: max_iter             !! iteration cap of the correction [-]
       real(wp), intent(in) :: max_drift           !! violation before correction that means the step is too large [m]
@@ -219,159 +205,111 @@ module landyn_gear_base
     end subroutine correct_iface
 
     !> After the system's velocity projection: a gear with all struts locked becomes rigid.
-    pure subroutine settle_iface(self)
+    pure subroutine settle_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
     end subroutine settle_iface
-
-    !> Prepares what the next evaluation of a gear that has become rigid needs (caches).
-    subroutine prepare_iface(self, stat, errmsg)
-      import :: gear_base_t
-      class(gear_base_t), intent(inout) :: self   !! gear
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-    end subroutine prepare_iface
 
     !> Two per-strut quantities (strokes and their rates, or the crush history: most negative and
     !! most positive stroke reached).
-    pure subroutine per_strut_pair_iface(self, s, sd)
+    pure subroutine per_strut_pair_iface(gear, s, sd)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: s(:)               !! strokes, or most negative strokes [m]
       real(wp), intent(out) :: sd(:)              !! stroke rates [m/s], or most positive strokes [m]
     end subroutine per_strut_pair_iface
 
     !> One per-strut or per-coordinate quantity of the committed state.
-    pure subroutine vector_iface(self, v)
+    pure subroutine vector_iface(gear, v)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: v(:)               !! per strut or per coordinate [N, J, m, kg, m/s, rad/s or -]
     end subroutine vector_iface
 
     !> Replaces a per-coordinate quantity (the generalized velocities).
-    pure subroutine set_vector_iface(self, v)
+    pure subroutine set_vector_iface(gear, v)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: v(:)                !! per coordinate [m/s, rad/s]
     end subroutine set_vector_iface
 
-    !> One integer per strut (the piece of each buffer law at the current strokes).
-    pure subroutine int_per_strut_iface(self, v)
-      import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(out) :: v(:)                !! per strut [-]
-    end subroutine int_per_strut_iface
-
     !> Which struts are locked (committed state).
-    pure subroutine locks_iface(self, locked)
+    pure subroutine locks_iface(gear, locked)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       logical, intent(out) :: locked(:)           !! per strut [-]
     end subroutine locks_iface
 
-    !> Crush mode of each strut (0 locked, +1/-1 crushing toward +s/-s, 2 free) of an evaluation,
-    !! or of the committed state.
-    pure subroutine modes_iface(self, m, ge)
-      import :: gear_base_t, gear_eval_t
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(out) :: m(:)                !! per strut [-]
-      type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
-    end subroutine modes_iface
-
-    !> Stroke capacity of strut k's buffer in each direction.
-    subroutine capacity_iface(self, k, cap_pos, cap_neg)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-      integer, intent(in) :: k                    !! strut [-]
-      real(wp), intent(out) :: cap_pos            !! toward +s [m]
-      real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
-    end subroutine capacity_iface
-
     !> Largest constraint violation after and before the correction so far.
-    pure subroutine violations_iface(self, violation, drift)
+    pure subroutine violations_iface(gear, violation, drift)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: violation          !! after correction [m]
       real(wp), intent(out) :: drift              !! before correction [m]
     end subroutine violations_iface
 
     !> The gear is rigid: all struts locked and at rest relative to the body (no part in the
     !! velocity projection).
-    pure logical function rigid_iface(self)
+    pure logical function rigid_iface(gear)
       import :: gear_base_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
     end function rigid_iface
 
     !> Velocity constraint rows at the current configuration (A qd = 0; the columns beyond the
     !! coordinate count zero); the gear may keep what it computed for its next evaluation at the
     !! same configuration.
-    pure subroutine rows_iface(self, a, nrow)
+    pure subroutine rows_iface(gear, a, nrow)
       import :: gear_base_t, wp, max_gear_rows, max_gear_q
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(out) :: a(max_gear_rows, max_gear_q)  !! rows (nrow x coordinate_count()) [m/rad, -]
       integer, intent(out) :: nrow                !! number of rows [-]
     end subroutine rows_iface
 
     !> Maps from the generalized velocities to the legs' relative linear momentum and their
     !! relative angular momentum about the lander origin, gear axes.
-    pure subroutine maps_iface(self, pm, hm)
+    pure subroutine maps_iface(gear, pm, hm)
       import :: gear_base_t, wp, max_gear_q
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: pm(3, max_gear_q)  !! d p_rel / d qd [kg, kg m]
       real(wp), intent(out) :: hm(3, max_gear_q)  !! d h_rel / d qd [kg m, kg m^2]
     end subroutine maps_iface
 
     !> The legs' relative momenta and relative kinetic energy, gear frame.
-    pure subroutine momenta_iface(self, p_rel, h_rel, t_rel)
+    pure subroutine momenta_iface(gear, p_rel, h_rel, t_rel)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
       real(wp), intent(out) :: h_rel(3)           !! relative angular momentum about O_L [kg m^2/s]
       real(wp), intent(out) :: t_rel              !! relative kinetic energy [J]
     end subroutine momenta_iface
 
     !> The legs' relative linear momentum, first moment of mass and mass, gear frame.
-    pure subroutine leg_momentum_iface(self, p_rel, first_moment, leg_mass)
+    pure subroutine leg_momentum_iface(gear, p_rel, first_moment, leg_mass)
       import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       real(wp), intent(out) :: p_rel(3)           !! sum m v_rel [kg m/s]
       real(wp), intent(out) :: first_moment(3)    !! sum m x [kg m]
       real(wp), intent(out) :: leg_mass           !! sum m [kg]
     end subroutine leg_momentum_iface
 
-    !> The gear's load on the body in the model (the ground force minus the rate of the legs'
-    !! relative momentum) and its moment about the lander origin, gear frame.
-    pure subroutine body_load_iface(self, f_body, m_body)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-      real(wp), intent(out) :: f_body(3)          !! force [N]
-      real(wp), intent(out) :: m_body(3)          !! moment [N m]
-    end subroutine body_load_iface
-
-    !> Kinetic energy of the leg parts relative to the body.
-    pure real(wp) function energy_iface(self)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: self      !! gear
-    end function energy_iface
-
     !> Allocates a snapshot record of the gear's type (once, before the time loop).
-    subroutine new_snapshot_iface(self, snap)
+    subroutine new_snapshot_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       class(gear_snapshot_t), allocatable, intent(inout) :: snap  !! the record
     end subroutine new_snapshot_iface
 
     !> Copies the gear's evolving state out (restoring it repeats the gear bit for bit).
-    pure subroutine save_iface(self, snap)
+    pure subroutine save_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(in) :: self      !! gear
+      class(gear_base_t), intent(in) :: gear      !! gear
       class(gear_snapshot_t), intent(inout) :: snap  !! record from new_snapshot (contents replaced)
     end subroutine save_iface
 
     !> Puts a state from save_state back.
-    pure subroutine restore_iface(self, snap)
+    pure subroutine restore_iface(gear, snap)
       import :: gear_base_t, gear_snapshot_t
-      class(gear_base_t), intent(inout) :: self   !! gear
+      class(gear_base_t), intent(inout) :: gear   !! gear
       class(gear_snapshot_t), intent(in) :: snap  !! saved state
     end subroutine restore_iface
   end interface
@@ -385,8 +323,8 @@ contains
   !! evaluation with the footpad force increased by df = max(1 N, 1e-4 |f_foot|) (the DAE is linear
   !! in the footpad force at fixed decisions; a gear type may override it with one more solve of its
   !! factorised system). ok = .false. (and the responses 0) when the decisions differ.
-  subroutine footpad_response(self, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
-    class(gear_base_t), intent(in) :: self      !! gear (unchanged)
+  subroutine footpad_response(gear, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
+    class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
     type(gear_eval_t), intent(in) :: ge         !! its evaluation at f_foot and f_field
     real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame of that evaluation, gear frame [m/s^2]
@@ -403,13 +341,13 @@ contains
     real(wp) :: df
     integer :: ns
     df = max(1.0_wp, 1.0e-4_wp*norm2(f_foot))
-    call self%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
+    call gear%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
     qdd_u = 0.0_wp
     f_body_u = 0.0_wp
     m_body_u = 0.0_wp
     ok = .false.
     if (stat /= 0) return
-    ns = self%strut_count()
+    ns = gear%strut_count()
     ok = all(g2%locked(1:ns) .eqv. ge%locked(1:ns)) .and. all(g2%dir(1:ns) == ge%dir(1:ns)) &
          .and. (g2%rigid .eqv. ge%rigid)
     if (.not. ok) return
@@ -417,6 +355,116 @@ contains
     f_body_u = (g2%f_body - ge%f_body)/df
     m_body_u = (g2%m_body - ge%m_body)/df
   end subroutine footpad_response
+
+  ! ---- the reports' defaults
+
+  !> Default name of strut k: 'strut <k>' ('(none)' beyond the gear's struts).
+  pure function strut_name(gear, k) result(name)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    integer, intent(in) :: k                    !! strut [-]
+    character(len=strut_name_len) :: name       !! its name [-]
+    if (k < 1 .or. k > gear%strut_count()) then
+      name = '(none)'
+    else
+      write (name, '(a,i0)') 'strut ', k
+    end if
+  end function strut_name
+
+  !> Crush mode of each strut (strut_mode; 0 locked, +1/-1 crushing toward +s/-s, 2 free) of an
+  !! evaluation (the mode it leaves the step in, strut_mode_after), or of the committed state.
+  !! Default for the committed state: from locks and axial_forces, a sliding strut crushing in
+  !! the direction of its axial force (true of a rigid-plastic buffer, whose force is the bound of
+  !! the side it slides toward).
+  pure subroutine strut_modes(gear, m, ge)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    integer, intent(out) :: m(:)                !! per strut [-]
+    type(gear_eval_t), intent(in), optional :: ge  !! the evaluation; default the committed state
+    logical :: locked(max_struts)
+    real(wp) :: axial(max_struts)
+    integer :: ns
+    ns = gear%strut_count()
+    if (present(ge)) then
+      m(1:ns) = strut_mode_after(ge%locked(1:ns), ge%axial(1:ns), ge%dir(1:ns), ge%dir_after(1:ns), &
+                                 ge%axial_after(1:ns))
+    else
+      call gear%locks(locked(1:ns))
+      call gear%axial_forces(axial(1:ns))
+      m(1:ns) = strut_mode(locked(1:ns), axial(1:ns), merge(1, -1, axial(1:ns) >= 0.0_wp))
+    end if
+  end subroutine strut_modes
+
+  !> Axial buffer forces of the committed state. Default: 0 (a gear type that does not report them).
+  pure subroutine axial_forces(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    real(wp), intent(out) :: v(:)               !! per strut [N]
+    v(1:gear%strut_count()) = 0.0_wp
+  end subroutine axial_forces
+
+  !> Most negative and most positive stroke reached by each strut. Default: what the present
+  !! strokes show (min(0, s), max(0, s)), for a gear type that keeps no history.
+  pure subroutine crush_history(gear, s_min, s_max)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    real(wp), intent(out) :: s_min(:)           !! most negative strokes [m]
+    real(wp), intent(out) :: s_max(:)           !! most positive strokes [m]
+    real(wp) :: s(max_struts), sd(max_struts)
+    integer :: ns
+    ns = gear%strut_count()
+    call gear%strokes(s(1:ns), sd(1:ns))
+    s_min(1:ns) = min(0.0_wp, s(1:ns))
+    s_max(1:ns) = max(0.0_wp, s(1:ns))
+  end subroutine crush_history
+
+  !> Energy absorbed by each buffer so far. Default: 0 (a gear type that does not book it).
+  pure subroutine crush_work(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    real(wp), intent(out) :: v(:)               !! per strut [J]
+    v(1:gear%strut_count()) = 0.0_wp
+  end subroutine crush_work
+
+  !> Stroke capacity of strut k's buffer in each direction. Default: unlimited toward +s, none
+  !! toward -s (no stroke margin to report); 0 beyond the gear's struts.
+  subroutine buffer_capacity(gear, k, cap_pos, cap_neg)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    integer, intent(in) :: k                    !! strut [-]
+    real(wp), intent(out) :: cap_pos            !! toward +s [m]
+    real(wp), intent(out) :: cap_neg            !! toward -s (0: none) [m]
+    cap_pos = merge(huge(1.0_wp), 0.0_wp, k >= 1 .and. k <= gear%strut_count())
+    cap_neg = 0.0_wp
+  end subroutine buffer_capacity
+
+  !> The piece of each strut's buffer law at the current strokes (the adaptive integrator bisects
+  !! a step in which one changes). Default: 1, one piece.
+  pure subroutine law_segments(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    integer, intent(out) :: v(:)                !! per strut [-]
+    v(1:gear%strut_count()) = 1
+  end subroutine law_segments
+
+  !> Error-norm weights of the coordinates (the adaptive integrator's error norm). Default: 1.
+  pure subroutine coordinate_weights(gear, v)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    real(wp), intent(out) :: v(:)               !! per coordinate [-]
+    v(1:gear%coordinate_count()) = 1.0_wp
+  end subroutine coordinate_weights
+
+  !> Prepares what the next evaluation of a gear that has become rigid (settle) needs, its caches.
+  !! Default, for a gear type without caches: checks that a rigid gear is at rest (the contract of
+  !! settle and set_rates).
+  subroutine prepare(gear, stat, errmsg)
+    class(gear_base_t), intent(inout) :: gear   !! gear
+    integer, intent(out) :: stat                !! STAT_OK on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    real(wp) :: qd(max_gear_q)
+    integer :: nq
+    stat = STAT_OK
+    if (.not. gear%is_rigid()) return
+    nq = gear%coordinate_count()
+    call gear%rates(qd(1:nq))
+    if (any(abs(qd(1:nq)) > 0.0_wp)) then
+      stat = STAT_FAILED
+      errmsg = 'a rigid gear is not at rest'
+    end if
+  end subroutine prepare
 
   !> The crush mode a strut has after the step of an evaluation (strut_mode of the mode it leaves the
   !! step in: a strut stopped in the step and leaving it sliding, gear_eval_t%dir_after /= 0, is not

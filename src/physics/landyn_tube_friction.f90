@@ -13,7 +13,7 @@
 !! so the sliding friction between the tubes is eta u_1 N_E/F, eta = eta1 eta2 (eq. 25), and the
 !! primary's crush force becomes F_pri + eta u_1 N_E/F (eq. 24).
 !!
-!! Use (landyn_gear): the extra bound is computed explicitly, once per step, from the secondary
+!! Use (landyn_tripod_gear): the extra bound is computed explicitly, once per step, from the secondary
 !! axial forces of the previous step and the current strut axes, and added to the primary's
 !! bounds against motion in each direction (the friction opposes the sliding, whichever way; it
 !! also acts when the strut slides freely inside its crushed range). Rigid stops are unchanged.

@@ -39,7 +39,7 @@ module landyn_study
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, &
                           EXIT_NO_TOUCHDOWN
   use landyn_files, only: base_name
-  use landyn_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
+  use landyn_tripod_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
   use landyn_namelist_text, only: strip_comments, next_group, line_of, &
                                   mask_non_ascii
   implicit none

@@ -4,9 +4,9 @@
 !! (A^+ = A^T (A A^T)^-1) with the crush history, the velocity rows A of the system velocity
 !! projection (landyn_impact) and the projection of a gear alone. No update formula: that is the
 !! integrator's (numerics/).
-submodule (landyn_gear) landyn_gear_constraints
+submodule (landyn_tripod_gear) landyn_tripod_constraints
   use landyn_kinds, only: msg_len
-  use landyn_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
+  use landyn_tripod_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
   use landyn_status, only: STAT_OK, STAT_DIVERGED
@@ -173,11 +173,16 @@ contains
     call build_rows(gear, gear%st%q, a, nrow)
   end procedure gear_velocity_rows
 
+  module procedure tripod_velocity_rows
+    call gear_velocity_rows(gear, a, nrow)
+    call gear_cache_jacobian(gear, a(1:n_phi, :))
+  end procedure tripod_velocity_rows
+
   !> The kinematics cache (what cache_kinematics stores), the Phi_q cache and the trigonometry
   !! cache at the current coordinates, from their joint trigonometry tr: the same values as from
   !! the angles.
   pure subroutine cache_corrected(gear, tr)
-    type(gear_t), intent(inout) :: gear          !! gear
+    type(tripod_gear_t), intent(inout) :: gear          !! gear
     type(joint_trig_t), intent(in) :: tr(3)      !! gear_trig(gear%st%q) [-]
     call kinematics_at(gear%geom, gear%strut, gear%st%q, gear%st%kin, tr)
     gear%st%kin_q = gear%st%q
@@ -192,7 +197,7 @@ contains
   !! is at qv bit for bit (gear_correct_positions caches it at the corrected coordinates), else
   !! computed, from the joint trigonometry tr when given.
   pure subroutine build_rows(gear, qv, a, nrow, tr)
-    type(gear_t), intent(in) :: gear           !! gear
+    type(tripod_gear_t), intent(in) :: gear           !! gear
     real(wp), intent(in) :: qv(n_q)            !! coordinates
     real(wp), intent(out) :: a(max_rows, n_q)  !! rows
     integer, intent(out) :: nrow               !! number of rows
@@ -215,7 +220,7 @@ contains
 
   !> Position residual: Phi(q) and the locked strokes' departure from their held values.
   subroutine position_residual(gear, qv, nrow, r, tr)
-    type(gear_t), intent(in) :: gear        !! gear
+    type(tripod_gear_t), intent(in) :: gear        !! gear
     real(wp), intent(in) :: qv(n_q)         !! coordinates
     integer, intent(in) :: nrow             !! number of rows
     real(wp), intent(out) :: r(max_rows)    !! residual
@@ -235,4 +240,4 @@ contains
     if (row /= nrow) r(row + 1:) = 0.0_wp
   end subroutine position_residual
 
-end submodule landyn_gear_constraints
+end submodule landyn_tripod_constraints

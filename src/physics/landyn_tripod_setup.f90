@@ -1,8 +1,9 @@
 !> The gear's set-up (gear_init), footpad, strut kinematics, mass matrix and strokes, and the
 !! accessors through which the other layers and the tests read and set its (private) state.
-submodule (landyn_gear) landyn_gear_setup
+submodule (landyn_tripod_gear) landyn_tripod_setup
   use, intrinsic :: iso_fortran_env, only: int64
-  use landyn_kinematics, only: strut_axis_derivs, strut_axis_derivs_trig, gear_trig
+  use landyn_kinematics, only: strut_axis_derivs, strut_axis_derivs_trig
+  use landyn_tripod_kinematics, only: gear_trig
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_strut, only: strut_from_mass
   implicit none
@@ -71,8 +72,8 @@ contains
     else
       call strut_axis_derivs(gear%geom%R0p, gear%st%q(2), gear%st%q(3), u, du1, du2, d11, d12, d22)
     end if
-    if (present(qd)) then
-      v = qd
+    if (present(rates)) then
+      v = rates(1:n_q)
     else
       v = gear%st%qd
     end if
@@ -174,7 +175,7 @@ contains
     integer :: k
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
     do k = 1, 3
-      seg(k) = gear%buffer(k)%law%segment(s(k))
+      v(k) = gear%buffer(k)%law%segment(s(k))
     end do
   end procedure gear_law_segments
 
@@ -208,7 +209,7 @@ contains
   end procedure gear_rates
 
   module procedure gear_set_rates
-    gear%st%qd = qd
+    gear%st%qd = v(1:n_q)
   end procedure gear_set_rates
 
   module procedure gear_locks
@@ -238,8 +239,8 @@ contains
   end procedure gear_mass_diagonal
 
   module procedure gear_crush_history
-    s_min = gear%st%s_hismin
-    s_max = gear%st%s_hismax
+    s_min(1:n_struts) = gear%st%s_hismin
+    s_max(1:n_struts) = gear%st%s_hismax
   end procedure gear_crush_history
 
   module procedure gear_crush_work
@@ -330,4 +331,94 @@ contains
     len0 = gear%len0
   end procedure gear_nominal_lengths
 
-end submodule landyn_gear_setup
+  ! ---- the gear_base_t bindings
+
+  module procedure tripod_init
+    integer :: k
+    call gear_set_buffer(self, 1, primary)
+    do k = 2, n_struts
+      call gear_set_buffer(self, k, secondary)
+    end do
+    call gear_init(self, geom, rot, mass, stat, errmsg, tube)
+  end procedure tripod_init
+
+  module procedure tripod_strut_count
+    n = size(gear%len0)
+  end procedure tripod_strut_count
+
+  module procedure tripod_coordinate_count
+    n = size(gear%st%q)
+  end procedure tripod_coordinate_count
+
+  module procedure tripod_strut_name
+    name = strut_names(max(1, min(k, size(gear%len0))))
+  end procedure tripod_strut_name
+
+  module procedure tripod_locks
+    locked(1:n_struts) = gear%st%locked
+  end procedure tripod_locks
+
+  module procedure tripod_rates
+    v(1:n_q) = gear%st%qd
+  end procedure tripod_rates
+
+  module procedure tripod_accelerations
+    v(1:n_q) = gear%st%qdd
+  end procedure tripod_accelerations
+
+  module procedure tripod_mass_diagonal
+    v(1:n_q) = gear_mass_matrix(gear, gear%st%q)
+  end procedure tripod_mass_diagonal
+
+  module procedure tripod_strut_lengths
+    v(1:n_struts) = gear%st%q(idx_len)
+  end procedure tripod_strut_lengths
+
+  module procedure tripod_axial_forces
+    v(1:n_struts) = gear%st%axial
+  end procedure tripod_axial_forces
+
+  module procedure tripod_crush_work
+    v(1:n_struts) = gear%st%work_crush
+  end procedure tripod_crush_work
+
+  module procedure tripod_strut_modes
+    if (present(ge)) then
+      ! the mode each strut leaves the step in (a strut stopped by its lock row may leave it sliding)
+      m(1:n_struts) = strut_mode_after(ge%locked(1:n_struts), ge%axial(1:n_struts), ge%dir(1:n_struts), &
+                                       ge%dir_after(1:n_struts), ge%axial_after(1:n_struts))
+    else
+      m(1:n_struts) = strut_modes(gear%st%locked, gear%st%axial, gear%st%dir)
+    end if
+  end procedure tripod_strut_modes
+
+  module procedure tripod_coordinate_weights
+    integer :: k
+    do k = 1, n_struts
+      v(idx_len(k)) = 1.0_wp
+      v(idx_len(k) + 1:idx_len(k) + 2) = gear%st%q(idx_len(k))
+    end do
+  end procedure tripod_coordinate_weights
+
+  module procedure tripod_new_snapshot
+    type(tripod_snapshot_t) :: mold
+    if (allocated(snap)) deallocate (snap)
+    mold%st = gear%st
+    allocate (snap, source=mold)
+  end procedure tripod_new_snapshot
+
+  module procedure tripod_save_state
+    select type (snap)
+    type is (tripod_snapshot_t)
+      snap%st = gear%st
+    end select
+  end procedure tripod_save_state
+
+  module procedure tripod_restore_state
+    select type (snap)
+    type is (tripod_snapshot_t)
+      gear%st = snap%st
+    end select
+  end procedure tripod_restore_state
+
+end submodule landyn_tripod_setup

@@ -1,6 +1,6 @@
 !> Interface loads of a gear: the forces and moments of the upper joints on the body and of the
 !! footpad on the primary, from each strut's free-body balance (landyn_loads collects them).
-submodule (landyn_gear) landyn_gear_joint_loads
+submodule (landyn_tripod_gear) landyn_tripod_joint_loads
   use landyn_kinematics, only: cross3
   implicit none
 
@@ -65,4 +65,4 @@ contains
     f_interface = f_body + m_leg*f_field - cross3(alpha, fm - m_leg*gear%geom%a)
   end procedure joint_loads
 
-end submodule landyn_gear_joint_loads
+end submodule landyn_tripod_joint_loads

@@ -15,9 +15,10 @@
 !! lock rows) is solved by block elimination with LAPACK's Cholesky (M is diagonal, so the Schur
 !! complement A M^-1 A^T is small and SPD); test_gear solves the unreduced system with LU for
 !! cross-checking.
-submodule (landyn_gear) landyn_gear_dynamics
+submodule (landyn_tripod_gear) landyn_tripod_dynamics
   use landyn_buffer, only: rigid_force
-  use landyn_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma, cross3, axis_derivs_t
+  use landyn_kinematics, only: cross3, axis_derivs_t
+  use landyn_tripod_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
   use landyn_status, only: STAT_OK
@@ -62,6 +63,7 @@ contains
     logical :: with_loads, done, stopped(3)
     real(wp) :: demand0(3), f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
 
+    ge = gear_eval_t()      ! every component anew (ge is inout: reset here, once)
     stat = STAT_OK
     with_loads = .true.
     if (present(loads)) with_loads = loads
@@ -105,7 +107,7 @@ contains
   !! directions, lock strokes, tube bound, rigid state), no margins and no mode after a stop yet.
   !! With tube friction on, the primary's tube bound of this step (eqs. 23-26).
   subroutine evaluation_start(gear, ge)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation to start [-]
     ge%qdd = gear%st%qdd
     ge%axial = gear%st%axial
@@ -130,7 +132,7 @@ contains
   !! the constraint Jacobian Phi_q and the constraint right-hand side gamma (from the caches where
   !! they hold for the committed coordinates).
   subroutine system_terms(gear, f_foot, f_field, w, alpha)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     type(eval_work_t), intent(inout) :: w        !! work: sk, mdiag, q_ine, q_grv, q_ext, q_alp, phq, gam set [-]
@@ -165,7 +167,7 @@ contains
   !! (crushed) range and the resistance toward +s and -s, the primary's with its tube-friction bound
   !! (eq. 24).
   subroutine strut_bounds(gear, ge, w)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: stroke, free_lo, free_hi set [-]
     type(eval_work_t), intent(inout) :: w        !! work: s, sd, fpos, fneg set [-]
     integer :: k
@@ -182,7 +184,7 @@ contains
   !> Sliding struts transmit their bound against the direction of motion; a sliding strut that runs
   !! into a rigid stop is locked (plastic impact on the stop; stop_hit).
   subroutine slide_against_motion(gear, ge, w)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: dir, axial, locked, s_lock of sliding struts [-]
     type(eval_work_t), intent(inout) :: w        !! work: stop_hit set [-]
     integer :: k
@@ -208,7 +210,7 @@ contains
   !! then lock crushing struts that would reverse within the step, release locks whose force exceeds
   !! the bound, and repeat (at most 8 passes) until no mode changes (changed = .false.).
   subroutine settle_modes(gear, ge, w, stat, errmsg, dt)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: qdd, axial, locks, dir, margin_in [-]
     type(eval_work_t), intent(inout) :: w        !! work: the last pass's system, multipliers and flags [-]
     integer, intent(out) :: stat                 !! STAT_OK on success [-]
@@ -242,7 +244,7 @@ contains
   !> The augmented system of the current locks: A = [Phi_q; lock rows], b = [gamma; lock rates] and
   !! the generalized force with the sliding struts' axial forces.
   subroutine assemble_system(gear, ge, w, dt)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(in) :: ge          !! evaluation: locks and axial forces [-]
     type(eval_work_t), intent(inout) :: w        !! work: nrow, a, b, row_of, q_tot set [-]
     real(wp), intent(in), optional :: dt         !! step the decisions are for [s]
@@ -274,7 +276,7 @@ contains
   !> A crushing strut (nonzero bound in its direction of motion) that would reverse within the step
   !! is locked for the step (tried), to be checked against its bounds by release_locks.
   subroutine lock_reversing(gear, ge, w, dt)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: locked, s_lock [-]
     type(eval_work_t), intent(inout) :: w        !! work: tried, changed set [-]
     real(wp), intent(in) :: dt                   !! step the decisions are for [s]
@@ -295,7 +297,7 @@ contains
   !! beyond a bound gives way and its strut slides with that bound (changed). Sets the entry margin
   !! of struts that entered locked.
   subroutine release_locks(gear, ge, w)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: axial, locked, dir, margin_in [-]
     type(eval_work_t), intent(inout) :: w        !! work: got_in, released, changed [-]
     real(wp) :: demand, axial_go
@@ -324,7 +326,7 @@ contains
   !> The primary's tube-friction bound eta u_1 N_E/F for this step, from the current strut axes and
   !! the secondary axial forces of the previous step (explicit; landyn_tube_friction).
   pure real(wp) function tube_bound_now(gear) result(bound)
-    type(gear_t), intent(in) :: gear       !! gear with its committed secondary forces [-]
+    type(tripod_gear_t), intent(in) :: gear       !! gear with its committed secondary forces [-]
     type(strut_kin_t) :: sk(3)
     call strut_kinematics(gear, gear%st%q, sk)
     bound = tube_friction_bound(gear%tube, sk(1)%u, sk(2)%u, sk(3)%u, gear%st%axial(2), gear%st%axial(3))
@@ -337,7 +339,7 @@ contains
   !! -demand0 and demand0 <= f_neg, the strut stays locked; beyond one it leaves the step sliding
   !! toward that side with the bound as its force (into its free crushed range where that bound is 0).
   subroutine after_stop(gear, w, stopped, ge, demand0, stat, errmsg)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(eval_work_t), intent(in) :: w           !! work: the step's system (nrow, a, b, row_of, mdiag, q_tot) and bounds [-]
     logical, intent(in) :: stopped(3)            !! strut stopped by its lock row in this step [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: dir_after, axial_after set [-]
@@ -364,7 +366,7 @@ contains
   !! lock row has those of the mode it leaves the step in, at rest (a lock's with its holding force
   !! demand0, not the stopping force; a sliding mode's with the rate zero it leaves the step with).
   subroutine margins_out(gear, w, stopped, demand0, ge)
-    type(gear_t), intent(in) :: gear             !! gear with its committed state [-]
+    type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(eval_work_t), intent(in) :: w           !! work: strokes, rates, bounds, look-ahead [-]
     logical, intent(in) :: stopped(3)            !! strut stopped by its lock row in this step [-]
     real(wp), intent(in) :: demand0(3)           !! their holding forces on s [N]
@@ -423,7 +425,7 @@ contains
   !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
   !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
   subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
-    type(gear_t), intent(in) :: gear             !! rigid gear (committed state) [-]
+    type(tripod_gear_t), intent(in) :: gear             !! rigid gear (committed state) [-]
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation [-]
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     logical, intent(in) :: loads                 !! compute the interface loads [-]
@@ -504,7 +506,7 @@ contains
   !> The rigid gear's caches (strut kinematics, mass matrix, constraint rows with the three lock rows
   !! and the Cholesky factor of A M^-1 A^T), computed from its coordinates.
   subroutine rigid_cache(gear, c, stat, errmsg)
-    type(gear_t), intent(in) :: gear             !! gear (geometry, masses)
+    type(tripod_gear_t), intent(in) :: gear             !! gear (geometry, masses)
     type(gear_state_t), intent(inout) :: c       !! state whose caches are set
     integer, intent(out) :: stat                 !! STAT_OK on success
     character(len=*), intent(inout) :: errmsg    !! message
@@ -530,7 +532,7 @@ contains
 
   !> The lock forces of a rigid gear with its cached factor (rigid_dynamics).
   subroutine rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
-    type(gear_t), intent(in) :: gear             !! rigid gear
+    type(tripod_gear_t), intent(in) :: gear             !! rigid gear
     type(gear_state_t), intent(in) :: c          !! its state with valid caches
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
@@ -609,4 +611,4 @@ contains
     if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, stat, errmsg)
   end procedure gear_prepare
 
-end submodule landyn_gear_dynamics
+end submodule landyn_tripod_dynamics

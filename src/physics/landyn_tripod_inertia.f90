@@ -7,7 +7,7 @@
 !! f = g - a_body(a_i) (gravity minus the acceleration of the upper primary joint), taken from the
 !! previous step. Rotational (centrifugal, Coriolis) frame terms are neglected: the body rotates at
 !! a few deg/s at most, and their effect on a leg of tens of kg is far below the crush levels.
-submodule (landyn_gear) landyn_gear_inertia
+submodule (landyn_tripod_gear) landyn_tripod_inertia
   use landyn_kinematics, only: cross3
   implicit none
 
@@ -99,7 +99,7 @@ contains
 
   !> The legs' relative linear and angular momentum and kinetic energy at rates qd.
   pure subroutine momenta(gear, sk, qd, p_rel, h_rel, t_rel)
-    type(gear_t), intent(in) :: gear       !! gear (configuration gear%st%q)
+    type(tripod_gear_t), intent(in) :: gear       !! gear (configuration gear%st%q)
     type(strut_kin_t), intent(in) :: sk(3) !! strut kinematics at gear%st%q
     real(wp), intent(in) :: qd(n_q)        !! generalized velocities [m/s, rad/s]
     real(wp), intent(out) :: p_rel(3)      !! sum m v_rel, gear frame [kg m/s]
@@ -163,4 +163,4 @@ contains
     end do
   end procedure gear_momentum_maps
 
-end submodule landyn_gear_inertia
+end submodule landyn_tripod_inertia
