@@ -30,7 +30,7 @@ def main():
         if layer not in LAYERS:
             problems.append("src/%s/ is not a known layer (%s)" % (layer, ", ".join(LAYERS)))
         for name in sorted(os.listdir(d)):
-            if name.endswith((".f90", ".F90", ".c", ".f90.in")):
+            if name.endswith((".f90", ".F90", ".c", ".f90.in", ".fypp", ".fypi")):
                 files["%s/%s" % (layer, name)] = layer
 
     # the module map: "### <layer>" sections listing `layer/file` paths
