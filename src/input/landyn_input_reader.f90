@@ -324,6 +324,7 @@ contains
       read (buffer, nml=nl_int, iostat=ios, iomsg=msg)
       v%i = lv_int
     case ('ints')
+      allocate (lv_ints(size(v%ia)))   ! (allocated explicitly: gfortran -O0 warns on the implicit allocation)
       lv_ints = v%ia
       read (buffer, nml=nl_ints, iostat=ios, iomsg=msg)
       v%ia = lv_ints
@@ -336,6 +337,7 @@ contains
       read (buffer, nml=nl_string, iostat=ios, iomsg=msg)
       v%s = lv_string
     case ('strings')
+      allocate (lv_strings(size(v%sa)))
       lv_strings = v%sa
       read (buffer, nml=nl_strings, iostat=ios, iomsg=msg)
       v%sa = lv_strings
