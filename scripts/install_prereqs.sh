@@ -9,8 +9,9 @@ cd "$(dirname "$0")/.."
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
+# fypp: the Fortran preprocessor that generates the HDF5 wrappers from src/output/*.fypp
 PKGS="gfortran gcc g++ make cmake liblapack-dev libblas-dev libhdf5-dev hdf5-tools \
-      libopenmpi-dev openmpi-bin python3 python3-venv python3-pip"
+      libopenmpi-dev openmpi-bin python3 python3-venv python3-pip fypp"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

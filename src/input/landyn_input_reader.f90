@@ -6,6 +6,12 @@
 !! repeated items, missing or unreadable values, non-ASCII bytes, over-long strings. Angles are
 !! read in degrees and stored in radians; only the elements an item gives are converted.
 !!
+!! One reader for every kind of deck: read_deck takes a registry instance (landyn_deck_registry's
+!! deck_registry_t: the groups and their entries) and a target (deck_target_t: where the values
+!! go). parse_deck reads a run deck (the registry of landyn_input_registry into landyn_input_t);
+!! landyn_study_deck reads study decks with its own table. A group marked repeatable may be given
+!! more than once; its messages then name it with its number ('&variant 2: ...').
+!!
 !! Library code: nothing here stops or prints.
 module landyn_input_reader
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -17,14 +23,21 @@ module landyn_input_reader
   use landyn_namelist_text, only: strip_comments, next_group, find_item_names, line_of, first_nonblank, &
                                   one_line => one_line_text, strip_commas => separators_to_blanks, &
                                   remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within, leading_text
-  use landyn_input_registry, only: input_var_t, input_vars, n_groups, group_names, group_index, var_index, &
-                                   unit_text, group_list, group_hint, var_hint, k_int, k_logical, k_string
+  use landyn_input_registry, only: input_var_t, k_int, k_logical, k_string
   use landyn_input_access, only: input_value_t, access_var
+  use landyn_deck_registry, only: deck_registry_t, deck_target_t, run_deck_registry
   use landyn_input_format, only: deg_to_rad
   implicit none
   private
 
-  public :: parse_deck
+  public :: parse_deck, read_deck
+
+  !> The target of a run deck: its values go into a landyn_input_t.
+  type, extends(deck_target_t) :: run_target_t
+    type(landyn_input_t) :: inp   !! the input read [-]
+  contains
+    procedure :: access => run_access  !! entry <-> component of inp (landyn_input_access)
+  end type run_target_t
 
   integer, parameter :: ios_implausible = -12345    !! our own iostat: non-finite or absurdly large value
   real(wp), parameter :: max_magnitude = 1.0e30_wp  !! largest accepted |value| of a real input [any unit]
@@ -36,14 +49,37 @@ contains
 
   ! ================================================================ deck parsing
 
-  !> Split the deck into groups and read each group's items; see the module documentation.
+  !> Read a run deck into `inp`: read_deck with the run-deck registry.
   subroutine parse_deck(text, deck_name, inp, errors)
     character(len=*), intent(in) :: text           !! deck text [-]
     character(len=*), intent(in) :: deck_name      !! name for messages [-]
     type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
-    character(len=:), allocatable :: work, gname
-    integer :: seen(n_groups)
+    type(run_target_t) :: target
+    target%inp = inp
+    call read_deck(run_deck_registry(), text, deck_name, target, errors)
+    inp = target%inp
+  end subroutine parse_deck
+
+  !> run_target_t's access: registry entry iv <-> its component of the landyn_input_t.
+  subroutine run_access(this, iv, v, store)
+    class(run_target_t), intent(inout) :: this   !! the run deck's values [-]
+    integer, intent(in) :: iv                    !! registry entry [-]
+    type(input_value_t), intent(inout) :: v      !! value holder [storage unit]
+    logical, intent(in) :: store                 !! direction: true stores v into inp [-]
+    call access_var(this%inp, iv, v, store)
+  end subroutine run_access
+
+  !> Split the deck into the groups of registry `reg` and read each group's items into `target`;
+  !! see the module documentation.
+  subroutine read_deck(reg, text, deck_name, target, errors)
+    type(deck_registry_t), intent(in) :: reg       !! the deck's registry [-]
+    character(len=*), intent(in) :: text           !! deck text [-]
+    character(len=*), intent(in) :: deck_name      !! name for messages [-]
+    class(deck_target_t), intent(inout) :: target  !! values updated item by item [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    character(len=:), allocatable :: work, gname, glabel
+    integer :: seen(size(reg%groups)), times(size(reg%groups))
     integer, allocatable :: bad(:)
     integer :: p, q, e, ig, qpos, next_p, line, k, s0, s1, g
     logical :: terminated
@@ -61,6 +97,7 @@ contains
                       ' is not ASCII text; decks are ASCII text (UTF-8 only inside quoted strings and ! comments)')
     end do
     seen = 0
+    times = 0
     p = 1
     do
       call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
@@ -76,39 +113,44 @@ contains
         p = next_p
         cycle
       end if
-      ig = group_index(gname)
+      ig = reg%group_index(gname)
       if (ig == 0) then
         call errors%add(loc(deck_name, work, p)//"unknown namelist group '&"//gname//"'"// &
-                        group_hint(gname)//'; valid groups: '//group_list())
-      else if (seen(ig) > 0) then
+                        reg%group_hint(gname)//'; valid groups: '//reg%group_list())
+      else if (seen(ig) > 0 .and. .not. reg%repeatable(ig)) then
         call errors%add(loc(deck_name, work, p)//'&'//gname//': group given a second time (first at line '// &
                         fmt_int(seen(ig))//'); give each group once')
       else
         seen(ig) = line
-        if (.not. terminated) call errors%add(loc(deck_name, work, p)//'&'//gname// &
+        times(ig) = times(ig) + 1
+        glabel = gname
+        if (reg%repeatable(ig)) glabel = gname//' '//fmt_int(times(ig))
+        if (.not. terminated) call errors%add(loc(deck_name, work, p)//'&'//glabel// &
                                               ": group is not terminated by '/'")
-        call read_group(ig, work, q, e - 1, deck_name, inp, errors)
+        call target%begin_group(ig, times(ig))
+        call read_group(reg, ig, glabel, work, q, e - 1, deck_name, target, errors)
       end if
       p = next_p
     end do
-  end subroutine parse_deck
+  end subroutine read_deck
 
   !> Split one group body into `name = value` items and read each on its own.
-  subroutine read_group(ig, work, b0, b1, deck_name, inp, errors)
+  subroutine read_group(reg, ig, gname, work, b0, b1, deck_name, target, errors)
+    type(deck_registry_t), intent(in) :: reg       !! the deck's registry [-]
     integer, intent(in) :: ig                      !! group index [-]
+    character(len=*), intent(in) :: gname          !! the group in messages: its name (and number if repeatable) [-]
     character(len=*), intent(in) :: work           !! comment-free deck text [-]
     integer, intent(in) :: b0, b1                  !! body is work(b0:b1) [-]
     character(len=*), intent(in) :: deck_name      !! name for messages [-]
-    type(landyn_input_t), intent(inout) :: inp     !! input updated item by item
+    class(deck_target_t), intent(inout) :: target  !! values updated item by item [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     integer, allocatable :: starts(:), eqs(:)
-    character(len=:), allocatable :: gname, item, lhs, base, value, what
+    character(len=:), allocatable :: item, lhs, base, value, what
     character(len=key_len), allocatable :: keys(:)
     character(len=512) :: msg
     integer :: p, k, nitems, item_end, ios, iv, nkeys
     logical :: ok
 
-    gname = trim(group_names(ig))
     ! Find every '=' outside quotes and the start of the name before it.
     call find_item_names(work, b0, b1, .false., starts, eqs)
     nitems = size(starts)
@@ -132,10 +174,10 @@ contains
       p = scan(lhs, '(%')
       if (p > 0) base = lhs(1:p - 1)
       value = work(eqs(k) + 1:item_end)
-      iv = var_index(ig, base)
+      iv = reg%var_index(ig, base)
       if (iv == 0) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//": unknown variable '"// &
-                        trim(adjustl(work(starts(k):eqs(k) - 1)))//"' ("//snippet(item)//')'//var_hint(ig, base))
+                        trim(adjustl(work(starts(k):eqs(k) - 1)))//"' ("//snippet(item)//')'//reg%var_hint(ig, base))
         cycle
       end if
       if (any(keys(1:nkeys) == lhs)) then
@@ -147,7 +189,7 @@ contains
       keys(nkeys) = lhs   ! (a name longer than key_len is compared by its start)
       if (len_trim(strip_commas(value)) == 0) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': no value given for '//lhs// &
-                        ' ('//trim(base)//' takes '//trim(input_vars(iv)%takes)//unit_text(iv)//')')
+                        ' ('//trim(base)//' takes '//trim(reg%vars(iv)%takes)//reg%unit_text(iv)//')')
         cycle
       end if
       if (len(bare_name_in_value(value)) > 0) then
@@ -156,10 +198,10 @@ contains
                         "); give it as 'name = value' or remove it")
         cycle
       end if
-      if (longest_string(value) > string_limit(iv, inp)) then
+      if (longest_string(value) > string_limit(reg%vars(iv), iv, target)) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' is too long ('// &
                         fmt_int(longest_string(value))//' characters); valid: at most '// &
-                        fmt_int(string_limit(iv, inp))//' characters')
+                        fmt_int(string_limit(reg%vars(iv), iv, target))//' characters')
         cycle
       end if
       ok = numbers_within(value, max_decimal_exponent)
@@ -169,14 +211,14 @@ contains
         cycle
       end if
       msg = ''
-      call read_item(iv, item, len(base), inp, ios, msg)
+      call read_item(reg%vars(iv), iv, item, len(base), target, ios, msg)
       if (ios == ios_implausible) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
                         snippet(value)//' is invalid; valid: finite numbers with |value| <= 1e30')
       else if (ios /= 0) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': cannot read '//lhs//' = '// &
-                        quoted(snippet_raw(value))//' ('//trim(base)//' takes '//trim(input_vars(iv)%takes)// &
-                        unit_text(iv)//'): '//trim(msg))
+                        quoted(snippet_raw(value))//' ('//trim(base)//' takes '//trim(reg%vars(iv)%takes)// &
+                        reg%unit_text(iv)//'): '//trim(msg))
       end if
     end do
   end subroutine read_group
@@ -215,18 +257,21 @@ contains
     if (quote /= ' ') n = max(n, cur)
   end function longest_string
 
-  !> Longest character value entry iv holds (huge for non-character variables).
-  pure function string_limit(iv, inp) result(n)
-    integer, intent(in) :: iv                  !! registry entry [-]
-    type(landyn_input_t), intent(in) :: inp    !! input (for the component's length) [-]
-    integer :: n                               !! limit [characters]
-    type(landyn_input_t) :: work
+  !> Longest character value entry iv (registry entry e) holds (huge for non-character variables).
+  function string_limit(e, iv, target) result(n)
+    type(input_var_t), intent(in) :: e             !! registry entry [-]
+    integer, intent(in) :: iv                      !! its index [-]
+    class(deck_target_t), intent(inout) :: target  !! values (for the component's length; unchanged) [-]
+    integer :: n                                   !! limit [characters]
     type(input_value_t) :: v
     n = huge(1)
-    if (input_vars(iv)%kind /= k_string) return
-    work = inp
-    call access_var(work, iv, v, .false.)
-    n = len(v%s)
+    if (e%kind /= k_string) return
+    call target%access(iv, v, .false.)
+    if (e%n1 > 0) then
+      n = v%sa_len
+    else
+      n = len(v%s)
+    end if
   end function string_limit
 
   !> A byte as "0xHH".
@@ -240,57 +285,70 @@ contains
     h = '0x'//digits(b/16 + 1:b/16 + 1)//digits(mod(b, 16) + 1:mod(b, 16) + 1)
   end function hex_byte
 
-  !> Read one item into entry iv of `inp`: `item` starts with the variable name (nbase characters),
+  !> Read one item into entry iv of `target`: `item` starts with the variable name (nbase characters),
   !! the rest is the subscript and `= value`. The name is replaced by a scratch variable of the
   !! entry's class and shape, read as a one-item namelist record; iomsg names the variable again.
-  subroutine read_item(iv, item, nbase, inp, ios, msg)
-    integer, intent(in) :: iv                   !! registry entry [-]
-    character(len=*), intent(in) :: item        !! 'name(sub) = value' as given [-]
-    integer, intent(in) :: nbase                !! length of the name at the start of item [-]
-    type(landyn_input_t), intent(inout) :: inp  !! updated only when the read succeeds
-    integer, intent(out) :: ios                 !! 0, a Fortran iostat, or ios_implausible [-]
-    character(len=*), intent(inout) :: msg      !! iomsg of a failed read [-]
+  subroutine read_item(e, iv, item, nbase, target, ios, msg)
+    type(input_var_t), intent(in) :: e             !! registry entry [-]
+    integer, intent(in) :: iv                      !! its index [-]
+    character(len=*), intent(in) :: item           !! 'name(sub) = value' as given [-]
+    integer, intent(in) :: nbase                   !! length of the name at the start of item [-]
+    class(deck_target_t), intent(inout) :: target  !! updated only when the read succeeds [-]
+    integer, intent(out) :: ios                    !! 0, a Fortran iostat, or ios_implausible [-]
+    character(len=*), intent(inout) :: msg         !! iomsg of a failed read [-]
     type(input_value_t) :: v
-    type(input_var_t) :: e
     real(wp) :: lv_real
     real(wp), allocatable :: lv_reals(:), lv_matrix(:, :)
     integer :: lv_int
+    integer, allocatable :: lv_ints(:)
     logical :: lv_logical
     character(len=path_len) :: lv_string
+    character(len=path_len), allocatable :: lv_strings(:)
     character(len=:), allocatable :: rest, scratch, buffer, cls
     namelist /nl_real/ lv_real
     namelist /nl_reals/ lv_reals
     namelist /nl_matrix/ lv_matrix
     namelist /nl_int/ lv_int
+    namelist /nl_ints/ lv_ints
     namelist /nl_logical/ lv_logical
     namelist /nl_string/ lv_string
+    namelist /nl_strings/ lv_strings
     rest = item(nbase + 1:)//' /'
-    call access_var(inp, iv, v, .false.)
-    e = input_vars(iv)
+    call target%access(iv, v, .false.)
     cls = scratch_class(e)
     scratch = 'lv_'//cls
     buffer = '&nl_'//cls//' '//scratch//rest
-    select case (e%kind)
-    case (k_int)
+    select case (cls)
+    case ('int')
       lv_int = v%i
       read (buffer, nml=nl_int, iostat=ios, iomsg=msg)
       v%i = lv_int
-    case (k_logical)
+    case ('ints')
+      allocate (lv_ints(size(v%ia)))   ! (allocated explicitly: gfortran -O0 warns on the implicit allocation)
+      lv_ints = v%ia
+      read (buffer, nml=nl_ints, iostat=ios, iomsg=msg)
+      v%ia = lv_ints
+    case ('logical')
       lv_logical = v%l
       read (buffer, nml=nl_logical, iostat=ios, iomsg=msg)
       v%l = lv_logical
-    case (k_string)
+    case ('string')
       lv_string = v%s
       read (buffer, nml=nl_string, iostat=ios, iomsg=msg)
       v%s = lv_string
+    case ('strings')
+      allocate (lv_strings(size(v%sa)))
+      lv_strings = v%sa
+      read (buffer, nml=nl_strings, iostat=ios, iomsg=msg)
+      v%sa = lv_strings
     case default
       call read_reals()
     end select
     if (ios /= 0) then
-      msg = renamed(msg, scratch, trim(input_vars(iv)%name))
+      msg = renamed(msg, scratch, trim(e%name))
       return
     end if
-    call access_var(inp, iv, v, .true.)
+    call target%access(iv, v, .true.)
   contains
     !> Read a real entry; angles start unset so only the given elements are converted.
     subroutine read_reals()
@@ -327,14 +385,16 @@ contains
   !! same word (one group per class and shape, so an item can name no other scratch variable).
   pure function scratch_class(e) result(s)
     type(input_var_t), intent(in) :: e   !! registry entry [-]
-    character(len=:), allocatable :: s   !! 'int', 'logical', 'string', 'matrix', 'reals' or 'real' [-]
+    character(len=:), allocatable :: s   !! 'int', 'ints', 'logical', 'string', 'strings', 'matrix', 'reals' or 'real' [-]
     select case (e%kind)
     case (k_int)
       s = 'int'
+      if (e%n1 > 0) s = 'ints'
     case (k_logical)
       s = 'logical'
     case (k_string)
       s = 'string'
+      if (e%n1 > 0) s = 'strings'
     case default
       s = 'real'
       if (e%n1 > 0) s = 'reals'

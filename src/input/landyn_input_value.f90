@@ -4,6 +4,7 @@
 !! per entry. Values are in STORAGE units (angles in radians).
 module landyn_input_value
   use landyn_kinds, only: wp
+  use landyn_input_limits, only: path_len
   implicit none
   private
 
@@ -15,11 +16,15 @@ module landyn_input_value
     integer :: i = 0                       !! integer value [-]
     logical :: l = .false.                 !! logical value [-]
     character(len=:), allocatable :: s     !! string value (blank-padded as stored) [-]
+    integer, allocatable :: ia(:)          !! integer values of an integer array [-]
+    character(len=path_len), allocatable :: sa(:)  !! string values of a string array (blank-padded) [-]
+    integer :: sa_len = 0                  !! length of the strings of the array component [characters]
   end type input_value_t
 
   !> Copy between a component (scalar, vector or matrix of any storage class) and a holder.
   interface move
     module procedure move_real, move_reals, move_real2, move_int, move_logical, move_string
+    module procedure move_ints, move_strings
   end interface move
 
 contains
@@ -95,5 +100,30 @@ contains
       v%s = x
     end if
   end subroutine move_string
+
+  !> move for an integer array.
+  pure subroutine move_ints(x, v, store)
+    integer, intent(inout) :: x(:)           !! component [-]
+    type(input_value_t), intent(inout) :: v  !! holder [-]
+    logical, intent(in) :: store             !! direction [-]
+    if (store) then
+      x = v%ia
+    else
+      v%ia = x
+    end if
+  end subroutine move_ints
+
+  !> move for a string array (its strings at most path_len characters long).
+  pure subroutine move_strings(x, v, store)
+    character(len=*), intent(inout) :: x(:)  !! component [-]
+    type(input_value_t), intent(inout) :: v  !! holder [-]
+    logical, intent(in) :: store             !! direction [-]
+    if (store) then
+      x = v%sa
+    else
+      v%sa = x
+      v%sa_len = len(x)
+    end if
+  end subroutine move_strings
 
 end module landyn_input_value

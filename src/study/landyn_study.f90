@@ -40,8 +40,7 @@ module landyn_study
                           EXIT_NO_TOUCHDOWN
   use landyn_files, only: base_name
   use landyn_tripod_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
-  use landyn_namelist_text, only: strip_comments, next_group, line_of, &
-                                  mask_non_ascii
+  use landyn_study_deck, only: study_deck_t, read_study_deck, max_cases, max_measures, label_len, set_len
   implicit none
   private
 
@@ -50,11 +49,6 @@ module landyn_study
   public :: label_len, set_len, strut_names
   public :: status_ok, status_failed, status_unhealthy, status_no_touchdown
 
-  integer, parameter :: max_cases = 8        !! load cases per study
-  integer, parameter :: max_sets = 32        !! `set` / `common` entries per group
-  integer, parameter :: max_measures = 96    !! table rows
-  integer, parameter :: label_len = 64       !! length of labels
-  integer, parameter :: set_len = 512        !! length of one `set` entry
   ! Run statuses, as landyn's exit statuses
   integer, parameter :: status_ok = EXIT_OK              !! run completed (a tip-over is a result)
   integer, parameter :: status_input = EXIT_INPUT        !! invalid input: not run
@@ -111,16 +105,17 @@ contains
 
   ! ================================================================ reading
 
-  !> Read a study deck. Problems are appended to `errors`; stat = STAT_OK, STAT_FAILED (errors in
+  !> Read a study deck (its groups through the input reader with the study-deck registry,
+  !! landyn_study_deck). Problems are appended to `errors`; stat = STAT_OK, STAT_FAILED (errors in
   !! the deck) or STAT_INPUT (the file cannot be read).
   subroutine read_study(path, sd, errors, stat)
     character(len=*), intent(in) :: path            !! study deck [-]
     type(study_t), intent(out) :: sd                !! the study (not yet prepared) [-]
     type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
     integer, intent(out) :: stat                    !! STAT_OK, STAT_FAILED (deck errors), STAT_INPUT (unreadable) [-]
-    character(len=:), allocatable :: text, dir, work, buf
-    integer, allocatable :: vs(:), ve(:)
-    integer :: n0, i, n_study
+    character(len=:), allocatable :: text, dir
+    type(study_deck_t) :: deck
+    integer :: n0, i
 
     n0 = errors%count()
     stat = STAT_OK
@@ -131,125 +126,39 @@ contains
     dir = ''
     i = index(path, '/', back=.true.)
     if (i > 0) dir = path(1:i)
-    call split_study_groups(path, text, work, buf, n_study, vs, ve, errors)
-    call read_study_group(path, dir, buf, n_study, sd, errors)
-    call read_variants(path, work, vs, ve, n0, sd, errors)
+    call read_study_deck(path, text, deck, errors)
+    call study_group(path, dir, deck, errors%count() > n0, sd, errors)
+    call variants(path, deck, n0, sd, errors)
     stat = merge(STAT_OK, STAT_FAILED, errors%count() == n0)
   end subroutine read_study
 
-  !> Split a study deck's text into its groups: one &study, &variant groups, nothing else (text
-  !! outside groups, unterminated strings or groups, non-ASCII bytes, unknown or repeated groups
-  !! are reported).
-  subroutine split_study_groups(path, text, work, buf, n_study, vs, ve, errors)
-    character(len=*), intent(in) :: path            !! study deck, for messages [-]
-    character(len=*), intent(in) :: text            !! its text [-]
-    character(len=:), allocatable, intent(out) :: work  !! the text without comments and bad bytes [-]
-    character(len=:), allocatable, intent(out) :: buf   !! the (first) &study group as a namelist record [-]
-    integer, intent(out) :: n_study                 !! &study groups found [-]
-    integer, allocatable, intent(out) :: vs(:)      !! start of each &variant group in work [-]
-    integer, allocatable, intent(out) :: ve(:)      !! its end (before its '/') in work [-]
-    type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
-    integer, allocatable :: bad(:)
-    character(len=:), allocatable :: gname
-    integer :: k, p, q, e, next_p, qpos, s0, s1, g
-    logical :: terminated
-    allocate (character(len=len(text)) :: work)
-    call strip_comments(text, work, qpos)
-    if (qpos > 0) then
-      call errors%add(path//':'//int_text(line_of(work, qpos))//': unterminated character string (no closing quote)')
-      work(qpos:) = repeat(' ', len(work) - qpos + 1)
-    end if
-    call mask_non_ascii(work, bad)
-    do k = 1, size(bad)
-      call errors%add(path//':'//int_text(line_of(work, bad(k)))//': a byte that is not ASCII text; decks are '// &
-                      'ASCII text (UTF-8 only inside quoted strings and ! comments)')
-    end do
-    buf = ''
-    n_study = 0
-    allocate (vs(0), ve(0))
-    p = 1
-    do
-      call next_group(work, p, s0, s1, g, q, e, terminated, next_p)
-      if (s0 > 0) call errors%add(path//':'//int_text(line_of(work, s0))//': text outside any namelist group: '''// &
-                                  short(work(s0:s1))//''' (groups start with &name and end with /)')
-      if (g == 0) exit
-      p = g
-      gname = lower_case(work(p + 1:q - 1))
-      if (.not. terminated .and. (gname == 'study' .or. gname == 'variant')) &
-        call errors%add(path//':'//int_text(line_of(work, p))//': &'//gname//": group is not terminated by '/'")
-      select case (gname)
-      case ('study')
-        n_study = n_study + 1
-        if (n_study == 1) then
-          buf = work(p:e - 1)//' /'
-        else
-          call errors%add(path//':'//int_text(line_of(work, p))//': a second &study group; a study deck has '// &
-                          'exactly one')
-        end if
-      case ('variant')
-        vs = [vs, p]
-        ve = [ve, e - 1]
-      case default
-        call errors%add(path//':'//int_text(line_of(work, p))//": unknown group '&"//gname// &
-                        "'; a study deck has one &study and &variant groups")
-      end select
-      p = next_p
-    end do
-  end subroutine split_study_groups
-
   !> The &study group of a study deck into `sd`: title, load-case decks (relative to the deck's
   !! directory) and their labels, common overrides, output files, result files and table rows.
-  subroutine read_study_group(path, dir, buf, n_study, sd, errors)
+  subroutine study_group(path, dir, deck, bad_deck, sd, errors)
     character(len=*), intent(in) :: path            !! study deck, for messages [-]
     character(len=*), intent(in) :: dir             !! its directory ('' or ending in '/') [-]
-    character(len=*), intent(in) :: buf             !! the &study group as a namelist record [-]
-    integer, intent(in) :: n_study                  !! &study groups found (0: none) [-]
+    type(study_deck_t), intent(in) :: deck          !! the deck as read [-]
+    logical, intent(in) :: bad_deck                 !! reading it found errors (a missing base_deck may be one) [-]
     type(study_t), intent(inout) :: sd              !! the study [-]
     type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
-    character(len=256) :: title
-    character(len=path_len) :: base_deck(max_cases), output, csv
-    character(len=label_len) :: case_label(max_cases)
-    character(len=set_len) :: common(max_sets)
-    integer :: measure_case(max_measures), measure_gear(max_measures), measure_strut(max_measures)
-    logical :: keep_results
-    namelist /study/ title, base_deck, case_label, common, output, csv, measure_case, measure_gear, &
-      measure_strut, keep_results  !! the &study group of a study deck (docs/study.md)
-    character(len=msg_len) :: msg
-    integer :: ios, i
+    integer :: i
 
-    title = ''
-    base_deck = ''
-    case_label = ''
-    common = ''
-    output = ''
-    csv = ''
-    measure_case = 0
-    measure_gear = 0
-    measure_strut = 0
-    keep_results = .false.
-    ios = 0
-    if (n_study == 0) then
-      ios = -1
-      call errors%add(path//': no &study group (it names the load-case decks: base_deck = ...)')
-    else
-      msg = ''
-      read (buf, nml=study, iostat=ios, iomsg=msg)
-      if (ios /= 0) call errors%add(path//': &study: '//trim(msg))
-    end if
-    sd%title = title
-    sd%n_cases = count(len_trim(base_deck) > 0)
-    if (sd%n_cases == 0 .and. ios == 0) call errors%add(trim(path)//': &study: base_deck is not given; '// &
-                                                          "valid: one or more load-case decks, e.g. base_deck = 'lc1.nml'")
-    if (any(len_trim(base_deck(1:sd%n_cases)) == 0)) &
+    if (deck%n_study == 0) call errors%add(path//': no &study group (it names the load-case decks: base_deck = ...)')
+    sd%title = deck%title
+    sd%n_cases = count(len_trim(deck%base_deck) > 0)
+    if (sd%n_cases == 0 .and. deck%n_study > 0 .and. .not. bad_deck) &
+      call errors%add(trim(path)//': &study: base_deck is not given; '// &
+                      "valid: one or more load-case decks, e.g. base_deck = 'lc1.nml'")
+    if (any(len_trim(deck%base_deck(1:sd%n_cases)) == 0)) &
       call errors%add(trim(path)//': &study: base_deck has empty entries between given ones')
     do i = 1, sd%n_cases
-      if (base_deck(i)(1:1) == '/') then
-        sd%case_deck(i) = base_deck(i)
+      if (deck%base_deck(i)(1:1) == '/') then
+        sd%case_deck(i) = deck%base_deck(i)
       else
-        sd%case_deck(i) = dir//trim(base_deck(i))
+        sd%case_deck(i) = dir//trim(deck%base_deck(i))
       end if
-      sd%case_label(i) = case_label(i)
-      if (len_trim(case_label(i)) == 0) sd%case_label(i) = default_case_label(base_deck(i))
+      sd%case_label(i) = deck%case_label(i)
+      if (len_trim(deck%case_label(i)) == 0) sd%case_label(i) = default_case_label(deck%base_deck(i))
     end do
     do i = 2, sd%n_cases
       if (any(sd%case_label(1:i - 1) == sd%case_label(i))) &
@@ -257,58 +166,34 @@ contains
                         'valid: distinct labels (they name the runs and the rows of the table)')
     end do
     sd%common = ''
-    call join_sets(common, 'common', path, sd%common, errors)
-    sd%output = output
-    if (len_trim(output) == 0) sd%output = base_name(path, 'study')//'.h5'
-    sd%csv = csv
-    if (len_trim(csv) == 0) sd%csv = base_name(path, 'study')//'.csv'
-    sd%keep_results = keep_results
-    call set_measures(sd, measure_case, measure_gear, measure_strut, path, errors, 4)
-  end subroutine read_study_group
+    call join_sets(deck%common, 'common', path, sd%common, errors)
+    sd%output = deck%output
+    if (len_trim(deck%output) == 0) sd%output = base_name(path, 'study')//'.h5'
+    sd%csv = deck%csv
+    if (len_trim(deck%csv) == 0) sd%csv = base_name(path, 'study')//'.csv'
+    sd%keep_results = deck%keep_results
+    call set_measures(sd, deck%measure_case, deck%measure_gear, deck%measure_strut, path, errors, 4)
+  end subroutine study_group
 
-  !> Every &variant group of a study deck, in order, into sd%variant (label and overrides); every
-  !! bad one is reported, as are no variants (when the deck has no other error) and repeated labels.
-  subroutine read_variants(path, work, vs, ve, n0, sd, errors)
+  !> Every &variant group of a study deck, in order, into sd%variant (label and overrides); no
+  !! variants (when the deck has no other error) and repeated labels are reported.
+  subroutine variants(path, deck, n0, sd, errors)
     character(len=*), intent(in) :: path            !! study deck, for messages [-]
-    character(len=*), intent(in) :: work            !! its text without comments [-]
-    integer, intent(in) :: vs(:)                    !! start of each &variant group in work [-]
-    integer, intent(in) :: ve(:)                    !! its end (before its '/') in work [-]
+    type(study_deck_t), intent(in) :: deck          !! the deck as read [-]
     integer, intent(in) :: n0                       !! errors before the deck was read [-]
     type(study_t), intent(inout) :: sd              !! the study [-]
     type(input_errors_t), intent(inout) :: errors   !! problems found are appended here [-]
-    character(len=label_len) :: label
-    character(len=set_len) :: set(max_sets)
-    namelist /variant/ label, set  !! one &variant group of a study deck
-    character(len=msg_len) :: msg
-    character(len=:), allocatable :: ovr, buf
-    type(variant_t), allocatable :: tmp(:)
-    integer :: ios, i, k, nv, nsz
-    nv = 0
-    allocate (sd%variant(max(8, size(vs))))
-    do k = 1, size(vs)
-      label = ''
-      set = ''
-      msg = ''
-      buf = work(vs(k):ve(k))//' /'
-      read (buf, nml=variant, iostat=ios, iomsg=msg)
-      nv = nv + 1
-      if (nv > size(sd%variant)) then
-        nsz = 2*size(sd%variant)
-        allocate (tmp(nsz))
-        tmp(1:nv - 1) = sd%variant(1:nv - 1)
-        call move_alloc(tmp, sd%variant)
-      end if
-      if (ios /= 0) then
-        call errors%add(path//': &variant '//int_text(k)//': '//trim(msg)//' (&variant takes label and set)')
-        write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
-        sd%variant(nv)%overrides = ''
-        cycle
-      end if
-      sd%variant(nv)%label = label
-      if (len_trim(label) == 0) write (sd%variant(nv)%label, '(a,i0)') 'variant ', nv
+    character(len=:), allocatable :: ovr
+    integer :: i, nv
+
+    nv = deck%n_variants
+    allocate (sd%variant(max(8, nv)))
+    do i = 1, nv
+      sd%variant(i)%label = deck%label(i)
+      if (len_trim(deck%label(i)) == 0) write (sd%variant(i)%label, '(a,i0)') 'variant ', i
       ovr = ''
-      call join_sets(set, 'variant '//trim(sd%variant(nv)%label)//': set', path, ovr, errors)
-      sd%variant(nv)%overrides = ovr
+      call join_sets(deck%set(:, i), 'variant '//trim(sd%variant(i)%label)//': set', path, ovr, errors)
+      sd%variant(i)%overrides = ovr
     end do
     sd%n_variants = nv
     if (nv == 0 .and. errors%count() == n0) call errors%add(trim(path)//': no &variant group; valid: one or '// &
@@ -317,20 +202,7 @@ contains
       if (any(sd%variant(1:i - 1)%label == sd%variant(i)%label)) &
         call errors%add(trim(path)//': &variant label '''//trim(sd%variant(i)%label)//''' is given twice')
     end do
-  end subroutine read_variants
-
-  !> `t` shortened for a message.
-  pure function short(t) result(r)
-    character(len=*), intent(in) :: t     !! text [-]
-    character(len=:), allocatable :: r    !! at most 60 characters of it, on one line [-]
-    integer :: j
-    r = t(1:min(len(t), 60))
-    do j = 1, len(r)
-      if (r(j:j) == achar(10) .or. r(j:j) == achar(9)) r(j:j) = ' '
-    end do
-    r = trim(r)
-    if (len(t) > 60) r = r//'...'
-  end function short
+  end subroutine variants
 
   !> Read, override, resolve and validate the input of every run (case x variant) before anything
   !! is run, so that a study with an invalid variant runs nothing. stat = STAT_OK when all are valid.

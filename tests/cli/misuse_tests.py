@@ -260,6 +260,20 @@ def t_study_misuse(x, d):
     check("&variant 1" in err and "&variant 2" in err, "both bad variants are reported")
     check(": : " not in err and "amelist" not in err.replace("namelist", ""), "the message is not garbled")
 
+    # a study deck is read by the run decks' reader (its own registry, landyn_study_deck): the same
+    # messages, hints and checks, each with its line
+    write(d, "reg.nml", "&study base_deck = 'lc.nml', titel = 'x', keep_results = .true., keep_results = .false. /\n"
+                        "&variant label = '%s' /\n&variant label = 'b', measure_case = 1 /\n" % ("x" * 65))
+    rc, out, err = run(S, ["--check", "reg.nml"], d)
+    expect(rc, 2, "study-deck items the registry rejects are input errors", err)
+    check("reg.nml:1: &study: unknown variable 'titel' (titel = 'x'); did you mean 'title'?" in err,
+          "an unknown &study variable: the reader's message and hint")
+    check("reg.nml:1: &study: keep_results is given more than once" in err, "an item given twice")
+    check("reg.nml:2: &variant 1: label is too long (65 characters); valid: at most 64 characters" in err,
+          "an over-long label is an error, not truncated")
+    check("reg.nml:3: &variant 2: unknown variable 'measure_case' (measure_case = 1); "
+          "'measure_case' belongs to &study" in err, "a variable of the other group: where it belongs")
+
     write(d, "mc.nml", "&study base_deck = 'lc.nml', 'lc.nml', case_label = 'x', 'y', measure_case = 3 /\n"
                        "&variant label = 'a' /\n")
     rc, out, err = run(S, ["--check", "mc.nml"], d)
@@ -269,7 +283,7 @@ def t_study_misuse(x, d):
                         "&variant label = 'a' /\n")
     rc, out, err = run(S, ["--check", "two.nml"], d)
     expect(rc, 2, "a second &study and stray text are input errors", err)
-    check("second &study" in err and "outside any namelist group" in err, "both are reported")
+    check("&study: group given a second time" in err and "outside any namelist group" in err, "both are reported")
 
     write(d, "dup.nml", "&study base_deck = 'lc.nml', 'lc.nml', case_label = 'x', 'x' /\n&variant label = 'a' /\n")
     rc, out, err = run(S, ["-q", "dup.nml"], d)

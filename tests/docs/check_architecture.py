@@ -26,7 +26,7 @@ import tempfile
 from check_doc_comments import statements  # noqa: E402  (one reading of Fortran statements)
 
 LAYERS = ("core", "config", "physics", "input", "numerics", "output", "api", "study", "campaign", "app")
-SOURCE_ENDINGS = (".f90", ".F90", ".c", ".f90.in")
+SOURCE_ENDINGS = (".f90", ".F90", ".c", ".f90.in", ".fypp", ".fypi")
 MODULE_START = re.compile(r"^\s*module\s+(\w+)\s*$", re.I)
 USE = re.compile(r"^\s*use\s*(?:,\s*(?:non_)?intrinsic\s*)?(?:::)?\s*(\w+)", re.I)
 INTRINSIC_USE = re.compile(r"^\s*use\s*,\s*intrinsic\b", re.I)

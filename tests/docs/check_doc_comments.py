@@ -5,9 +5,13 @@ constant carries a FORD doc comment (`!>` on the lines before it, or `!!` on its
 on the comment lines right after it). Local variables of procedures are left out (they are
 commented where it helps; FORD does not publish them).
 
+A fypp template src/<layer>/<name>.fypp (cmake/LandynFypp.cmake) is checked through the file it
+generates, <build>/generated/<name>.f90 (--generated), the code that is compiled and that FORD reads;
+a template whose generated file is missing is a problem (build first).
+
 Exit 0 when every entity is documented, 1 with a list `file:line: <what> <name>` otherwise.
 
-  check_doc_comments.py --src SOURCE_DIR [--max N]
+  check_doc_comments.py --src SOURCE_DIR [--generated BUILD_DIR/generated] [--max N]
 """
 import argparse
 import os
@@ -180,18 +184,37 @@ def check_file(path, rel):
     return problems
 
 
+def source_files(root, generated, suffixes):
+    """The sources below `root` (src/) to check: (path to read, name relative to `root` for messages)
+    of every file ending in one of `suffixes`, and for every fypp template `<name>.fypp` the file
+    `<generated>/<name>.f90` it generates. Also a list of problems: templates whose generated file
+    is missing."""
+    files, problems = [], []
+    for dirpath, _, names in sorted(os.walk(root)):
+        for name in sorted(names):
+            path = os.path.join(dirpath, name)
+            rel = os.path.relpath(path, root).replace(os.sep, "/")
+            if name.endswith(suffixes):
+                files.append((path, rel))
+            elif name.endswith(".fypp"):
+                out = os.path.join(generated or "", name[:-len(".fypp")] + ".f90")
+                if generated and os.path.isfile(out):
+                    files.append((out, "%s (generated %s)" % (rel, os.path.basename(out))))
+                else:
+                    problems.append("%s: its generated file %s is missing (build first; pass --generated "
+                                    "<build>/generated)" % (rel, out if generated else name[:-len(".fypp")] + ".f90"))
+    return files, problems
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--src", required=True, help="the project's root")
+    ap.add_argument("--generated", help="the build's generated/ folder (the fypp templates' output)")
     ap.add_argument("--max", type=int, default=200, help="list at most this many problems")
     a = ap.parse_args()
-    problems = []
-    root = os.path.join(a.src, "src")
-    for dirpath, _, names in sorted(os.walk(root)):
-        for name in sorted(names):
-            if name.endswith((".f90", ".F90", ".f90.in")):
-                path = os.path.join(dirpath, name)
-                problems += check_file(path, os.path.relpath(path, a.src))
+    files, problems = source_files(os.path.join(a.src, "src"), a.generated, (".f90", ".F90", ".f90.in"))
+    for path, rel in files:
+        problems += check_file(path, "src/" + rel)
     for p in problems[:a.max]:
         print(p)
     if problems:

@@ -13,7 +13,10 @@ Exit 0 when every procedure (outside the allow-list) has at most --max lines, 1 
 `file:line: name has N lines (max M)` otherwise; an allow-list entry that names no procedure over the
 limit is reported as well (stale entries must go).
 
-  check_procedure_length.py --src SOURCE_DIR [--max N] [--list]
+A fypp template (src/<layer>/<name>.fypp) is counted in the file it generates,
+<build>/generated/<name>.f90 (--generated), as check_doc_comments does.
+
+  check_procedure_length.py --src SOURCE_DIR [--generated BUILD_DIR/generated] [--max N] [--list]
 """
 import argparse
 import os
@@ -27,6 +30,7 @@ ALLOWED = {}   # none since issue 27: every procedure of src/ has at most MAX_LI
 
 # the Fortran statement patterns and comment splitting of the doc-comment check (one reading of a source)
 from check_doc_comments import IFACE_END, IFACE_START, MODPROC_START, PROC_END, PROC_START, code_and_comment  # noqa: E402
+from check_doc_comments import source_files  # noqa: E402
 
 BARE_END = re.compile(r"^\s*end\s*$", re.I)
 UNIT_START = re.compile(r"^\s*(module|submodule\s*\([^)]*\)|program|block\s*data)\s+(\w+)\s*$", re.I)
@@ -183,30 +187,28 @@ def main():
     ap.add_argument("--src", required=True, help="the source tree (holding src/)")
     ap.add_argument("--max", type=int, default=MAX_LINES, help="the longest procedure allowed [lines]")
     ap.add_argument("--list", action="store_true", help="print every procedure over --max, allowed or not")
+    ap.add_argument("--generated", help="the build's generated/ folder (the fypp templates' output)")
     a = ap.parse_args()
     root = os.path.join(a.src, "src")
     problems = self_test()
     allowed_seen = set()
     count = 0
-    for dirpath, _, names in sorted(os.walk(root)):
-        for fname in sorted(names):
-            if not fname.endswith((".f90", ".F90", ".f90.in", ".c")):
+    files, missing = source_files(root, a.generated, (".f90", ".F90", ".f90.in", ".c"))
+    problems += missing
+    for path, rel in files:
+        for name, line, n in procedures(path):
+            count += 1
+            if n <= a.max:
                 continue
-            path = os.path.join(dirpath, fname)
-            rel = os.path.relpath(path, root).replace(os.sep, "/")
-            for name, line, n in procedures(path):
-                count += 1
-                if n <= a.max:
-                    continue
-                key = (rel, name.lower())
-                if a.list:
-                    print("%s:%d: %s has %d lines%s" % (rel, line, name, n,
-                                                        " (allowed)" if key in ALLOWED else ""))
-                if key in ALLOWED:
-                    allowed_seen.add(key)
-                    continue
-                problems.append("src/%s:%d: %s has %d lines (max %d); split it into named pieces"
-                                % (rel, line, name, n, a.max))
+            key = (rel, name.lower())
+            if a.list:
+                print("%s:%d: %s has %d lines%s" % (rel, line, name, n,
+                                                    " (allowed)" if key in ALLOWED else ""))
+            if key in ALLOWED:
+                allowed_seen.add(key)
+                continue
+            problems.append("src/%s:%d: %s has %d lines (max %d); split it into named pieces"
+                            % (rel, line, name, n, a.max))
     if a.max == MAX_LINES:
         for key in sorted(set(ALLOWED) - allowed_seen):
             problems.append("allow-list entry %s %s names no procedure over %d lines: remove it"
