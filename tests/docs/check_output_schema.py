@@ -49,11 +49,15 @@ def check_manifest(manifest_path: str, src: str) -> list[str]:
                   "--src . --write"]
 
 
-def check_docs(datasets: list[dict], src: str) -> list[str]:
+def check_docs(manifest: dict, src: str) -> list[str]:
     with open(os.path.join(src, DOC), encoding="utf-8") as fh:
         lines = fh.read().splitlines()
+    datasets = manifest["datasets"]
     want = {d["path"]: doc_row(d) for d in datasets}
     seen, out = set(), []
+    version = manifest["schema_version"]
+    if f"schema version {version}" not in lines[0] or f"now `{version}`" not in "\n".join(lines):
+        out.append(f"{DOC}: its title and the root attribute schema_version do not say version {version}")
     for k, line in enumerate(lines):
         m = ROW.match(line)
         if not m:
@@ -93,14 +97,15 @@ def main(argv=None) -> int:
     ap.add_argument("--write", action="store_true", help="update the shipped manifest and the docs rows")
     a = ap.parse_args(argv)
     with open(a.manifest, encoding="utf-8") as fh:
-        datasets = json.load(fh)["datasets"]
+        manifest = json.load(fh)
+    datasets = manifest["datasets"]
     if a.write:
         write(a.manifest, datasets, a.src)
     problems = []
     if "manifest" in a.check:
         problems += check_manifest(a.manifest, a.src)
     if "docs" in a.check:
-        problems += check_docs(datasets, a.src)
+        problems += check_docs(manifest, a.src)
     for p in problems:
         print(p)
     return 1 if problems else 0
