@@ -29,3 +29,6 @@ add_test(NAME output_schema_docs
          COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/tests/docs/check_output_schema.py
                  --manifest ${LANDYN_SCHEMA_MANIFEST} --src ${CMAKE_SOURCE_DIR} --check docs)
 set_tests_properties(output_schema_manifest output_schema_docs PROPERTIES LABELS "docs")
+
+# Installed next to the decks, for readers other than landyn_post.
+install(FILES ${LANDYN_SCHEMA_MANIFEST} DESTINATION ${CMAKE_INSTALL_DATADIR}/landyn)

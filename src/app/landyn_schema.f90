@@ -1,5 +1,5 @@
-!> landyn_schema: prints the result file's schema (src/output/landyn_output_schema.f90) as a JSON
-!! manifest on standard output, or writes it to FILE.
+!> The `landyn_schema` program prints the result file's schema (src/output/landyn_output_schema.f90) as a
+!! JSON manifest on standard output, or writes it to FILE.
 !!
 !!   landyn_schema [FILE]
 !!
