@@ -38,8 +38,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from . import cli  # noqa: E402
 from .campaign import METRICS as SENS_METRICS, failure_breakdown, input_label, spearman  # noqa: E402
+from .schema import CAMPAIGN_SCHEMA  # noqa: E402
 
-SCHEMA = b"landyn-campaign-1.0"
+SCHEMA = CAMPAIGN_SCHEMA.encode()
 Z95 = 1.959963984540054
 # name: (dataset or None, label, scale, unit, criterion dataset, "applied" dataset)
 METRICS = [

@@ -29,8 +29,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from . import cli  # noqa: E402
 from .campaign import input_label  # noqa: E402
+from .schema import CAMPAIGN_SCHEMA  # noqa: E402
 
-SCHEMA = b"landyn-campaign-1.0"
+SCHEMA = CAMPAIGN_SCHEMA.encode()
 METRICS = {  # dataset under /cases: (label, scale to the plotted unit, unit)
     "min_stroke_margin": ("smallest stroke margin", 1000.0, "mm"),
     "peak_overload": ("peak overload", 1.0, "g"),

@@ -3,7 +3,7 @@ campaign summaries, to CSV tables, MATLAB .mat (scipy.io) and, for runs, a ParaV
 XDMF sidecar over an HDF5 file of the moving struts and footpads.
 
 File kinds (``file_kind``): 'run' (root attribute schema_version 1.x), 'campaign'
-(schema_version landyn-campaign-1.0) and 'study' (producer '... landyn_study' with /table).
+(root attribute schema_version = schema.CAMPAIGN_SCHEMA) and 'study' (producer '... landyn_study' with /table).
 
 MATLAB layout (``write_mat``): one struct per HDF5 group, named after it (``timeseries``,
 ``summary``, ``meta``, ``cases``, ``table`` ...), fields named after the datasets; names that are
@@ -35,9 +35,9 @@ import xml.etree.ElementTree as ET
 import numpy as np
 
 from . import cli
-from .schema import DATASETS, LOAD_NAMES, PEAK_JOINTS, PEAK_QUANTITIES, STRUTS, LandynPostError, is_hdf5
+from .schema import (CAMPAIGN_SCHEMA, DATASETS, LOAD_NAMES, PEAK_JOINTS, PEAK_QUANTITIES, STRUTS, LandynPostError,
+                     is_hdf5)
 
-CAMPAIGN_SCHEMA = "landyn-campaign-1.0"
 
 
 def _text(v) -> str:

@@ -1,20 +1,19 @@
 """Lander geometry rebuilt from a result file, for drawing (landyn-animate, plan views).
 
-The result file stores the body motion, the footpad positions and the strut lengths but not the
-joint positions. They are rebuilt here from the hard points in /meta/resolved_input with LANDYN's
-own kinematics (src/core/landyn_kinematics.f90):
+The result file stores the body motion, the footpad positions and the strut lengths over time, and
+in /model (schema 1.4) the lander as the run built it: every strut's upper joint and nominal lower
+end and its nominal frame, computed by LANDYN's own kinematics (src/core/landyn_kinematics.f90).
+Nothing is derived from the deck here:
 
 * body-to-global rotation R = Rz(yaw) Ry(pitch) Rx(roll) (standard right-handed matrices, frames
   z down), global point = position + R p_L (position = lander origin O_L);
-* gear i's frame is the lander frame rotated about z by rotation(i);
 * upper joints a, b, c are fixed to the body;
-* the primary strut's outer tube hangs from a on a universal joint with the nominal strut frame
-  R0 = [x0 y0 z0], z0 = unit(d - a), x0 = unit(e_y x z0) (e_x if nearly parallel), and the
-  orientation R0 rot_x(t1) rot_y(t2). Its axis follows from the stored footpad position d; t1, t2
-  follow from the axis; the lugs e, f (lower ends of the secondaries) are rigid on the outer tube:
-  e = a + R0 rot_x(t1) rot_y(t2) R0^T (e_nom - a). This is exact, not an approximation; the
-  distances |e - b| and |f - c| reproduce the stored secondary strut lengths (checked by
-  :func:`lug_length_error`).
+* the primary strut's outer tube hangs from a on a universal joint: with its nominal frame
+  R0 = [x0 y0 z0] (/model/strut_frame, lander axes) its orientation is R0 rot_x(t1) rot_y(t2). Its
+  axis follows from the stored footpad position d; t1, t2 follow from the axis; the lugs e, f
+  (lower ends of the secondaries) are rigid on the outer tube: e = a + R0 rot_x(t1) rot_y(t2) R0^T
+  (e_nom - a). This is exact, not an approximation; the distances |e - b| and |f - c| reproduce
+  the stored secondary strut lengths (checked by :func:`lug_length_error`).
 """
 from __future__ import annotations
 
@@ -50,15 +49,6 @@ def rot_zyx(euler_deg: np.ndarray) -> np.ndarray:
     """R = Rz(yaw) Ry(pitch) Rx(roll) for Euler angles (..., 3) in degrees -> (..., 3, 3)."""
     e = np.radians(np.asarray(euler_deg, dtype=float))
     return rot_z(e[..., 0]) @ rot_y(e[..., 1]) @ rot_x(e[..., 2])
-
-
-def _strut_frame(z0: np.ndarray) -> np.ndarray:
-    """Nominal strut frame (columns x0, y0, z0) as in landyn_kinematics::strut_frame."""
-    x0 = np.cross([0.0, 1.0, 0.0], z0)
-    if np.linalg.norm(x0) < 1.0e-2:
-        x0 = np.cross([1.0, 0.0, 0.0], z0)
-    x0 /= np.linalg.norm(x0)
-    return np.column_stack([x0, np.cross(z0, x0), z0])
 
 
 @dataclass
@@ -119,33 +109,31 @@ def body_outline(hp: dict[str, np.ndarray]) -> tuple[np.ndarray, tuple[float, fl
 
 
 def lander_geometry(res: Result) -> LanderGeometry:
-    """Rebuilds the joint positions of every gear over the whole run (see the module doc)."""
+    """Rebuilds the joint positions of every gear over the whole run (see the module doc); a file
+    without /model (older than schema 1.4) raises LandynFileError naming the group."""
     hp = res.hard_points()
     g, n = res.n_gears, res.n_samples
     rot = rot_zyx(res.euler_angles)                        # (n, 3, 3) lander -> global
     pos = res.position                                     # (n, 3)
-    rg = rot_z(np.radians(hp["rotation"]))                 # (g, 3, 3) gear -> lander
     upper = np.empty((n, g, 3, 3))
     lug = np.empty((n, g, 2, 3))
     d_glob = res.footpad_position                          # (n, g, 3)
     for i in range(g):
         for j, p in enumerate("abc"):
             upper[:, i, j] = pos + rot @ hp[p][i]
-        # nominal geometry in the gear frame
-        a, d, e, f = (rg[i].T @ hp[p][i] for p in "adef")
-        r0 = _strut_frame((d - a) / np.linalg.norm(d - a))
+        a, e, f = hp["a"][i], hp["e"][i], hp["f"][i]       # nominal geometry, lander frame
+        r0 = hp["strut_frame"][i, 0]                       # primary's nominal frame, lander axes
         e_loc, f_loc = r0.T @ (e - a), r0.T @ (f - a)
-        # current primary axis in the gear frame
+        # current primary axis in the lander frame
         u_glob = d_glob[:, i] - upper[:, i, 0]
         u_glob /= np.linalg.norm(u_glob, axis=1)[:, None]
-        u_gear = np.einsum("nji,nj->ni", rot @ rg[i], u_glob)  # (R Rg)^T u
-        v = u_gear @ r0                                    # R0^T u
+        u_l = np.einsum("nji,nj->ni", rot, u_glob)        # R^T u
+        v = u_l @ r0                                       # R0^T u
         t2 = np.arcsin(np.clip(v[:, 0], -1.0, 1.0))
         t1 = np.arctan2(-v[:, 1], v[:, 2])
-        rp = r0 @ rot_x(t1) @ rot_y(t2)                    # (n, 3, 3) primary orientation, gear frame
+        rp = r0 @ rot_x(t1) @ rot_y(t2)                    # (n, 3, 3) primary orientation, lander axes
         for j, loc in enumerate((e_loc, f_loc)):
-            p_gear = a + rp @ loc                          # (n, 3)
-            lug[:, i, j] = pos + np.einsum("nij,nj->ni", rot, p_gear @ rg[i].T)
+            lug[:, i, j] = pos + np.einsum("nij,nj->ni", rot, a + rp @ loc)
     hull, zz = body_outline(hp)
     return LanderGeometry(upper, d_glob, lug, hull, zz, rot, pos, hp["mass_centre"])
 

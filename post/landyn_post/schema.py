@@ -1,8 +1,11 @@
 """The LANDYN result-file schema (docs/output.md) and the one reader that maps it to numpy.
 
-Everything the post-processing tools know about the file layout lives here: dataset paths,
-units, shapes, the strut and component labels, the channel names used by ``landyn-compare`` and
-``landyn-export``, and the input variables read back from ``/meta/resolved_input``.
+The dataset table is not written here: LANDYN declares it once (src/output/landyn_output_schema.f90)
+and its build prints it as a JSON manifest, which this package ships as data/output_schema.json
+(CTest output_schema_manifest keeps the copy equal to the build's). DATASETS, the schema and
+campaign versions, the energy and /meta names come from it. What is added here is the reading:
+the strut and component labels, the channel names used by ``landyn-compare`` and
+``landyn-export``, and the model of the run from /model (capacities, hard points, frames, terrain).
 
 Shapes are as h5py reads them (C order): Fortran ``x(3, n)`` is ``(n, 3)``, gear arrays
 ``(3, n_gears, n)`` are ``(n, n_gears, 3)``, summary arrays ``(3, n_gears)`` are ``(n_gears, 3)``.
@@ -20,6 +23,7 @@ Typical use::
 """
 from __future__ import annotations
 
+import json
 import os
 import re
 from dataclasses import dataclass
@@ -29,26 +33,36 @@ import numpy as np
 from .namelist import Namelist, NamelistError, parse_namelist
 
 __all__ = [
-    "SCHEMA_VERSION", "SUPPORTED_MAJOR", "STRUTS", "STRUT_LABELS", "ENERGY_NAMES", "DATASETS",
+    "SCHEMA_VERSION", "CAMPAIGN_SCHEMA", "SUPPORTED_MAJOR", "STRUTS", "STRUT_LABELS", "ENERGY_NAMES", "DATASETS",
     "DatasetSpec", "Channel", "Result", "LandynPostError", "LandynFileError", "load", "is_hdf5",
     "measure_number", "measure_gear_strut", "parse_channel_spec", "units_token", "strut_index",
     "ROOT_ATTRIBUTES", "META", "JOINT_BLOCKS", "LOAD_NAMES", "PEAK_JOINTS", "PEAK_QUANTITIES",
 ]
 
-SCHEMA_VERSION = "1.3"     #: the schema version this package was written for
-SUPPORTED_MAJOR = "1"      #: files with schema_version 1.x are read (minor versions only add)
+_MANIFEST_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "output_schema.json")
+
+
+def _load_manifest(path: str = _MANIFEST_PATH) -> dict:
+    """The result-file schema as LANDYN declares it (src/output/landyn_output_schema.f90), from the
+    manifest landyn_schema writes; this package ships a copy (CTest output_schema_manifest keeps it
+    equal to the build's)."""
+    try:
+        with open(path, encoding="utf-8") as fh:
+            return json.load(fh)
+    except (OSError, ValueError) as exc:
+        raise ImportError(f"landyn_post: cannot read the output-schema manifest {path}: {exc}") from None
+
+
+_MANIFEST = _load_manifest()
+SCHEMA_VERSION: str = _MANIFEST["schema_version"]     #: the result schema version this package reads
+CAMPAIGN_SCHEMA: str = _MANIFEST["campaign_schema"]   #: root attribute schema_version of a campaign summary
+SUPPORTED_MAJOR = SCHEMA_VERSION.split(".")[0]        #: files with schema_version MAJOR.x are read (minor versions only add)
 
 #: strut order of the last axis of gear arrays (Table 3 measure order within a gear)
 STRUTS = ("primary", "secondary_left", "secondary_right")
 STRUT_LABELS = {"primary": "primary", "secondary_left": "secondary left", "secondary_right": "secondary right"}
 _STRUT_ALIASES = {"primary": 0, "p": 0, "1": 0, "secondary_left": 1, "left": 1, "l": 1, "2": 1,
                   "secondary_right": 2, "right": 2, "r": 2, "3": 2}
-
-#: energy-audit channels, in the order LANDYN writes them
-ENERGY_NAMES = ("kinetic_body", "kinetic_legs", "potential_released", "honeycomb_work", "contact_damping",
-                "contact_elastic", "friction", "strut_impacts", "thrust_work", "input", "residual")
-
-_XYZ = ("x", "y", "z")
 
 
 class LandynPostError(Exception):
@@ -61,11 +75,13 @@ class LandynFileError(LandynPostError):
 
 @dataclass(frozen=True)
 class DatasetSpec:
-    """One dataset of the schema.
+    """One dataset of the schema (one entry of the manifest).
 
-    shape uses symbols: ``n`` output samples, ``g`` gears, integers for fixed lengths.
+    shape uses symbols: ``n`` output samples, ``g`` gears, ``s`` struts per gear, ``m`` rows of
+    /api/inputs, ``k`` primary honeycomb stages, integers for fixed lengths.
     kind is ``real``, ``int``, ``bool`` (int 0/1 with attribute type=logical) or ``text``.
-    components labels the last axis of length 3 (vectors) where it has a meaning.
+    components labels the last axis (vectors) where it has a meaning; STRUTS for strut axes.
+    written is ``always``, ``with health`` or ``api inputs`` (only in C API files with inputs).
     """
     key: str
     path: str
@@ -75,213 +91,45 @@ class DatasetSpec:
     meaning: str
     components: tuple = ()
     since: str = "1.0"    #: schema version that added it (older files are read without it)
+    written: str = "always"
 
     @property
     def is_timeseries(self) -> bool:
         return self.path.startswith("/timeseries/") and self.key != "time"
 
 
-def _ts(key, path, units, shape, meaning, components=(), since="1.0"):
-    return DatasetSpec(key, path, units, shape, "real", meaning, components, since)
+_KEY_PREFIXES = ("/timeseries/body/", "/timeseries/gears/", "/timeseries/", "/summary/", "/meta/", "/")
 
 
-#: interface loads (schema 1.2): the load vector's blocks as LANDYN writes them
-JOINT_BLOCKS = (
-    ("joint_force_a", "N", "force joint a (upper joint of the primary) puts on the body"),
-    ("joint_force_b", "N", "force joint b (upper joint of the left secondary) puts on the body"),
-    ("joint_force_c", "N", "force joint c (upper joint of the right secondary) puts on the body"),
-    ("footpad_joint_force", "N", "force the footpad puts on the primary strut at its ball joint d"),
-    ("joint_moment_a", "N m", "moment joint a puts on the body (about its universal-joint axis)"),
-    ("joint_moment_b", "N m", "moment joint b puts on the body (about its universal-joint axis)"),
-    ("joint_moment_c", "N m", "moment joint c puts on the body (about its universal-joint axis)"),
-)
+def _key(path: str) -> str:
+    """Short name of a dataset (the attribute of Result): the path without its group prefix, e.g.
+    stroke, energy/friction, gear_axes/joint_force_a, integrator/name, model/stroke_capacity."""
+    for pre in _KEY_PREFIXES:
+        if path.startswith(pre):
+            return path[len(pre):]
+    return path
+
+
+def _spec(d: dict) -> DatasetSpec:
+    comps = tuple(d["components"])
+    return DatasetSpec(_key(d["path"]), d["path"], d["units"], tuple(d["shape"]), d["kind"], d["meaning"],
+                       STRUTS if comps == ("s",) else comps, d["since"], d["written"])
+
+
+#: Every dataset of the schema (root attributes title, producer, schema_version are separate).
+DATASETS: tuple[DatasetSpec, ...] = tuple(_spec(d) for d in _MANIFEST["datasets"])
+
+#: energy-audit channels, in the order LANDYN writes them
+ENERGY_NAMES = tuple(d.key.split("/", 1)[1] for d in DATASETS if d.path.startswith("/timeseries/energy/"))
+#: interface loads (schema 1.2): the load vector's blocks as LANDYN writes them, (key, units, meaning)
+JOINT_BLOCKS = tuple((d.key, d.units, d.meaning) for d in DATASETS
+                     if d.path.startswith(("/timeseries/gears/joint_", "/timeseries/gears/footpad_joint")))
 #: names of the 21 loads of /summary/peak_joint_load/simultaneous
 LOAD_NAMES = tuple(f"F{j}_{c}" for j in "abcd" for c in "xyz") + tuple(f"M{j}_{c}" for j in "abc" for c in "xyz")
 PEAK_JOINTS = ("a", "b", "c", "d")
 PEAK_QUANTITIES = ("x", "y", "z", "magnitude")
-
-
-#: /meta: provenance strings (all scalar text, units '-')
-META = (
-    ("code_version", "LANDYN version"),
-    ("git_revision", "git describe of the source tree at build time"),
-    ("build_type", "CMake build type (Release, Debug, ...)"),
-    ("compiler", "compiler name and version"),
-    ("compiler_flags", "flags of the LANDYN sources as configured"),
-    ("compiler_options", "compiler_options() of the module that wrote the file"),
-    ("date", "time the file was written, ISO 8601 with UTC offset"),
-    ("command_line", "the command that ran LANDYN"),
-    ("deck_name", "input deck path, or '(built-in default)'"),
-    ("deck_text", "the input deck as given"),
-    ("resolved_input", "fully resolved input as a namelist deck (angles in degrees)"),
-    ("units", "unit system statement"),
-)
-
-#: Every dataset of schema 1.2 (root attributes title, producer, schema_version are separate).
-DATASETS: tuple[DatasetSpec, ...] = tuple(
-    [DatasetSpec(k, "/meta/" + k, "-", (), "text", m) for k, m in META]
-    + [
-        _ts("time", "/timeseries/time", "s", ("n",), "output time"),
-        _ts("position", "/timeseries/body/position", "m", ("n", 3),
-            "lander-frame origin O_L (geometric centre), global frame, z down", _XYZ),
-        _ts("mass_centre_position", "/timeseries/body/mass_centre_position", "m", ("n", 3),
-            "mass centre, global frame, z down", _XYZ),
-        _ts("velocity", "/timeseries/body/velocity", "m/s", ("n", 3),
-            "mass-centre velocity, global frame, z down (+z = descending)", _XYZ),
-        _ts("euler_angles", "/timeseries/body/euler_angles", "deg", ("n", 3),
-            "Z-Y-X Euler angles yaw, pitch, roll; R = Rz(yaw) Ry(pitch) Rx(roll) maps lander to global",
-            ("yaw", "pitch", "roll")),
-        _ts("angular_rate", "/timeseries/body/angular_rate", "deg/s", ("n", 3),
-            "body rates p, q, r about the lander axes", ("p", "q", "r")),
-        _ts("overload", "/timeseries/body/overload", "g", ("n", 3),
-            "(a - g)/9.80665 at the mass centre in lander axes (accelerometer reading; "
-            "-z = upward deceleration in the z-down frame)", _XYZ),
-        _ts("overload_peak", "/timeseries/body/overload_peak", "g", ("n",),
-            "largest |overload| over every integration step since the previous sample (this one included)"),
-        _ts("strut_length", "/timeseries/gears/strut_length", "m", ("n", "g", "s"),
-            "strut length between its joints; last axis primary, secondary left, secondary right", STRUTS),
-        _ts("stroke", "/timeseries/gears/stroke", "m", ("n", "g", "s"),
-            "stroke: primary shortening positive, secondaries lengthening positive (Table 3 sense)", STRUTS),
-        _ts("strut_force", "/timeseries/gears/strut_force", "N", ("n", "g", "s"),
-            "axial buffer force, compression positive", STRUTS),
-        _ts("strut_force_peak", "/timeseries/gears/strut_force_peak", "N", ("n", "g", "s"),
-            "largest |axial force| over every integration step since the previous sample", STRUTS),
-        _ts("footpad_position", "/timeseries/gears/footpad_position", "m", ("n", "g", 3),
-            "footpad ball joint d_i, global frame, z down", _XYZ),
-        _ts("ground_force", "/timeseries/gears/ground_force", "N", ("n", "g", 3),
-            "ground force on the footpad (normal + friction), global frame", _XYZ),
-        _ts("normal_force", "/timeseries/gears/normal_force", "N", ("n", "g"),
-            "normal contact force on the footpad (>= 0)"),
-        _ts("normal_force_peak", "/timeseries/gears/normal_force_peak", "N", ("n", "g"),
-            "largest normal force over every integration step since the previous sample"),
-        _ts("friction_force", "/timeseries/gears/friction_force", "N", ("n", "g"),
-            "magnitude of the friction force on the footpad"),
-        _ts("penetration", "/timeseries/gears/penetration", "m", ("n", "g"),
-            "depth below the local surface along its normal (negative: above)"),
-        _ts("slip_speed", "/timeseries/gears/slip_speed", "m/s", ("n", "g"),
-            "footpad speed tangential to the local surface"),
-    ]
-    + [_ts(k, "/timeseries/gears/" + k, u, ("n", "g", 3), m + ", lander axes", _XYZ, "1.2")
-       for k, u, m in JOINT_BLOCKS]
-    + [_ts("gear_axes/" + k, "/timeseries/gears/gear_axes/" + k, u, ("n", "g", 3), m + ", gear axes", _XYZ, "1.2")
-       for k, u, m in JOINT_BLOCKS]
-    + [_ts("interface_force", "/timeseries/gears/interface_force", "N", ("n", "g", 3),
-           "the gear's total force on the body from its momentum balance (= joint_force_a + b + c), lander axes",
-           _XYZ, "1.2")]
-    + [_ts("energy/" + e, "/timeseries/energy/" + e, "J", ("n",), "energy audit: " + e.replace("_", " "))
-       for e in ENERGY_NAMES]
-    + [
-        DatasetSpec("crush_length", "/summary/crush_length", "m", ("g", "s"), "real",
-                    "signed net crush per gear and strut (Table 3 sense)", STRUTS),
-        DatasetSpec("crushed_positive", "/summary/crushed_positive", "m", ("g", "s"), "real",
-                    "crushed length toward + (primary shortening, secondary lengthening)", STRUTS),
-        DatasetSpec("crushed_negative", "/summary/crushed_negative", "m", ("g", "s"), "real",
-                    "crushed length toward - (secondary shortening)", STRUTS),
-        DatasetSpec("stroke_final", "/summary/stroke_final", "m", ("g", "s"), "real", "stroke at the end", STRUTS),
-        DatasetSpec("stroke_margin", "/summary/stroke_margin", "m", ("g", "s"), "real",
-                    "stroke capacity minus crushed length, worst direction (negative: bottomed out)", STRUTS),
-        DatasetSpec("bottomed_out", "/summary/bottomed_out", "-", ("g", "s"), "int",
-                    "1 where a stroke exceeded its capacity", STRUTS),
-        DatasetSpec("crush_work", "/summary/crush_work", "J", ("g", "s"), "real", "honeycomb crush work", STRUTS),
-        DatasetSpec("mode_switches", "/summary/mode_switches", "-", ("g", "s"), "int",
-                    "crush-mode changes (locked, crushing +/-, free) per strut", STRUTS),
-        DatasetSpec("peak_strut_force", "/summary/peak_strut_force", "N", ("g", "s"), "real",
-                    "largest |axial force| at the output samples", STRUTS),
-        DatasetSpec("peak_overload", "/summary/peak_overload", "g", (), "real",
-                    "largest |overload| at the mass centre (every step)"),
-        DatasetSpec("time_of_peak_overload", "/summary/time_of_peak_overload", "s", (), "real",
-                    "time of peak_overload"),
-        DatasetSpec("peak_penetration", "/summary/peak_penetration", "m", ("g",), "real",
-                    "largest penetration per footpad (every step)"),
-        DatasetSpec("slide_distance", "/summary/slide_distance", "m", ("g",), "real",
-                    "path length of each footpad along the surface while in contact"),
-        DatasetSpec("peak_normal_force", "/summary/peak_normal_force", "N", ("g",), "real",
-                    "largest normal force per footpad (every step)"),
-        DatasetSpec("final_attitude", "/summary/final_attitude", "deg", (3,), "real",
-                    "Z-Y-X Euler angles yaw, pitch, roll at the end", ("yaw", "pitch", "roll")),
-        DatasetSpec("final_tilt", "/summary/final_tilt", "deg", (), "real",
-                    "angle between the lander z axis and the vertical at the end"),
-        DatasetSpec("max_tilt", "/summary/max_tilt", "deg", (), "real", "largest tilt during the run"),
-        DatasetSpec("tipped_over", "/summary/tipped_over", "-", (), "bool", "tilt exceeded tipover_angle"),
-        DatasetSpec("at_rest", "/summary/at_rest", "-", (), "bool", "the lander came to rest"),
-        DatasetSpec("end_reason", "/summary/end_reason", "-", (), "text",
-                    "'end time reached', 'at rest' or 'tipped over'"),
-        DatasetSpec("energy_input", "/summary/energy_input", "J", (), "real",
-                    "initial kinetic energy + potential energy released + thrust work"),
-        DatasetSpec("energy_residual", "/summary/energy_residual", "-", (), "real",
-                    "final energy-audit residual relative to energy_input"),
-    ] + [
-        DatasetSpec("energy_audit/" + e, "/summary/energy_audit/" + e, "J", (), "real",
-                    "final value of /timeseries/energy/" + e)
-        for e in ENERGY_NAMES
-    ] + [
-        DatasetSpec("max_constraint_violation", "/summary/max_constraint_violation", "m", (), "real",
-                    "largest constraint violation after correction"),
-        DatasetSpec("max_constraint_drift", "/summary/max_constraint_drift", "m", (), "real",
-                    "largest constraint violation before correction (one step of drift)"),
-        DatasetSpec("final_time", "/summary/final_time", "s", (), "real", "time at the end of the run"),
-        DatasetSpec("n_steps", "/summary/n_steps", "-", (), "int", "accepted time steps"),
-        DatasetSpec("integrator/name", "/summary/integrator/name", "-", (), "text", "time integrator: fixed or adaptive"),
-        DatasetSpec("integrator/n_evaluations", "/summary/integrator/n_evaluations", "-", (), "int",
-                    "force evaluations, rejected steps included"),
-        DatasetSpec("integrator/n_rejected", "/summary/integrator/n_rejected", "-", (), "int", "rejected steps"),
-        DatasetSpec("integrator/n_events", "/summary/integrator/n_events", "-", (), "int",
-                    "accepted steps that ended at a located event"),
-        DatasetSpec("integrator/n_forced", "/summary/integrator/n_forced", "-", (), "int",
-                    "steps of event_resolution accepted above the tolerance (discontinuities)"),
-        DatasetSpec("integrator/n_releases", "/summary/integrator/n_releases", "-", (), "int",
-                    "strut releases (locked to crushing or free)", since="1.3"),
-        DatasetSpec("integrator/n_releases_after_lock", "/summary/integrator/n_releases_after_lock", "-", (), "int",
-                    "strut releases in the step after a strut locked", since="1.3"),
-        DatasetSpec("integrator/dt_smallest", "/summary/integrator/dt_smallest", "s", (), "real", "smallest accepted step"),
-        DatasetSpec("integrator/dt_largest", "/summary/integrator/dt_largest", "s", (), "real", "largest accepted step"),
-        DatasetSpec("wall_time", "/summary/wall_time", "s", (), "real", "wall-clock time of the simulation"),
-        DatasetSpec("peak_joint_load/value", "/summary/peak_joint_load/value", "N", ("g", 4, 4), "real",
-                    "peak interface load per gear, joint (a, b, c, d) and quantity (x, y, z, magnitude), lander "
-                    "axes, over every accepted step; components signed", (), "1.2"),
-        DatasetSpec("peak_joint_load/time", "/summary/peak_joint_load/time", "s", ("g", 4, 4), "real",
-                    "instant of each peak", (), "1.2"),
-        DatasetSpec("peak_joint_load/simultaneous", "/summary/peak_joint_load/simultaneous", "N, N m",
-                    ("g", 16, 21), "real", "the gear's 21 loads (load_names) at the instant of each peak; "
-                    "row = 4 * joint + quantity", (), "1.2"),
-        DatasetSpec("peak_joint_load/load_names", "/summary/peak_joint_load/load_names", "-", (21,), "text",
-                    "names of the simultaneous loads: Fa_x ... Fd_z [N], Ma_x ... Mc_z [N m]", (), "1.2"),
-        DatasetSpec("peak_joint_load/joint_names", "/summary/peak_joint_load/joint_names", "-", (4,), "text",
-                    "a, b, c, d", (), "1.2"),
-        DatasetSpec("peak_joint_load/quantity_names", "/summary/peak_joint_load/quantity_names", "-", (4,), "text",
-                    "x, y, z, magnitude", (), "1.2"),
-        DatasetSpec("health/status", "/summary/health/status", "-", (), "int",
-                    "worst run-health check: 0 passed, 1 warnings, 2 failed (run meaningless; docs/health.md)"),
-        DatasetSpec("health/checks", "/summary/health/checks", "-", (6,), "text", "names of the run-health checks"),
-        DatasetSpec("health/results", "/summary/health/results", "-", (6,), "int",
-                    "per check: 0 passed, 1 warning, 2 failed"),
-        DatasetSpec("health/messages", "/summary/health/messages", "-", (), "text",
-                    "one line per check that did not pass; 'none' when all passed"),
-        DatasetSpec("outcome/code", "/summary/outcome/code", "-", (), "int",
-                    "0 not classified, 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over",
-                    (), "1.3"),
-        DatasetSpec("outcome/name", "/summary/outcome/name", "-", (), "text",
-                    "no_touchdown, at_rest, still_moving or tipped_over", (), "1.3"),
-        DatasetSpec("outcome/touched_down", "/summary/outcome/touched_down", "-", (), "bool",
-                    "a footpad touched the ground", (), "1.3"),
-        DatasetSpec("outcome/body_speed", "/summary/outcome/body_speed", "m/s", (), "real",
-                    "mass-centre speed at the final time", (), "1.3"),
-        DatasetSpec("outcome/angular_rate", "/summary/outcome/angular_rate", "deg/s", (), "real",
-                    "|omega| at the final time", (), "1.3"),
-        DatasetSpec("outcome/slide_rate", "/summary/outcome/slide_rate", "m/s", (), "real",
-                    "largest footpad speed along the terrain at the final time", (), "1.3"),
-        DatasetSpec("outcome/footpad_speed", "/summary/outcome/footpad_speed", "m/s", (), "real",
-                    "largest footpad speed (slide and sink) at the final time", (), "1.3"),
-        DatasetSpec("outcome/stroke_rate", "/summary/outcome/stroke_rate", "m/s", (), "real",
-                    "largest strut stroke rate at the final time", (), "1.3"),
-        DatasetSpec("outcome/tipover_margin", "/summary/outcome/tipover_margin", "deg", (), "real",
-                    "further tilt about the nearest support-polygon edge that puts the gravity line through the mass "
-                    "centre on it, final state (<= 0: not statically stable)", (), "1.3"),
-        DatasetSpec("outcome/friction_ratio", "/summary/outcome/friction_ratio", "-", ("g",), "real",
-                    "per footpad |F_t|/(mu_s F_n), final state (< 1 held by static friction, 0 off the ground)",
-                    (), "1.3"),
-    ]
-)
+#: /meta: provenance strings (all scalar text, units '-'), (key, meaning)
+META = tuple((d.key, d.meaning) for d in DATASETS if d.path.startswith("/meta/"))
 
 #: root attributes of the file
 ROOT_ATTRIBUTES = (
@@ -441,70 +289,63 @@ class Result:
                 raise LandynFileError(f"{self.path}: /meta/resolved_input cannot be read: {exc}") from None
         return self._deck
 
-    def _deck_value(self, fn, what: str):
-        try:
-            return fn()
-        except NamelistError as exc:
-            raise LandynFileError(f"{self.path}: {what} not found in /meta/resolved_input ({exc})") from None
+    # -- the model (/model, schema 1.4)
+    def model(self, name: str) -> np.ndarray:
+        """Dataset /model/<name>; LandynFileError naming the missing group for a file older than
+        schema 1.4 (it has no /model: rewrite it with this LANDYN)."""
+        v = self.data.get("model/" + name)
+        if v is None:
+            raise LandynFileError(f"{self.path}: no /model group (schema_version {self.schema_version}; /model "
+                                  f"came with 1.4): /model/{name} is needed here; run the deck again with this LANDYN")
+        return v
+
+    @property
+    def has_model(self) -> bool:
+        """The file has the /model group (schema 1.4 or later)."""
+        return self.data.get("model/n_gears") is not None
 
     def strut_capacity(self) -> np.ndarray:
         """Stroke capacity per gear and strut, shape (n_gears, n_struts, 2): [..., 0] toward +
         (primary shortening, secondary lengthening), [..., 1] toward - (secondary shortening,
-        as a positive length; NaN for the primary, which has none).
+        as a positive length; NaN where a strut has none, as the primary).
 
-        From /meta/resolved_input (&primary_strut stage_end(n_stages), &secondary_strut
-        stroke_lengthening / stroke_shortening); if that cannot be read, the + capacity falls back
-        to crushed_positive + stroke_margin from /summary (exact where the + side governs).
+        From /model/stroke_capacity; a file older than schema 1.4 has only the + capacity as
+        crushed_positive + stroke_margin from /summary (exact where the + side governs).
         """
-        cap = np.full((self.n_gears, self.n_struts, 2), np.nan)
-        try:
-            d = self.deck
-            n_st = int(d.get("primary_strut", "n_stages"))
-            ends = d.array("primary_strut", "stage_end", (max(n_st, 1),))
-            cap[:, 0, 0] = ends[n_st - 1]
-            cap[:, 1:, 0] = float(d.get("secondary_strut", "stroke_lengthening"))
-            cap[:, 1:, 1] = float(d.get("secondary_strut", "stroke_shortening"))
-        except (LandynFileError, NamelistError, ValueError):
+        if not self.has_model:
+            cap = np.full((self.n_gears, self.n_struts, 2), np.nan)
             cap[:, :, 0] = self.data["crushed_positive"] + self.data["stroke_margin"]
+            return cap
+        cap = np.array(self.model("stroke_capacity"), dtype=float)
+        cap[..., 1] = np.where(cap[..., 1] > 0.0, cap[..., 1], np.nan)
         return cap
 
     def primary_stage_ends(self) -> np.ndarray:
-        """Primary honeycomb stage ends (m), from /meta/resolved_input; empty if unavailable."""
-        try:
-            n_st = int(self.deck.get("primary_strut", "n_stages"))
-            return self.deck.array("primary_strut", "stage_end", (n_st,))
-        except (LandynFileError, NamelistError, ValueError):
-            return np.array([])
+        """Primary honeycomb stage ends (m), from /model/primary_stage_end; empty for an older file."""
+        return np.asarray(self.model("primary_stage_end"), dtype=float) if self.has_model else np.array([])
 
     def hard_points(self) -> dict[str, np.ndarray]:
-        """Hard points a..f of every gear in the LANDER frame, each (n_gears, 3) m, plus
-        'rotation' (n_gears,) deg (gear frame = lander frame rotated about z) and
-        'mass_centre' (3,) m, from /meta/resolved_input."""
-        d, g = self.deck, self.n_gears
-
-        def read():
-            out = {}
-            for p in "abcdef":
-                out[p] = d.array("gears", "point_" + p, (3, g)).T.copy()
-            out["rotation"] = d.array("gears", "rotation", (g,))
-            out["mass_centre"] = d.array("lander", "mass_centre", (3,))
-            return out
-
-        out = self._deck_value(read, "&gears hard points")
-        if not all(np.all(np.isfinite(v)) for v in out.values()):
-            raise LandynFileError(f"{self.path}: /meta/resolved_input does not give every gear's hard points")
+        """Hard points a..f of every gear in the LANDER frame, each (n_gears, 3) m (a, b, c the
+        upper joints of the primary and the secondaries, d the footpad joint, e, f the lugs), plus
+        'rotation' (n_gears,) deg (gear frame = lander frame rotated about z), 'mass_centre' (3,) m,
+        'gear_axes' (n_gears, 3, 3) (rows: the gear's axes in lander axes) and 'strut_frame'
+        (n_gears, n_struts, 3, 3) (each strut's nominal frame, columns x0 y0 z0 in lander axes),
+        all from /model."""
+        upper, lower = self.model("upper_joint"), self.model("lower_joint")
+        axes = self.model("gear_axes")
+        out = {p: np.array(upper[:, k]) for k, p in enumerate("abc")}
+        out.update({p: np.array(lower[:, k]) for k, p in enumerate("def")})
+        out["rotation"] = np.mod(np.degrees(np.arctan2(axes[:, 0, 1], axes[:, 0, 0])), 360.0)
+        out["mass_centre"] = np.array(self.model("mass_centre"))
+        out["gear_axes"] = np.array(axes)
+        out["strut_frame"] = np.stack([self.model("strut_frame/" + c) for c in "xyz"], axis=-1)
         return out
 
     def terrain(self) -> np.ndarray:
         """Terrain plane under each footpad, (n_gears, 3): elevation at the global origin (m, up
-        positive), slope (deg), uphill azimuth (deg, from +x toward +y)."""
-        d, g = self.deck, self.n_gears
-
-        def read():
-            return np.stack([d.array("terrain", k, (g,), fill=0.0)
-                             for k in ("height", "slope", "slope_direction")], axis=1)
-
-        return self._deck_value(read, "&terrain")
+        positive), slope (deg), uphill azimuth (deg, from +x toward +y); from /model/terrain."""
+        return np.stack([np.asarray(self.model("terrain/" + k), dtype=float)
+                         for k in ("height", "slope", "slope_direction")], axis=1)
 
     # -- channels
     def channel(self, text: str) -> Channel:
@@ -672,8 +513,8 @@ def load(path: str | os.PathLike) -> Result:
         data: dict[str, object] = {}
         minor = _minor(ver)
         for d in DATASETS:
-            if d.path not in f and minor < _minor(d.since):
-                data[d.key] = None       # added after the file's schema version
+            if d.path not in f and (minor < _minor(d.since) or d.written == "api inputs"):
+                data[d.key] = None       # added after the file's schema version, or not written by this producer
                 continue
             if d.path not in f:
                 raise LandynFileError(f"{path}: missing dataset {d.path} (schema {ver}); "
@@ -726,6 +567,7 @@ def _check_shapes(path: str, data: dict[str, object]) -> None:
             continue
         want = tuple({"n": n, "g": g, "s": ns}.get(s, s) for s in d.shape)
         got = np.shape(data[d.key])
-        if got != want:
+        free = [isinstance(w, str) for w in want]      # m, k: any length
+        if len(got) != len(want) or any(a != b for a, b, x in zip(got, want, free) if not x):
             raise LandynFileError(f"{path}: {d.path} has shape {got}, expected {want} "
                                   f"({', '.join(map(str, d.shape))})")

@@ -30,7 +30,7 @@ def test_file_matches_schema_exactly(case, request):
     """Every dataset LANDYN writes is in schema.DATASETS with the same units, and vice versa."""
     path = request.getfixturevalue(case)
     found, attrs, version = _file_datasets(path)
-    expected = {d.path: d.units for d in DATASETS}
+    expected = {d.path: d.units for d in DATASETS if d.written != "api inputs"}
     assert set(found) == set(expected), (f"only in file: {sorted(set(found) - set(expected))}, "
                                          f"only in schema.py: {sorted(set(expected) - set(found))}")
     assert {p: u for p, u in found.items()} == expected
@@ -62,8 +62,24 @@ def test_shapes_and_values(lc3_short):
     assert set(r.energy) >= {"honeycomb_work", "residual", "input"}
 
 
-def test_capacities_and_terrain_from_resolved_input(lc3_short):
-    r = load(lc3_short)
+def _without(src, dst, *paths):
+    """A copy of result file src without the datasets or groups `paths`."""
+    import shutil
+    shutil.copyfile(src, dst)
+    with h5py.File(dst, "r+") as f:
+        for p in paths:
+            del f[p]
+    return dst
+
+
+def test_capacities_and_terrain_from_model(lc3_short, tmp_path):
+    """Capacities, hard points and terrain come from /model: the deck in /meta is not read."""
+    p = _without(lc3_short, tmp_path / "nodeck.h5", "/meta/resolved_input", "/meta/deck_text")
+    with h5py.File(p, "r+") as f:
+        for k in ("resolved_input", "deck_text"):
+            f["/meta/" + k] = np.bytes_(b"&nonsense x = /")
+            f["/meta/" + k].attrs["units"] = np.bytes_(b"-")
+    r = load(p)
     cap = r.strut_capacity()
     np.testing.assert_allclose(cap[:, 0, 0], 0.475)
     assert np.all(np.isnan(cap[:, 0, 1]))
@@ -72,6 +88,44 @@ def test_capacities_and_terrain_from_resolved_input(lc3_short):
     hp = r.hard_points()
     np.testing.assert_allclose(hp["a"][1], [0.0, 3.89, -2.18], atol=1e-12)   # gear 2 = gear 1 turned 90 deg
     np.testing.assert_allclose(hp["rotation"], [0, 90, 180, 270])
+    np.testing.assert_allclose(r.primary_stage_ends(), [0.2, 0.475])
+    # the strut frames are orthonormal, z0 along the nominal strut
+    fr = hp["strut_frame"]
+    np.testing.assert_allclose(np.einsum("gsji,gsjk->gsik", fr, fr), np.broadcast_to(np.eye(3), fr.shape), atol=1e-12)
+    z0 = (hp["d"] - hp["a"]) / np.linalg.norm(hp["d"] - hp["a"], axis=1)[:, None]
+    np.testing.assert_allclose(fr[:, 0, :, 2], z0, atol=1e-12)
+
+
+def test_file_without_model_group(lc3_short, tmp_path):
+    """A file older than schema 1.4 (no /model): a clear error naming the group where the model is
+    needed; the + capacity from the summary, as before."""
+    p = _without(lc3_short, tmp_path / "old.h5", "/model")
+    with h5py.File(p, "r+") as f:
+        f.attrs["schema_version"] = np.bytes_(b"1.3")
+    r = load(p)
+    assert not r.has_model
+    for fn in (r.hard_points, r.terrain, lambda: lander_geometry(r)):
+        with pytest.raises(LandynPostError, match="no /model group"):
+            fn()
+    cap = r.strut_capacity()
+    np.testing.assert_allclose(cap[:, :, 0], r.crushed_positive + r.stroke_margin)
+    with h5py.File(p, "r+") as f:
+        f.attrs["schema_version"] = np.bytes_(b"1.4")
+    with pytest.raises(LandynPostError, match="missing dataset /model/"):
+        load(p)
+
+
+def test_campaign_schema_defined_once():
+    """The campaign summary's schema string: one constant (from the manifest LANDYN writes), used by
+    every reader; no module spells it again."""
+    import json
+
+    from landyn_post import dispersion, envelope, exchange, schema
+    manifest = json.loads((REPO / "post" / "landyn_post" / "data" / "output_schema.json").read_text())
+    assert schema.CAMPAIGN_SCHEMA == manifest["campaign_schema"]
+    assert envelope.SCHEMA.decode() == dispersion.SCHEMA.decode() == exchange.CAMPAIGN_SCHEMA == schema.CAMPAIGN_SCHEMA
+    spelled = [p.name for p in (REPO / "post" / "landyn_post").glob("*.py") if "landyn-campaign-" in p.read_text()]
+    assert not spelled, f"the campaign schema string is spelled out in {spelled}"
 
 
 def test_geometry_rebuild_reproduces_strut_lengths(lc3_short):

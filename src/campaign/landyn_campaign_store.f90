@@ -19,6 +19,8 @@ module landyn_campaign_store
   use landyn_campaign_deck, only: campaign_t, criteria_t, param_description, max_body_points
   use landyn_campaign_case, only: case_row_t, status_ok, status_no_touchdown, criterion_name, failed_criteria_names, &
                                  failure_counts, inconclusive
+  ! the one definition of the summary file's layout version (docs/campaign.md)
+  use landyn_output_schema, only: schema_version => campaign_schema_version
   implicit none
   private
 
@@ -26,7 +28,6 @@ module landyn_campaign_store
   public :: success_probability, wilson_interval, schema_version
   public :: results_t, results_init, results_add, results_rows, results_missing, results_take_rows
 
-  character(len=*), parameter :: schema_version = 'landyn-campaign-1.0'  !! layout of docs/campaign.md
   real(wp), parameter :: z95 = 1.959963984540054_wp   !! two-sided 95 % normal quantile [-]
   integer, parameter :: text_len = 2048               !! longest stored string of a row [-]
 

@@ -19,6 +19,8 @@ module landyn_sim_result
     integer :: n_gears = 0                                 !! number of gears [-]
     integer, allocatable :: n_struts(:)                    !! (n_gears) struts of each gear [-]
     character(len=strut_name_len), allocatable :: strut_names(:, :)  !! (struts, n_gears) their names [-]
+    real(wp), allocatable :: stroke_capacity(:, :, :)     !! (2, struts, n_gears) buffer capacity toward +s, -s
+                                                           !! (buffer_capacity; 0: none), for /model [m]
     integer :: n_out = 0                                   !! samples stored
     real(wp), allocatable :: t(:)                          !! [s]
     real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
@@ -116,12 +118,14 @@ contains
     ng = model%n_gears
     n_struts = maxval(model%n_struts(1:ng))
     res%n_gears = ng
-    allocate (res%n_struts(ng), res%strut_names(n_struts, ng))
+    allocate (res%n_struts(ng), res%strut_names(n_struts, ng), res%stroke_capacity(2, n_struts, ng))
     res%n_struts = model%n_struts(1:ng)
     res%strut_names = ''
+    res%stroke_capacity = 0.0_wp
     do i = 1, ng
       do k = 1, res%n_struts(i)
         res%strut_names(k, i) = model%gear(i)%g%strut_name(k)
+        call model%gear(i)%g%buffer_capacity(k, res%stroke_capacity(1, k, i), res%stroke_capacity(2, k, i))
       end do
     end do
     allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &

@@ -1,4 +1,6 @@
-!> Writes a run's result file following the schema of docs/output.md (schema version below).
+!> Writes a run's result file following the schema of docs/output.md, declared once in
+!! landyn_output_schema: every dataset goes through schema_write, which refuses one the schema
+!! does not declare with these units, kind and rank.
 !! The file is written under a temporary name (<file>.partial) and renamed only when complete,
 !! so a run that fails or is killed leaves nothing that looks like a result.
 module landyn_output
@@ -10,14 +12,15 @@ module landyn_output
   use landyn_simulation, only: sim_result_t, n_energy, energy_names
   use landyn_health, only: health_t, check_names, n_checks
   use landyn_outcome, only: outcome_name
-  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr
+  use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write_attr
+  use landyn_output_schema, only: schema_version => result_schema_version
+  use landyn_schema_write, only: schema_write
+  use landyn_output_model, only: write_model_group
   use landyn_loads, only: n_load, n_joint, n_quantity, load_names, joint_names, quantity_names
   implicit none
   private
 
   public :: write_result_file, schema_version
-
-  character(len=*), parameter :: schema_version = '1.3'  !! version of docs/output.md
 
 contains
 
@@ -61,17 +64,14 @@ contains
     real(wp), intent(in) :: moment(:, :)           !! (3, m) pure moment, lander axes [N m]
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message on failure
-    call h5_write(f, '/api/inputs/time', t, 's', stat, errmsg, &
-      description='simulation time at which landyn_set_input set the inputs (held until the next row)')
+    call schema_write(f, '/api/inputs/time', t, 's', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/api/inputs/force', force, 'N', stat, errmsg, &
-      description='input force at the &engine point, lander axes, added to the deck''s thrust; shape (m, 3)')
+    call schema_write(f, '/api/inputs/force', force, 'N', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/api/inputs/moment', moment, 'N m', stat, errmsg, &
-      description='input pure moment, lander axes; shape (m, 3)')
+    call schema_write(f, '/api/inputs/moment', moment, 'N m', stat, errmsg)
   end subroutine write_api_inputs
 
-  !> Root attributes, /meta (write_meta and the run's deck), /timeseries and /summary of a run.
+  !> Root attributes, /meta (write_meta and the run's deck), /model, /timeseries and /summary of a run.
   subroutine write_all(f, inp, res, command_line, stat, errmsg, program)
     type(h5_file_t), intent(inout) :: f            !! open file [-]
     type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
@@ -82,6 +82,8 @@ contains
     character(len=*), intent(in) :: program        !! producer's program name, blank for landyn [-]
 
     call write_root_and_meta(f, inp, command_line, stat, errmsg, program)
+    if (stat /= 0) return
+    call write_model_group(f, inp, res, stat, errmsg)
     if (stat /= 0) return
     call write_timeseries(f, res, stat, errmsg)
     if (stat /= 0) return
@@ -105,13 +107,13 @@ contains
     call h5_write_attr(f, '/', 'title', trim(inp%simulation%title), stat, errmsg); if (stat /= 0) return
     call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
     call write_meta(f, program, command_line, stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/deck_name', nonempty(inp%deck_name, '(built-in default)'), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/meta/deck_text', nonempty(inp%deck_text, '(none: built-in default input)'), '-', stat, errmsg, &
-                  description='the input deck as given'); if (stat /= 0) return
-    call h5_write(f, '/meta/resolved_input', resolved_input_text(inp), '-', stat, errmsg, &
-                  description='fully resolved input as a namelist deck (angles in degrees)'); if (stat /= 0) return
-    call h5_write(f, '/meta/units', 'SI (m, kg, s, N, J); angles in deg; overload in g = 9.80665 m/s^2; '// &
-                  'global frame z down', '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/meta/deck_name', nonempty(inp%deck_name, '(built-in default)'), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/meta/deck_text', nonempty(inp%deck_text, '(none: built-in default input)'), '-', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/meta/resolved_input', resolved_input_text(inp), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/meta/units', 'SI (m, kg, s, N, J); angles in deg; overload in g = 9.80665 m/s^2; '// &
+                      'global frame z down', '-', stat, errmsg)
+    if (stat /= 0) return
   end subroutine write_root_and_meta
 
   !> /timeseries: the body's and the gears' histories, the energy audit's terms, the interface loads.
@@ -122,48 +124,31 @@ contains
     character(len=*), intent(inout) :: errmsg      !! message [-]
     integer :: n, k
     n = res%n_out
-    call h5_write(f, '/timeseries/time', res%t(1:n), 's', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/position', res%position(:, 1:n), 'm', stat, errmsg, &
-      description='lander-frame origin O_L, global frame (z down), shape (n, 3)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/mass_centre_position', res%mc_position(:, 1:n), 'm', stat, errmsg, &
-      description='mass centre, global frame'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/velocity', res%velocity(:, 1:n), 'm/s', stat, errmsg, &
-      description='mass-centre velocity, global frame (z down)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/euler_angles', res%euler(:, 1:n), 'deg', stat, errmsg, &
-      description='Z-Y-X Euler angles yaw, pitch, roll'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/angular_rate', res%rate(:, 1:n), 'deg/s', stat, errmsg, &
-      description='body rates p, q, r about the lander axes'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/overload', res%overload(:, 1:n), 'g', stat, errmsg, &
-      description='(a - g)/9.80665 at the mass centre in lander axes: what an accelerometer reads'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/body/overload_peak', res%overload_peak(1:n), 'g', stat, errmsg, &
-      description='largest |overload| over the steps since the previous sample (this one included)')
+    call schema_write(f, '/timeseries/time', res%t(1:n), 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/position', res%position(:, 1:n), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/mass_centre_position', res%mc_position(:, 1:n), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/velocity', res%velocity(:, 1:n), 'm/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/euler_angles', res%euler(:, 1:n), 'deg', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/angular_rate', res%rate(:, 1:n), 'deg/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/overload', res%overload(:, 1:n), 'g', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/body/overload_peak', res%overload_peak(1:n), 'g', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/strut_length', res%strut_length(:, :, 1:n), 'm', stat, errmsg, &
-      description='shape (n, n_gears, 3): primary, secondary left, secondary right'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/stroke', res%stroke(:, :, 1:n), 'm', stat, errmsg, &
-      description='primary: shortening positive; secondaries: lengthening positive (Table 3 sense)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/strut_force', res%strut_force(:, :, 1:n), 'N', stat, errmsg, &
-      description='axial buffer force, compression positive'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/strut_force_peak', res%strut_force_peak(:, :, 1:n), 'N', stat, errmsg, &
-      description='largest |axial force| over the steps since the previous sample (this one included)')
+    call schema_write(f, '/timeseries/gears/strut_length', res%strut_length(:, :, 1:n), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/stroke', res%stroke(:, :, 1:n), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/strut_force', res%strut_force(:, :, 1:n), 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/strut_force_peak', res%strut_force_peak(:, :, 1:n), 'N', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/footpad_position', res%footpad_position(:, :, 1:n), 'm', stat, errmsg, &
-      description='footpad ball joint, global frame (z down)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/ground_force', res%ground_force(:, :, 1:n), 'N', stat, errmsg, &
-      description='ground force on the footpad (normal + friction), global frame'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/normal_force', res%normal_force(:, 1:n), 'N', stat, errmsg, &
-      description='shape (n, n_gears)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/normal_force_peak', res%normal_force_peak(:, 1:n), 'N', stat, errmsg, &
-      description='largest normal force over the steps since the previous sample (this one included)')
+    call schema_write(f, '/timeseries/gears/footpad_position', res%footpad_position(:, :, 1:n), 'm', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/friction_force', res%friction_force(:, 1:n), 'N', stat, errmsg, &
-      description='magnitude of the friction force'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/penetration', res%penetration(:, 1:n), 'm', stat, errmsg, &
-      description='depth below the local surface along its normal (negative: above)'); if (stat /= 0) return
-    call h5_write(f, '/timeseries/gears/slip_speed', res%slip_speed(:, 1:n), 'm/s', stat, errmsg, &
-      description='footpad speed tangential to the local surface'); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/ground_force', res%ground_force(:, :, 1:n), 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/normal_force', res%normal_force(:, 1:n), 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/normal_force_peak', res%normal_force_peak(:, 1:n), 'N', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/friction_force', res%friction_force(:, 1:n), 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/penetration', res%penetration(:, 1:n), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/timeseries/gears/slip_speed', res%slip_speed(:, 1:n), 'm/s', stat, errmsg); if (stat /= 0) return
     do k = 1, n_energy
-      call h5_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(1:n, k), 'J', stat, errmsg)
+      call schema_write(f, '/timeseries/energy/'//trim(energy_names(k)), res%energy(1:n, k), 'J', stat, errmsg)
       if (stat /= 0) return
     end do
     call write_interface_loads(f, res, stat, errmsg)
@@ -176,22 +161,15 @@ contains
     type(sim_result_t), intent(in) :: res          !! results [-]
     integer, intent(out) :: stat                   !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg      !! message [-]
-    call h5_write(f, '/summary/crush_length', res%crush_net, 'm', stat, errmsg, &
-      description='signed net crush per gear and strut, shape (n_gears, 3): primary, secondary left, '// &
-                  'secondary right; primary shortening and secondary lengthening positive (Table 3 sense)')
+    call schema_write(f, '/summary/crush_length', res%crush_net, 'm', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/crushed_positive', res%crush_pos, 'm', stat, errmsg, &
-      description='crushed length toward + (primary shortening, secondary lengthening)'); if (stat /= 0) return
-    call h5_write(f, '/summary/crushed_negative', res%crush_neg, 'm', stat, errmsg, &
-      description='crushed length toward - (secondary shortening)'); if (stat /= 0) return
-    call h5_write(f, '/summary/stroke_final', res%stroke_final, 'm', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/stroke_margin', res%stroke_margin, 'm', stat, errmsg, &
-      description='stroke capacity minus crushed length, worst direction (negative: bottomed out)'); if (stat /= 0) return
-    call h5_write(f, '/summary/bottomed_out', res%bottomed, '-', stat, errmsg, &
-      description='1 where a stroke exceeded its capacity'); if (stat /= 0) return
-    call h5_write(f, '/summary/crush_work', res%crush_work, 'J', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/mode_switches', res%mode_switches, '-', stat, errmsg, &
-      description='number of crush-mode changes per strut (locked, crushing, sliding freely; each direction)')
+    call schema_write(f, '/summary/crushed_positive', res%crush_pos, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/crushed_negative', res%crush_neg, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/stroke_final', res%stroke_final, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/stroke_margin', res%stroke_margin, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/bottomed_out', res%bottomed, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/crush_work', res%crush_work, 'J', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/mode_switches', res%mode_switches, '-', stat, errmsg)
     if (stat /= 0) return
   end subroutine write_summary_crush
 
@@ -203,29 +181,22 @@ contains
     character(len=*), intent(inout) :: errmsg      !! message [-]
     integer :: n, k
     n = res%n_out
-    call h5_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg, &
-      description='largest |axial force| over all steps'); if (stat /= 0) return
-    call h5_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/time_of_peak_overload', res%t_peak_overload, 's', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/peak_penetration', res%peak_penetration, 'm', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/slide_distance', res%slide_distance, 'm', stat, errmsg, &
-      description='path length of each footpad along the surface while in contact'); if (stat /= 0) return
-    call h5_write(f, '/summary/peak_normal_force', res%peak_normal_force, 'N', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/final_attitude', res%final_euler, 'deg', stat, errmsg, &
-      description='Z-Y-X Euler angles yaw, pitch, roll at the end'); if (stat /= 0) return
-    call h5_write(f, '/summary/final_tilt', res%final_tilt, 'deg', stat, errmsg, &
-      description='angle between the lander z axis and the vertical at the end'); if (stat /= 0) return
-    call h5_write(f, '/summary/max_tilt', res%max_tilt, 'deg', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/tipped_over', res%tipped_over, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/at_rest', res%at_rest, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/end_reason', trim(res%end_reason), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/energy_input', res%energy_input, 'J', stat, errmsg, &
-      description='initial kinetic energy + potential energy released + thrust work'); if (stat /= 0) return
-    call h5_write(f, '/summary/energy_residual', res%energy_residual, '-', stat, errmsg, &
-      description='final energy-audit residual relative to energy_input'); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_strut_force', res%peak_strut_force, 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_overload', res%peak_overload, 'g', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/time_of_peak_overload', res%t_peak_overload, 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_penetration', res%peak_penetration, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/slide_distance', res%slide_distance, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_normal_force', res%peak_normal_force, 'N', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/final_attitude', res%final_euler, 'deg', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/final_tilt', res%final_tilt, 'deg', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/max_tilt', res%max_tilt, 'deg', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/tipped_over', res%tipped_over, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/at_rest', res%at_rest, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/end_reason', trim(res%end_reason), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/energy_input', res%energy_input, 'J', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/energy_residual', res%energy_residual, '-', stat, errmsg); if (stat /= 0) return
     do k = 1, n_energy
-      call h5_write(f, '/summary/energy_audit/'//trim(energy_names(k)), res%energy(n, k), 'J', stat, errmsg, &
-        description='final value of /timeseries/energy/'//trim(energy_names(k)))
+      call schema_write(f, '/summary/energy_audit/'//trim(energy_names(k)), res%energy(n, k), 'J', stat, errmsg)
       if (stat /= 0) return
     end do
   end subroutine write_summary_peaks
@@ -236,33 +207,23 @@ contains
     type(sim_result_t), intent(in) :: res          !! results [-]
     integer, intent(out) :: stat                   !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg      !! message [-]
-    call h5_write(f, '/summary/max_constraint_violation', res%max_violation, 'm', stat, errmsg, &
-      description='largest constraint violation after correction'); if (stat /= 0) return
-    call h5_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg, &
-      description='largest constraint violation before correction (one step of drift)'); if (stat /= 0) return
-    call h5_write(f, '/summary/final_time', res%t_final, 's', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg, &
-      description='accepted time steps'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/name', trim(res%integrator), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_evaluations', res%n_evaluations, '-', stat, errmsg, &
-      description='force evaluations, rejected steps included'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_rejected', res%n_rejected, '-', stat, errmsg, &
-      description='rejected steps (local error above tolerance, an event to locate, a failed correction)')
+    call schema_write(f, '/summary/max_constraint_violation', res%max_violation, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/max_constraint_drift', res%max_drift, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/final_time', res%t_final, 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/n_steps', res%n_steps, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/name', trim(res%integrator), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/n_evaluations', res%n_evaluations, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/n_rejected', res%n_rejected, '-', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_events', res%n_events, '-', stat, errmsg, &
-      description='accepted steps ending at a located event'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_forced', res%n_forced, '-', stat, errmsg, &
-      description='steps of event_resolution accepted with the local error above the tolerance (discontinuities)')
+    call schema_write(f, '/summary/integrator/n_events', res%n_events, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/n_forced', res%n_forced, '-', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_releases', res%n_releases, '-', stat, errmsg, &
-      description='strut releases (locked to crushing or free), all struts'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/n_releases_after_lock', res%n_releases_after_lock, '-', stat, errmsg, &
-      description='strut releases in the accepted step after one in which a strut locked'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/dt_smallest', res%dt_smallest, 's', stat, errmsg, &
-      description='smallest accepted step'); if (stat /= 0) return
-    call h5_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg, &
-      description='largest accepted step'); if (stat /= 0) return
-    call h5_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/n_releases', res%n_releases, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/n_releases_after_lock', res%n_releases_after_lock, '-', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/dt_smallest', res%dt_smallest, 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/integrator/dt_largest', res%dt_largest, 's', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/wall_time', res%wall_time, 's', stat, errmsg); if (stat /= 0) return
   end subroutine write_summary_integration
 
   !> The outcome under /summary/outcome (docs/output.md, "Outcome"; landyn_outcome).
@@ -272,31 +233,21 @@ contains
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message
     real(wp), allocatable :: ratio(:)
-    call h5_write(f, '/summary/outcome/code', res%outcome, '-', stat, errmsg, &
-      description='0 not classified, 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over')
+    call schema_write(f, '/summary/outcome/code', res%outcome, '-', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/name', outcome_name(res%outcome), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/touched_down', res%touched, '-', stat, errmsg, &
-      description='a footpad touched the ground'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/body_speed', res%end_motion%body_speed, 'm/s', stat, errmsg, &
-      description='mass-centre speed at the final time'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/angular_rate', res%end_motion%angular_rate*rad2deg, 'deg/s', stat, errmsg, &
-      description='|omega| at the final time'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/slide_rate', res%end_motion%slide_rate, 'm/s', stat, errmsg, &
-      description='largest footpad speed along the terrain at the final time'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/footpad_speed', res%end_motion%footpad_speed, 'm/s', stat, errmsg, &
-      description='largest footpad speed (slide and sink) at the final time'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/stroke_rate', res%end_motion%stroke_rate, 'm/s', stat, errmsg, &
-      description='largest strut stroke rate at the final time'); if (stat /= 0) return
-    call h5_write(f, '/summary/outcome/tipover_margin', res%tipover_margin, 'deg', stat, errmsg, &
-      description='further tilt about the nearest edge of the footpad support polygon that puts the gravity line '// &
-                  'through the mass centre on it, final state; <= 0 not statically stable'); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/name', outcome_name(res%outcome), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/touched_down', res%touched, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/body_speed', res%end_motion%body_speed, 'm/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/angular_rate', res%end_motion%angular_rate*rad2deg, 'deg/s', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/slide_rate', res%end_motion%slide_rate, 'm/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/footpad_speed', res%end_motion%footpad_speed, 'm/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/stroke_rate', res%end_motion%stroke_rate, 'm/s', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/outcome/tipover_margin', res%tipover_margin, 'deg', stat, errmsg); if (stat /= 0) return
     allocate (ratio(res%n_gears))
     ratio = 0.0_wp
     if (allocated(res%friction_ratio)) ratio = res%friction_ratio
-    call h5_write(f, '/summary/outcome/friction_ratio', ratio, '-', stat, errmsg, &
-      description='per footpad |F_t|/(mu_s F_n), final state, mu_s = &friction mu_static: < 1 held by static '// &
-                  'friction, >= 1 slides, 0 off the ground')
+    call schema_write(f, '/summary/outcome/friction_ratio', ratio, '-', stat, errmsg)
   end subroutine write_outcome_group
 
   !> Interface loads (docs/output.md, "Interface loads"): per joint histories in lander axes and in
@@ -308,9 +259,7 @@ contains
     character(len=*), intent(inout) :: errmsg      !! message
     real(wp), allocatable :: v(:, :, :), vg(:, :, :), sim2(:, :, :)
     integer :: n, ng, j, i, k, c0
-    character(len=*), parameter :: on_body = ' puts on the body (hard point of the gear), '
     character(len=20) :: name
-    character(len=200) :: what
     character(len=20), parameter :: block_names(7) = [character(len=20) :: 'joint_force_a', 'joint_force_b', &
       'joint_force_c', 'footpad_joint_force', 'joint_moment_a', 'joint_moment_b', 'joint_moment_c']
     n = res%n_out
@@ -326,42 +275,23 @@ contains
         end do
       end do
       name = block_names(j)
-      if (j == 4) then
-        what = 'force the footpad puts on the primary strut at its ball joint d, shape (n, n_gears, 3)'
-      else if (j < 4) then
-        what = 'force joint '//name(13:13)//on_body//'shape (n, n_gears, 3)'
-      else
-        what = 'moment joint '//name(14:14)//on_body//'about the strut''s universal-joint axis'
-      end if
-      call h5_write(f, '/timeseries/gears/'//trim(name), v, merge('N m', 'N  ', j > 4), stat, errmsg, &
-                    description=trim(what)//'; lander axes')
+      call schema_write(f, '/timeseries/gears/'//trim(name), v, merge('N m', 'N  ', j > 4), stat, errmsg)
       if (stat /= 0) return
-      call h5_write(f, '/timeseries/gears/gear_axes/'//trim(name), vg, merge('N m', 'N  ', j > 4), stat, errmsg, &
-                    description=trim(what)//'; axes of the gear frame')
+      call schema_write(f, '/timeseries/gears/gear_axes/'//trim(name), vg, merge('N m', 'N  ', j > 4), stat, errmsg)
       if (stat /= 0) return
     end do
-    call h5_write(f, '/timeseries/gears/interface_force', res%interface_force(:, :, 1:n), 'N', stat, errmsg, &
-      description='the gear''s total force on the body from its momentum balance (ground force minus the rate '// &
-                  'of the legs'' momentum, plus their weight and inertia in the moving frame); equals '// &
-                  'joint_force_a + b + c; lander axes')
+    call schema_write(f, '/timeseries/gears/interface_force', res%interface_force(:, :, 1:n), 'N', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/peak_joint_load/value', res%load_peaks%value, 'N', stat, errmsg, &
-      description='shape (n_gears, 4 joints a b c d, 4 quantities x y z magnitude), lander axes: the largest '// &
-                  '|value| over every accepted step (components signed)')
+    call schema_write(f, '/summary/peak_joint_load/value', res%load_peaks%value, 'N', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/peak_joint_load/time', res%load_peaks%time, 's', stat, errmsg, &
-      description='instant of each peak, shape as value'); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_joint_load/time', res%load_peaks%time, 's', stat, errmsg); if (stat /= 0) return
     allocate (sim2(n_load, n_quantity*n_joint, ng))
     sim2 = reshape(res%load_peaks%simultaneous, [n_load, n_quantity*n_joint, ng])
-    call h5_write(f, '/summary/peak_joint_load/simultaneous', sim2, 'N, N m', stat, errmsg, &
-      description='the gear''s loads at the instant of each peak, shape (n_gears, 16 = joint*4 + quantity, '// &
-                  '21 = load_names), lander axes')
+    call schema_write(f, '/summary/peak_joint_load/simultaneous', sim2, 'N, N m', stat, errmsg)
     if (stat /= 0) return
-    call h5_write(f, '/summary/peak_joint_load/load_names', load_names, '-', stat, errmsg, &
-      description='F: forces of joints a, b, c on the body and of the footpad on the primary at d [N]; '// &
-                  'M: moments of joints a, b, c on the body [N m]'); if (stat /= 0) return
-    call h5_write(f, '/summary/peak_joint_load/joint_names', joint_names, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/summary/peak_joint_load/quantity_names', quantity_names, '-', stat, errmsg)
+    call schema_write(f, '/summary/peak_joint_load/load_names', load_names, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_joint_load/joint_names', joint_names, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/peak_joint_load/quantity_names', quantity_names, '-', stat, errmsg)
   end subroutine write_interface_loads
 
   !> The run-health checks under /summary/health (docs/health.md).
@@ -371,19 +301,14 @@ contains
     integer, intent(out) :: stat                   !! 0 on success
     character(len=*), intent(inout) :: errmsg      !! message
     character(len=:), allocatable :: m
-    call h5_write(f, '/summary/health/status', h%status(), '-', stat, errmsg, &
-      description='worst run-health check: 0 all passed, 1 warnings (doubtful), 2 failed (run meaningless); '// &
-                  'docs/health.md'); if (stat /= 0) return
-    call h5_write(f, '/summary/health/checks', check_names(1:n_checks), '-', stat, errmsg, &
-      description='names of the run-health checks'); if (stat /= 0) return
-    call h5_write(f, '/summary/health/results', h%result, '-', stat, errmsg, &
-      description='per check: 0 passed, 1 warning, 2 failed'); if (stat /= 0) return
+    call schema_write(f, '/summary/health/status', h%status(), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/health/checks', check_names(1:n_checks), '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/summary/health/results', h%result, '-', stat, errmsg); if (stat /= 0) return
     m = 'none'
     if (allocated(h%messages)) then
       if (len(h%messages) > 0) m = h%messages
     end if
-    call h5_write(f, '/summary/health/messages', m, '-', stat, errmsg, &
-      description='one line per check that did not pass; none when all passed')
+    call schema_write(f, '/summary/health/messages', m, '-', stat, errmsg)
   end subroutine write_health_group
 
 end module landyn_output

@@ -78,7 +78,9 @@ def t_default_run(exe, src, d):
         n = f["timeseries/time"].shape[0]
         check(f["timeseries/gears/stroke"].shape == (n, 4, 3), "stroke time series has shape (n, n_gears, 3)")
         check(f["timeseries/body/overload"].attrs["units"] == b"g", "overload in g")
-        check(f.attrs["schema_version"] == b"1.3", "schema_version attribute (1.3: /summary/outcome)")
+        check(f.attrs["schema_version"] == b"1.4", "schema_version attribute (1.4: /model)")
+        check("/model/stroke_capacity" in f and f["/model/stroke_capacity"].shape[1:] == (3, 2),
+              "/model/stroke_capacity has shape (n_gears, 3, 2)")
 
 
 def t_quiet(exe, src, d):

@@ -1,0 +1,114 @@
+!> The /model group of a result file (docs/output.md, "/model"): what a reader needs to draw and
+!! judge the run without the deck, from the same code the simulation used: the gear and strut
+!! counts and names, each gear's frame, every strut's joints and nominal frame (build_gear_geometry,
+!! as the model is assembled), the buffers' stroke capacities (buffer_capacity, kept in the result
+!! at allocation), the primary honeycomb's stage ends, the mass centre and the terrain planes.
+module landyn_output_model
+  use landyn_kinds, only: wp, rad2deg, msg_len
+  use landyn_status, only: STAT_OK
+  use landyn_config, only: landyn_input_t
+  use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t
+  use landyn_simulation, only: sim_result_t
+  use landyn_h5, only: h5_file_t
+  use landyn_schema_write, only: schema_write
+  implicit none
+  private
+
+  public :: write_model_group
+
+  integer, parameter :: tripod_struts = 3     !! struts of the gear the input describes [-]
+
+contains
+
+  !> Writes /model for the run `res` of the resolved input `inp`.
+  subroutine write_model_group(f, inp, res, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
+    type(sim_result_t), intent(in) :: res          !! results (gear and strut counts, capacities) [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    integer :: ng, ns, i, k, j
+    real(wp), allocatable :: cap(:, :, :)
+    character(len=len(res%strut_names)), allocatable :: names(:)
+
+    ng = res%n_gears
+    ns = size(res%strut_names, 1)
+    allocate (names(ns), cap(2, ns, ng))
+    names = ''
+    do k = 1, ns                                   ! the name of strut row k: from a gear that has it
+      do i = ng, 1, -1
+        if (res%n_struts(i) >= k) names(k) = res%strut_names(k, i)
+      end do
+    end do
+    cap = 0.0_wp
+    if (allocated(res%stroke_capacity)) cap = res%stroke_capacity
+    call schema_write(f, '/model/n_gears', ng, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/n_struts', res%n_struts, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/strut_names', names, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/mass_centre', inp%lander%mass_centre, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/gear_axes', res%gear_rot, '-', stat, errmsg); if (stat /= 0) return
+    call write_joints(f, inp, ng, ns, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/stroke_capacity', cap, 'm', stat, errmsg); if (stat /= 0) return
+    j = max(0, min(inp%primary%n_stages, size(inp%primary%stage_end)))
+    call schema_write(f, '/model/primary_stage_end', inp%primary%stage_end(1:j), 'm', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/model/terrain/height', inp%terrain%height(1:ng), 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/terrain/slope', inp%terrain%slope(1:ng)*rad2deg, 'deg', stat, errmsg)
+    if (stat /= 0) return
+    call schema_write(f, '/model/terrain/slope_direction', inp%terrain%slope_direction(1:ng)*rad2deg, 'deg', &
+                      stat, errmsg)
+  end subroutine write_model_group
+
+  !> /model/upper_joint, lower_joint and strut_frame: the tripods' hard points and the struts'
+  !! nominal frames (build_gear_geometry in the gear frame, as setup_model builds the gears).
+  subroutine write_joints(f, inp, ng, ns, stat, errmsg)
+    type(h5_file_t), intent(inout) :: f            !! open file [-]
+    type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
+    integer, intent(in) :: ng                      !! gears [-]
+    integer, intent(in) :: ns                      !! strut rows [-]
+    integer, intent(out) :: stat                   !! 0 on success [-]
+    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    real(wp), allocatable :: upper(:, :, :), lower(:, :, :), frame(:, :, :, :)
+    real(wp) :: rot(3, 3), pts(3, 6), r0(3, 3, 3)
+    type(gear_geometry_t) :: geom
+    character(len=msg_len) :: m2
+    character(len=1), parameter :: axis_names(3) = ['x', 'y', 'z']
+    integer :: i, k, n3
+
+    allocate (upper(3, ns, ng), lower(3, ns, ng), frame(3, ns, ng, 3))
+    upper = 0.0_wp
+    lower = 0.0_wp
+    frame = 0.0_wp
+    n3 = min(ns, tripod_struts)
+    do i = 1, ng
+      pts(:, 1) = inp%gears%point_a(:, i)
+      pts(:, 2) = inp%gears%point_b(:, i)
+      pts(:, 3) = inp%gears%point_c(:, i)
+      pts(:, 4) = inp%gears%point_d(:, i)
+      pts(:, 5) = inp%gears%point_e(:, i)
+      pts(:, 6) = inp%gears%point_f(:, i)
+      upper(:, 1:n3, i) = pts(:, 1:n3)
+      lower(:, 1:n3, i) = pts(:, 4:3 + n3)
+      rot = rot_z(inp%gears%rotation(i))
+      pts = matmul(transpose(rot), pts)            ! lander frame -> gear frame
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
+      if (stat /= STAT_OK) then
+        write (errmsg, '(a,i0,a,a)') '/model: gear ', i, ': ', trim(m2)
+        return
+      end if
+      r0(:, :, 1) = matmul(rot, geom%R0p)          ! gear frame -> lander axes
+      r0(:, :, 2) = matmul(rot, geom%R0b)
+      r0(:, :, 3) = matmul(rot, geom%R0c)
+      do k = 1, n3
+        frame(:, k, i, :) = r0(:, :, k)
+      end do
+    end do
+    call schema_write(f, '/model/upper_joint', upper, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/lower_joint', lower, 'm', stat, errmsg); if (stat /= 0) return
+    do k = 1, 3
+      call schema_write(f, '/model/strut_frame/'//axis_names(k), frame(:, :, :, k), '-', stat, errmsg)
+      if (stat /= 0) return
+    end do
+  end subroutine write_joints
+
+end module landyn_output_model
