@@ -55,7 +55,6 @@ contains
     block; use landyn_integrator_adaptive, only: build; if (b%offered('adaptive')) call build(b); end block
     block; use landyn_integrator_fixed, only: build; if (b%offered('fixed')) call build(b); end block
     block; use landyn_integrator_imex, only: build; if (b%offered('imex')) call build(b); end block
-    block; use landyn_integrator_euler, only: build; if (b%offered('euler')) call build(b); end block
   end subroutine walk
 
 end module landyn_integrators

@@ -72,7 +72,6 @@ contains
   subroutine walk(b)
     type(buffer_build_t), intent(inout) :: b       !! the build (or the listing)
     block; use landyn_buffer_honeycomb, only: build; if (b%offered('honeycomb')) call build(b); end block
-    block; use landyn_buffer_constant_force, only: build; if (b%offered('constant_force')) call build(b); end block
   end subroutine walk
 
   !> Set up a build (or a check) of the primary's or the secondaries' law.

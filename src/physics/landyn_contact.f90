@@ -79,7 +79,6 @@ contains
     block; use landyn_contact_kelvin_voigt_bilinear, only: build; if (b%offered('kelvin_voigt_bilinear')) call build(b); end block
     block; use landyn_contact_hunt_crossley, only: build; if (b%offered('hunt_crossley')) call build(b); end block
     block; use landyn_contact_regolith, only: build; if (b%offered('regolith')) call build(b); end block
-    block; use landyn_contact_linear_spring, only: build; if (b%offered('linear_spring')) call build(b); end block
   end subroutine walk
 
 end module landyn_contact

@@ -67,7 +67,6 @@ contains
   subroutine walk(b)
     type(gear_build_t), intent(inout) :: b         !! the build (or the listing)
     block; use landyn_gear_type_tripod, only: build; if (b%offered('tripod')) call build(b); end block
-    block; use landyn_gear_type_rigid_secondaries, only: build; if (b%offered('rigid_secondaries')) call build(b); end block
   end subroutine walk
 
 end module landyn_gear_types
