@@ -8,7 +8,8 @@
 !! Per step (all forces from the state at t_n, then semi-implicit Euler):
 !!   2. footpad positions and velocities (body kinematics + gear coordinates), penetration and
 !!      ground force in each footpad's local surface frame (contact and friction laws);
-!!   3.-4. per gear: crush logic and the gear DAE (landyn_gear), force transmitted to the body;
+!!   3.-4. per gear: crush logic and the gear DAE (the gear type's evaluate; the tripod's: landyn_tripod_gear),
+!!      force transmitted to the body;
 !!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
 !!   4. gear step with the direct constraint-violation correction.
 module landyn_sim_core
@@ -39,7 +40,7 @@ module landyn_sim_core
 contains
 
   !> Builds the model, allocates the result and sets the integrator's state at t = 0. The gears are
-  !! the input's tripods unless `gears` gives others (setup_model).
+  !! the gears of the input's &gears gear_type unless `gears` gives others (setup_model).
   subroutine sim_init(inp, sim, res, stat, errmsg, gears)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_t), intent(out) :: sim             !! simulation at t = 0
