@@ -171,7 +171,8 @@ def t_divergence(exe, src, d):
     check("simulation failed" in err and ("dt" in err or "time step" in err),
           "the diagnosis points at the time step: %s" % err.strip()[-300:])
     check(files_in(d) == ["coarse.nml"], "no result file for a failed run (%s)" % files_in(d))
-    write(d, "coarse_adaptive.nml", "&simulation integrator = 'adaptive', dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
+    write(d, "coarse_adaptive.nml",
+          "&simulation integrator = 'adaptive', dt = 2.0e-3, t_end = 0.5 /\n&output interval = 2.0e-3 /\n")
     rc, out, err = run(exe, ["coarse_adaptive.nml", "-q", "-o", "adaptive.h5"], d)
     check(rc == 0 and "adaptive.h5" in files_in(d), "the adaptive integrator recovers from dt = 2e-3 s (got %d: %s)"
           % (rc, err.strip()[-300:]))
