@@ -66,7 +66,8 @@ class Runner:
         self.launcher = [x for x in a.mpiexec.split(",") if x]
 
     def batch(self, ranks, deck, out, extra=()):
-        cmd = self.launcher + [self.a.np_flag, str(ranks), self.a.batch, deck, "-q", "--verbose", "--force", "-o", out] + list(extra)
+        cmd = (self.launcher + [self.a.np_flag, str(ranks), self.a.batch, deck, "-q", "--verbose", "--force", "-o", out]
+               + list(extra))
         t0 = time.perf_counter()
         p = subprocess.run(cmd, cwd=self.dir, env=self.env, capture_output=True, text=True)
         wall = time.perf_counter() - t0

@@ -87,7 +87,9 @@ def _main(argv=None) -> int:
                "               _parameters, _probability, _scalars; study <stem>_table.csv (Tables 6/9/10\n"
                "               layout), _runs.csv (one row per variant and load case), _study, _summary, _scalars\n"
                "  --mat        MATLAB file (default <stem>.mat)\n\n"
-               "examples:\n  landyn-export lc3.h5 -o lc3.csv\n  landyn-export lc3.h5 --units engineering -o lc3_mm_kN.csv\n  landyn-export lc3.h5 --mat --xdmf --tables\n"
+               "examples:\n  landyn-export lc3.h5 -o lc3.csv\n"
+               "  landyn-export lc3.h5 --units engineering -o lc3_mm_kN.csv\n"
+               "  landyn-export lc3.h5 --mat --xdmf --tables\n"
                "  landyn-export dispersion.h5 --mat\n  landyn-export study_friction.h5 -o friction_csv")
     p.add_argument("file", metavar="FILE", help="LANDYN result, study or campaign file (.h5)")
     p.add_argument("-o", "--output", metavar="OUT", help="output CSV file (a directory with --per-gear and for "

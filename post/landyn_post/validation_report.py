@@ -103,7 +103,8 @@ def _summary_page(pdf, plt, res: Result, ref_path: str, rows, stats, checks, al,
         lines += ["Treatment of both signals:",
                   *textwrap.wrap(f"alignment: {al.detail}", 112, initial_indent="  ", subsequent_indent="    "),
                   f"  shift added to the reference's time: {al.shift:+.6f} s",
-                  f"  filter: {'CFC %d (SAE J211-1, phaseless 4-pole Butterworth), both signals' % opts.cfc if opts.cfc else 'none'}",
+                  "  filter: " + ("CFC %d (SAE J211-1, phaseless 4-pole Butterworth), both signals" % opts.cfc
+                                   if opts.cfc else "none"),
                   "  resampling: linear interpolation onto one uniform time base over the common range",
                   "  metrics: Sprague & Geers (2004) M, P, C; ISO/TS 18571:2014 at 10 kHz (corridor, phase, "
                   "magnitude, slope)"]
