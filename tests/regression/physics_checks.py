@@ -189,10 +189,13 @@ def t_energy_audit(exe, src, d):
     # The scheme is the leapfrog: read with velocities at t_n - dt/2 and left-point works the
     # audit was off by ~0.27 % at 4e-5 s; read consistently it closes at every step size.
     decks = {
-        "lc3": re.sub(r"\bdt\s*=\s*[0-9.eE+-]+", "integrator = 'fixed', dt = 4.0e-5", open(os.path.join(src, "input", "lc3.nml")).read()),
-        "deck_a": ("&simulation integrator = 'fixed', dt = 4.0e-5, t_end = 1.0 /\n&terrain slope = 4*0.44, slope_direction = 4*0.0 /\n"
+        "lc3": re.sub(r"\bdt\s*=\s*[0-9.eE+-]+", "integrator = 'fixed', dt = 4.0e-5",
+                      open(os.path.join(src, "input", "lc3.nml")).read()),
+        "deck_a": ("&simulation integrator = 'fixed', dt = 4.0e-5, t_end = 1.0 /\n"
+                   "&terrain slope = 4*0.44, slope_direction = 4*0.0 /\n"
                    "&initial_state clearance = 0.0, velocity = 0.6, 0.0, 2.36, attitude = 2.83, -2.65, -4.72 /\n"),
-        "deck_b": "&simulation integrator = 'fixed', dt = 4.0e-5, t_end = 1.0 /\n&initial_state velocity = 0, 0, 2.4, attitude = 0, -3, -5 /\n",
+        "deck_b": ("&simulation integrator = 'fixed', dt = 4.0e-5, t_end = 1.0 /\n"
+                   "&initial_state velocity = 0, 0, 2.4, attitude = 0, -3, -5 /\n"),
     }
     for name, text in decks.items():
         f = run(exe, d, name, text)

@@ -40,24 +40,34 @@ def cases():
         ("unsupported_assert_all", body("c", t("      @assertAll([.true.])\n")), 7, "unsupported directive '@assertAll'"),
         ("unsupported_assert_not_equal", body("c", t("      @assertNotEqual(1, 2)\n")), 7, "unsupported directive"),
         ("unsupported_assert_associated", body("c", t("      @assertAssociated(p)\n")), 7, "unsupported directive"),
-        ("unsupported_mpitest", body("c", "   @mpitest(npes=[1])\n   subroutine test_m()\n   end subroutine test_m\n"), 5, "unsupported directive '@mpitest'"),
+        ("unsupported_mpitest",
+         body("c", "   @mpitest(npes=[1])\n   subroutine test_m()\n   end subroutine test_m\n"), 5,
+         "unsupported directive '@mpitest'"),
         ("unsupported_testcase", body("c", "   @testCase\n"), 5, "unsupported directive '@testCase'"),
         ("unsupported_disable", body("c", "   @disable\n"), 5, "unsupported directive '@disable'"),
-        ("test_with_options", body("c", "   @test(ifdef=FOO)\n   subroutine test_o()\n   end subroutine test_o\n"), 5, "takes no options"),
+        ("test_with_options",
+         body("c", "   @test(ifdef=FOO)\n   subroutine test_o()\n   end subroutine test_o\n"), 5, "takes no options"),
         ("trailing_comment", body("c", t("      @assertTrue(.true.) ! why not\n")), 7, "trailing comment"),
         ("continuation", body("c", t("      @assertEqual(1, &\n         1)\n")), 7, "continuation"),
         ("positional_tolerance", body("c", t("      @assertEqual(1.0, 1.0, 0.1)\n")), 7, "tolerance=..."),
         ("unknown_keyword", body("c", t("      @assertEqual(1, 1, whitespace=IGNORE_ALL)\n")), 7, "'whitespace=' is not supported"),
         ("relative_needs_tolerance", body("c", t("      @assertRelativelyEqual(1.0, 1.0)\n")), 7, "requires tolerance="),
-        ("tolerance_on_ordering", body("c", t("      @assertLessThan(1.0, 2.0, tolerance=0.1)\n")), 7, "'tolerance=' is not supported"),
+        ("tolerance_on_ordering",
+         body("c", t("      @assertLessThan(1.0, 2.0, tolerance=0.1)\n")), 7, "'tolerance=' is not supported"),
         ("too_few_args", body("c", t("      @assertEqual(1)\n")), 7, "takes 2 positional arguments, got 1"),
         ("unbalanced", body("c", t("      @assertTrue((1 > 0)\n")), 7, "unbalanced"),
-        ("test_not_followed_by_subroutine", body("c", "   @test\n   function f()\n"), 6, "must be followed by a plain 'subroutine NAME'"),
+        ("test_not_followed_by_subroutine",
+         body("c", "   @test\n   function f()\n"), 6, "must be followed by a plain 'subroutine NAME'"),
         ("test_with_argument", body("c", "   @test\n   subroutine test_a(this)\n"), 6, "must not take arguments"),
-        ("two_befores", body("c", "   @before\n   subroutine s1()\n   end subroutine s1\n   @before\n   subroutine s2()\n   end subroutine s2\n"), 8, "second @before"),
-        ("directive_after_directive", body("c", "   @test\n   @test\n   subroutine test_d()\n   end subroutine test_d\n"), 6, "must be followed by its 'subroutine'"),
+        ("two_befores",
+         body("c", "   @before\n   subroutine s1()\n   end subroutine s1\n"
+                   "   @before\n   subroutine s2()\n   end subroutine s2\n"), 8, "second @before"),
+        ("directive_after_directive",
+         body("c", "   @test\n   @test\n   subroutine test_d()\n   end subroutine test_d\n"), 6,
+         "must be followed by its 'subroutine'"),
         ("module_name_mismatch", body("other", ""), 1, "does not match file name"),
-        ("module_trailing_comment", "module c ! comment\n   use funit\ncontains\n" + GOOD_TEST + "end module c\n", 1, "alone on its line"),
+        ("module_trailing_comment",
+         "module c ! comment\n   use funit\ncontains\n" + GOOD_TEST + "end module c\n", 1, "alone on its line"),
         ("no_use_funit", "module c\n   implicit none\ncontains\n" + GOOD_TEST + "end module c\n", 1, "must 'use funit'"),
         ("no_tests", body("c", "", with_test=False), 5, "no @test procedure found"),
         ("directive_before_module", "@test\n" + body("c", ""), 1, "before the module statement"),
@@ -71,7 +81,8 @@ def cases():
         # valid forms
         ("valid_all_forms", body("c",
             "   @before\n   subroutine setup()\n   end subroutine setup\n"
-            "   @after\n\n   ! comment between marker and procedure\n   subroutine teardown() ! trailing comment allowed here\n   end subroutine teardown\n"
+            "   @after\n\n   ! comment between marker and procedure\n"
+            "   subroutine teardown() ! trailing comment allowed here\n   end subroutine teardown\n"
             + t("      @assertEqual(1, 1)\n      @assertEqual(1.0d0, 1.0d0, tolerance=0.1d0, message='a, b')\n"
                 "      @AssertRelativelyEqual(2.0d0, 2.0d0, tolerance=1d-3)\n      @assertTrue(any([.true., .false.]))\n"
                 "      @assertFalse(.false., message=\"it's (fine)\")\n      @assertLessThan(f(1, 2), 3)\n"
