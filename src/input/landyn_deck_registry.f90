@@ -7,7 +7,8 @@
 !!
 !! Library code: nothing here stops or prints.
 module landyn_deck_registry
-  use landyn_input_registry, only: input_var_t, closest_name, input_vars, group_names
+  use landyn_input_registry, only: input_var_t, input_vars, group_names, table_group_index, table_var_index, &
+                                   entry_unit_text, table_group_list, table_group_hint, table_var_hint
   use landyn_input_value, only: input_value_t
   implicit none
   private
@@ -77,10 +78,7 @@ contains
     class(deck_registry_t), intent(in) :: this  !! registry [-]
     character(len=*), intent(in) :: name        !! lower-case group name [-]
     integer :: ig                               !! index, 0 if unknown [-]
-    do ig = 1, size(this%groups)
-      if (trim(this%groups(ig)) == name) return
-    end do
-    ig = 0
+    ig = table_group_index(this%groups, name)
   end function group_index
 
   !> Index of a variable of group ig in the table, 0 if the group has no such variable.
@@ -89,10 +87,7 @@ contains
     integer, intent(in) :: ig                   !! group index [-]
     character(len=*), intent(in) :: name        !! lower-case variable name [-]
     integer :: iv                               !! index into vars, 0 if not in group ig [-]
-    do iv = 1, size(this%vars)
-      if (this%vars(iv)%group == ig .and. trim(this%vars(iv)%name) == name) return
-    end do
-    iv = 0
+    iv = table_var_index(this%vars, ig, name)
   end function var_index
 
   !> ' [unit]' of entry iv, or '' for none or '-'.
@@ -100,20 +95,14 @@ contains
     class(deck_registry_t), intent(in) :: this  !! registry [-]
     integer, intent(in) :: iv                   !! index into vars [-]
     character(len=:), allocatable :: s          !! ' [unit]' or '' [-]
-    s = ''
-    if (len_trim(this%vars(iv)%unit) > 0 .and. this%vars(iv)%unit /= '-') s = ' ['//trim(this%vars(iv)%unit)//']'
+    s = entry_unit_text(this%vars(iv))
   end function unit_text
 
   !> "&first, &second, ...".
   pure function group_list(this) result(s)
     class(deck_registry_t), intent(in) :: this  !! registry [-]
     character(len=:), allocatable :: s          !! group names [-]
-    integer :: ig
-    s = ''
-    do ig = 1, size(this%groups)
-      if (ig > 1) s = s//', '
-      s = s//'&'//trim(this%groups(ig))
-    end do
+    s = table_group_list(this%groups)
   end function group_list
 
   !> " (did you mean '&xxx'?)" for a close group name, else ''.
@@ -121,8 +110,7 @@ contains
     class(deck_registry_t), intent(in) :: this  !! registry [-]
     character(len=*), intent(in) :: name        !! unknown group name [-]
     character(len=:), allocatable :: s          !! hint [-]
-    s = closest_name(name, this%groups)
-    if (len(s) > 0) s = " (did you mean '&"//s//"'?)"
+    s = table_group_hint(this%groups, name)
   end function group_hint
 
   !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else ''.
@@ -131,15 +119,7 @@ contains
     integer, intent(in) :: ig                   !! group index [-]
     character(len=*), intent(in) :: name        !! unknown variable name [-]
     character(len=:), allocatable :: s          !! hint [-]
-    integer :: iv
-    do iv = 1, size(this%vars)
-      if (this%vars(iv)%group /= ig .and. trim(this%vars(iv)%name) == name) then
-        s = "; '"//name//"' belongs to &"//trim(this%groups(this%vars(iv)%group))
-        return
-      end if
-    end do
-    s = closest_name(name, pack(this%vars%name, this%vars%group == ig))
-    if (len(s) > 0) s = "; did you mean '"//s//"'?"
+    s = table_var_hint(this%vars, this%groups, ig, name)
   end function var_hint
 
 end module landyn_deck_registry

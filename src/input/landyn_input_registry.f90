@@ -22,6 +22,7 @@ module landyn_input_registry
   public :: input_var_t, input_vars, n_groups, group_names, group_components, group_docs, k_real, k_int, k_logical, k_string
   public :: g_simulation, g_contact
   public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, closest_name
+  public :: table_group_index, table_var_index, entry_unit_text, table_group_list, table_group_hint, table_var_hint
 
   integer, parameter :: g_simulation = 1, g_lander = 2, g_engine = 3, g_gears = 4, g_primary = 5, &
                         g_secondary = 6, g_contact = 7, g_friction = 8, g_terrain = 9, g_initial = 10, &
@@ -456,14 +457,11 @@ module landyn_input_registry
 
 contains
 
-  !> Index of a group name, 0 if unknown.
+  !> Index of a group name, 0 if unknown (run decks; table_group_index for any table).
   pure function group_index(name) result(ig)
     character(len=*), intent(in) :: name  !! lower-case group name [-]
     integer :: ig                         !! index, 0 if unknown [-]
-    do ig = 1, n_groups
-      if (trim(group_names(ig)) == name) return
-    end do
-    ig = 0
+    ig = table_group_index(group_names, name)
   end function group_index
 
   !> Index of a variable of group ig in input_vars, 0 if the group has no such variable.
@@ -471,19 +469,46 @@ contains
     integer, intent(in) :: ig             !! group index [-]
     character(len=*), intent(in) :: name  !! lower-case variable name [-]
     integer :: iv                         !! index into input_vars, 0 if not in group ig [-]
-    do iv = 1, size(input_vars)
-      if (input_vars(iv)%group == ig .and. trim(input_vars(iv)%name) == name) return
-    end do
-    iv = 0
+    iv = table_var_index(input_vars, ig, name)
   end function var_index
 
   !> ' [unit]' of entry iv, or '' for none or '-'.
   pure function unit_text(iv) result(s)
     integer, intent(in) :: iv             !! index into input_vars [-]
     character(len=:), allocatable :: s    !! ' [unit]' or '' [-]
-    s = ''
-    if (len_trim(input_vars(iv)%unit) > 0 .and. input_vars(iv)%unit /= '-') s = ' ['//trim(input_vars(iv)%unit)//']'
+    s = entry_unit_text(input_vars(iv))
   end function unit_text
+
+  !> Index of a group name in a table's groups, 0 if unknown.
+  pure function table_group_index(groups, name) result(ig)
+    character(len=*), intent(in) :: groups(:)  !! the table's group names [-]
+    character(len=*), intent(in) :: name       !! lower-case group name [-]
+    integer :: ig                              !! index, 0 if unknown [-]
+    do ig = 1, size(groups)
+      if (trim(groups(ig)) == name) return
+    end do
+    ig = 0
+  end function table_group_index
+
+  !> Index of a variable of group ig in a table's entries, 0 if the group has no such variable.
+  pure function table_var_index(vars, ig, name) result(iv)
+    type(input_var_t), intent(in) :: vars(:)  !! the table's entries [-]
+    integer, intent(in) :: ig                 !! group index [-]
+    character(len=*), intent(in) :: name      !! lower-case variable name [-]
+    integer :: iv                             !! index into vars, 0 if not in group ig [-]
+    do iv = 1, size(vars)
+      if (vars(iv)%group == ig .and. trim(vars(iv)%name) == name) return
+    end do
+    iv = 0
+  end function table_var_index
+
+  !> ' [unit]' of an entry, or '' for none or '-'.
+  pure function entry_unit_text(v) result(s)
+    type(input_var_t), intent(in) :: v    !! the entry [-]
+    character(len=:), allocatable :: s    !! ' [unit]' or '' [-]
+    s = ''
+    if (len_trim(v%unit) > 0 .and. v%unit /= '-') s = ' ['//trim(v%unit)//']'
+  end function entry_unit_text
 
   !> The valid range of entry iv as messages and docs write it, e.g. 'dt > 0 s', '0 <= restitution <= 1'
   !! ('' when the entry has no range). With show_unit false the unit is left out.
@@ -509,13 +534,20 @@ contains
   !> "&simulation, &lander, ...".
   pure function group_list() result(s)
     character(len=:), allocatable :: s  !! group names [-]
+    s = table_group_list(group_names)
+  end function group_list
+
+  !> "&first, &second, ..." of a table's groups.
+  pure function table_group_list(groups) result(s)
+    character(len=*), intent(in) :: groups(:)  !! the table's group names [-]
+    character(len=:), allocatable :: s         !! group names [-]
     integer :: ig
     s = ''
-    do ig = 1, n_groups
+    do ig = 1, size(groups)
       if (ig > 1) s = s//', '
-      s = s//'&'//trim(group_names(ig))
+      s = s//'&'//trim(groups(ig))
     end do
-  end function group_list
+  end function table_group_list
 
   !> The closest of `names` to `name` by edit distance when close enough (at most max(2, len/3)
   !! edits), else ''. The one rule of every "did you mean" hint.
@@ -541,8 +573,7 @@ contains
   pure function group_hint(name) result(s)
     character(len=*), intent(in) :: name  !! unknown group name [-]
     character(len=:), allocatable :: s    !! hint [-]
-    s = closest_name(name, group_names)
-    if (len(s) > 0) s = " (did you mean '&"//s//"'?)"
+    s = table_group_hint(group_names, name)
   end function group_hint
 
   !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else ''.
@@ -550,15 +581,35 @@ contains
     integer, intent(in) :: ig             !! group index [-]
     character(len=*), intent(in) :: name  !! unknown variable name [-]
     character(len=:), allocatable :: s    !! hint [-]
+    s = table_var_hint(input_vars, group_names, ig, name)
+  end function var_hint
+
+  !> " (did you mean '&xxx'?)" for a name close to one of a table's groups, else ''.
+  pure function table_group_hint(groups, name) result(s)
+    character(len=*), intent(in) :: groups(:)  !! the table's group names [-]
+    character(len=*), intent(in) :: name       !! unknown group name [-]
+    character(len=:), allocatable :: s         !! hint [-]
+    s = closest_name(name, groups)
+    if (len(s) > 0) s = " (did you mean '&"//s//"'?)"
+  end function table_group_hint
+
+  !> "; did you mean 'xxx'?" for a close name in group ig of a table, or the group of the table the
+  !! variable belongs to, else ''.
+  pure function table_var_hint(vars, groups, ig, name) result(s)
+    type(input_var_t), intent(in) :: vars(:)   !! the table's entries [-]
+    character(len=*), intent(in) :: groups(:)  !! the table's group names [-]
+    integer, intent(in) :: ig                  !! group index [-]
+    character(len=*), intent(in) :: name       !! unknown variable name [-]
+    character(len=:), allocatable :: s         !! hint [-]
     integer :: iv
-    do iv = 1, size(input_vars)
-      if (input_vars(iv)%group /= ig .and. trim(input_vars(iv)%name) == name) then
-        s = "; '"//name//"' belongs to &"//trim(group_names(input_vars(iv)%group))
+    do iv = 1, size(vars)
+      if (vars(iv)%group /= ig .and. trim(vars(iv)%name) == name) then
+        s = "; '"//name//"' belongs to &"//trim(groups(vars(iv)%group))
         return
       end if
     end do
-    s = closest_name(name, pack(input_vars%name, input_vars%group == ig))
+    s = closest_name(name, pack(vars%name, vars%group == ig))
     if (len(s) > 0) s = "; did you mean '"//s//"'?"
-  end function var_hint
+  end function table_var_hint
 
 end module landyn_input_registry
