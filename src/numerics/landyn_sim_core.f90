@@ -20,8 +20,8 @@ module landyn_sim_core
                          body_point_acceleration, body_kinetic_energy
   use landyn_gear_base, only: gear_slot_t
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
-  use landyn_terrain, only: penetration, penetration_rate, slip_velocity, to_global
-  use landyn_contact, only: advance_contact_state
+  use landyn_terrain, only: slip_velocity
+  use landyn_footpad_ground, only: footpad_ground_force
   use landyn_status, only: STAT_OK, STAT_NON_FINITE
   use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
                               sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
@@ -186,9 +186,9 @@ contains
     ev%tilt = acos(max(-1.0_wp, min(1.0_wp, sim%model%body%r(3, 3))))
   end subroutine sim_evaluate
 
-  !> Step 2 of an evaluation: per footpad its position and velocity, penetration, the trial footpad
-  !! state (committed with the step, sim_commit_discrete) and the ground force (contact and
-  !! friction laws) in the global frame.
+  !> Step 2 of an evaluation: per footpad its position and velocity, then its penetration, trial
+  !! footpad state (committed with the step, sim_commit_discrete) and ground force in the global
+  !! frame (landyn_footpad_ground, physics).
   subroutine ground_forces(sim, t, body, ev, v_lead)
     type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
     real(wp), intent(in) :: t                   !! time of the state [s]
@@ -198,7 +198,7 @@ contains
                                                 !! accelerations (as sim_evaluate's); default 0 [s]
     integer :: i, nq
     real(wp) :: qd_led(max_gear_q), qdd_c(max_gear_q)
-    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3), delta_dot(max_gears), ft(2), vslip(2), dslip(2), hslip
+    real(wp) :: r(3, 3), rg(3, 3), pos_g(3), vel_g(3), d_l(3)
 
     associate (model => sim%model)
       r = model%body%r
@@ -215,34 +215,11 @@ contains
         d_l = mv3(rg, pos_g)
         ev%xd(:, i) = body_point_position(body, d_l)
         ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(rg, vel_g))
-        ev%delta(i) = penetration(model%plane(i), ev%xd(:, i))
-        delta_dot(i) = penetration_rate(model%plane(i), ev%vd(:, i))
         ! trial footpad state of this step: committed with the step (sim_commit_discrete)
         ev%trial(i) = model%footpad(i)
-        if (model%contact%has_history) call advance_contact_state(ev%trial(i)%contact, ev%delta(i), delta_dot(i))
-        if (ev%delta(i) > 0.0_wp) then
-          ev%fn(i) = model%contact%normal_force(ev%delta(i), delta_dot(i), ev%trial(i)%contact)
-        else
-          ev%fn(i) = 0.0_wp
-        end if
-        vslip = slip_velocity(model%plane(i), ev%vd(:, i))
-        if (model%friction%has_stiction) then
-          ! stick state: advanced with the footpad's tangential displacement since the evaluation
-          ! whose footpad states were committed (not since the last booked one: after a rejected
-          ! step the state at t is evaluated again, and its committed stick state is still t - h's)
-          dslip = 0.0_wp
-          hslip = 0.0_wp
-          if (sim%loop%n > 0) then
-            dslip = slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_stick(:, i))
-            hslip = t - sim%loop%t_stick
-          end if
-          call model%friction%stick_slip_force(ev%trial(i)%friction, vslip, dslip, hslip, ev%fn(i), ft, &
-                                              ev%stick_margin(i))
-        else
-          ev%stick_margin(i) = 0.0_wp
-          ft = model%friction%friction_force(vslip, ev%fn(i))
-        end if
-        ev%fground(:, i) = to_global(model%plane(i), [ft(1), ft(2), ev%fn(i)])
+        call footpad_ground_force(model%plane(i), model%contact, model%friction, ev%xd(:, i), ev%vd(:, i), &
+                                  sim%loop%n > 0, sim%loop%xd_stick(:, i), t - sim%loop%t_stick, ev%trial(i), &
+                                  ev%delta(i), ev%fn(i), ev%stick_margin(i), ev%fground(:, i))
       end do
     end associate
   end subroutine ground_forces
