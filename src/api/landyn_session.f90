@@ -11,7 +11,7 @@ module landyn_session
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len
-  use landyn_status, only: STAT_OK, STAT_INPUT
+  use landyn_status, only: STAT_INPUT, status_t
   use landyn_errors, only: input_errors_t
   use landyn_real_text, only: fmt_real
   use landyn_strings, only: edit_distance
@@ -86,6 +86,7 @@ contains
     type(input_errors_t) :: errors
     integer :: st, i
     character(len=msg_len) :: m2
+    type(status_t) :: ss
     msg = ''
     if (len_trim(deck_text) == 0) then
       s%inp = default_input()
@@ -109,12 +110,15 @@ contains
       stat = api_err_input
       return
     end if
-    m2 = ''
-    call sim_init(s%inp, s%sim, s%res, st, m2)
-    if (st == 0) call make_integrator(s%inp, s%integ, st, m2)
-    if (st == 0) call s%integ%start(s%sim, s%inp, s%res, st, m2)
-    if (st /= 0) then
-      msg = trim(m2)
+    call sim_init(s%inp, s%sim, s%res, ss)
+    if (ss%ok()) then
+      m2 = ''
+      call make_integrator(s%inp, s%integ, st, m2)
+      if (st /= 0) call ss%fail(st, trim(m2))
+    end if
+    if (ss%ok()) call s%integ%start(s%sim, s%inp, s%res, ss)
+    if (.not. ss%ok()) then
+      msg = ss%text()
       stat = api_err_failed
       return
     end if
@@ -143,8 +147,8 @@ contains
     real(wp), intent(in) :: moment(3)               !! pure moment, lander axes [N m]
     integer, intent(out) :: stat                    !! api_ok, api_err_input, api_err_order, api_err_failed [-]
     character(len=:), allocatable, intent(out) :: msg  !! diagnosis [-]
-    integer :: n_eval, st, i
-    character(len=msg_len) :: m2
+    integer :: n_eval, i
+    type(status_t) :: ss
     msg = ''
     if (s%state /= state_running) then
       stat = api_err_order
@@ -171,11 +175,10 @@ contains
     s%sim%ext_moment = moment
     s%sim%ext_on = .true.
     s%sim%ext_changed = .true.
-    m2 = ''
-    call s%integ%retarget(s%sim, s%inp, n_eval, st, m2)
+    call s%integ%retarget(s%sim, n_eval, ss)
     s%res%n_evaluations = s%res%n_evaluations + n_eval
-    if (st /= 0) then
-      call fail(s, m2, stat, msg)
+    if (.not. ss%ok()) then
+      call fail(s, ss%text(), stat, msg)
       return
     end if
     call update_values(s, stat, msg)
@@ -217,7 +220,7 @@ contains
     integer :: n_eval, st
     logical :: done
     integer(int64) :: c0, c1, crate
-    character(len=msg_len) :: m2
+    type(status_t) :: ss
     msg = ''
     stat = api_ok
     t_end = s%inp%simulation%t_end
@@ -250,28 +253,27 @@ contains
     if (target >= t_end - s%slack) target = t_end
     call system_clock(c0, crate)
     s%sim%t_stop = target
-    m2 = ''
-    call s%integ%retarget(s%sim, s%inp, n_eval, st, m2)
+    call s%integ%retarget(s%sim, n_eval, ss)
     s%res%n_evaluations = s%res%n_evaluations + n_eval
-    if (st == STAT_INPUT) then
+    if (ss%code == STAT_INPUT) then
       stat = api_err_input
-      msg = 'landyn_advance_to: '//trim(m2)
+      msg = 'landyn_advance_to: '//ss%text()
       return
-    else if (st /= STAT_OK) then
-      call fail(s, m2, stat, msg)
+    else if (.not. ss%ok()) then
+      call fail(s, ss%text(), stat, msg)
       return
     end if
     done = .false.
     do
-      if (target < t_end .and. s%sim%loop%t >= target - s%slack) exit
-      call s%integ%step(s%sim, s%inp, s%res, done, st, m2, -1)
-      if (st /= 0 .or. done) exit
+      if (target < t_end .and. s%sim%state%t >= target - s%slack) exit
+      call s%integ%step(s%sim, s%res, done, ss, -1)
+      if (.not. ss%ok() .or. done) exit
     end do
     call system_clock(c1)
     s%wall = s%wall + real(c1 - c0, wp)/real(crate, wp)
-    if (st /= 0) then
+    if (.not. ss%ok()) then
       s%t = s%res%t_final
-      call fail(s, m2, stat, msg)
+      call fail(s, ss%text(), stat, msg)
       return
     end if
     if (done) then
@@ -309,7 +311,7 @@ contains
   subroutine end_run(s)
     type(session_t), intent(inout) :: s             !! session whose integrator said done
     s%state = state_ended
-    s%res%touched = s%sim%loop%touched
+    s%res%touched = s%sim%state%touched
     s%res%end_motion = measure_motion(s%sim%model)
     s%res%wall_time = s%wall
     call check_health(s%inp, s%res, s%health)
@@ -322,22 +324,20 @@ contains
     type(session_t), intent(inout) :: s             !! session
     integer, intent(out) :: stat                    !! api_ok or api_err_failed [-]
     character(len=:), allocatable, intent(inout) :: msg  !! diagnosis appended on failure [-]
-    integer :: st
-    character(len=msg_len) :: m2
+    type(status_t) :: ss
     stat = api_ok
     select case (s%state)
     case (state_running)
       s%now%n_out = 0
-      m2 = ''
-      call s%integ%sample(s%sim, s%inp, s%now, st, m2)
-      if (st /= 0 .or. s%now%n_out < 1) then
+      call s%integ%sample(s%sim, s%now, ss)
+      if (.not. ss%ok() .or. s%now%n_out < 1) then
         s%values = 0.0_wp
         s%values(1) = s%t
         stat = api_err_failed
-        msg = msg//'the output sample of t = '//fmt_real(s%t)//' s failed: '//trim(m2)
+        msg = msg//'the output sample of t = '//fmt_real(s%t)//' s failed: '//ss%text()
         return
       end if
-      call api_output_values(s%now, 1, api_outcome_running, s%sim%loop%touched, s%values)
+      call api_output_values(s%now, 1, api_outcome_running, s%sim%state%touched, s%values)
     case default
       if (s%res%n_out < 1) then
         s%values = 0.0_wp
@@ -345,7 +345,7 @@ contains
         s%values(2) = real(api_outcome_failed, wp)
         return
       end if
-      call api_output_values(s%res, s%res%n_out, outcome_code(s), s%sim%loop%touched, s%values)
+      call api_output_values(s%res, s%res%n_out, outcome_code(s), s%sim%state%touched, s%values)
     end select
   end subroutine update_values
 
@@ -404,8 +404,7 @@ contains
     type(sim_result_t), intent(out) :: out          !! the result [-]
     type(health_t), intent(out) :: health          !! its run-health checks [-]
     logical, intent(out) :: has_health              !! health holds checks of the result [-]
-    integer :: st
-    character(len=msg_len) :: m2
+    type(status_t) :: ss
     out = s%res
     has_health = s%state /= state_failed
     if (s%state /= state_running) then
@@ -413,13 +412,13 @@ contains
       return
     end if
     if (out%n_out > 0) then
-      if (out%t(out%n_out) < s%t - s%slack) call s%integ%sample(s%sim, s%inp, out, st, m2)
+      if (out%t(out%n_out) < s%t - s%slack) call s%integ%sample(s%sim, out, ss)
     else
-      call s%integ%sample(s%sim, s%inp, out, st, m2)
+      call s%integ%sample(s%sim, out, ss)
     end if
     call finish(s%sim%model, out, s%t)
     out%end_reason = 'stopped by the caller at t = '//fmt_real(s%t)//' s'
-    out%touched = s%sim%loop%touched
+    out%touched = s%sim%state%touched
     out%end_motion = measure_motion(s%sim%model)
     out%wall_time = s%wall
     call check_health(s%inp, out, health)

@@ -28,11 +28,11 @@
 !!   error a (h_last - h)/2 at every change of step, first order and outside the error estimate.
 module landyn_integrator_adaptive
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_snapshot_t, sim_save, sim_restore, &
                              sim_evaluate, sim_book, sim_accept, finish, body_is_finite, record_sample
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_NO_STEP
+  use landyn_status, only: STAT_FAILED, STAT_NO_STEP, status_t, time_text
   use landyn_integrator, only: integrator_t, integrator_build_t
   use landyn_scheme_leapfrog, only: leapfrog_advance
   use landyn_event_locator, only: event_fraction
@@ -92,13 +92,12 @@ contains
   end subroutine build
 
   !> Reads the settings, evaluates and records t = 0; the first step tried is &simulation dt.
-  subroutine adaptive_start(self, sim, inp, res, stat, errmsg)
+  subroutine adaptive_start(self, sim, inp, res, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation at t = 0
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
+    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input (the integrator's settings)
     type(sim_result_t), intent(inout) :: res             !! result
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the evaluation's failure [-]
     self%tol = inp%simulation%tolerance
     self%h_max = min(inp%simulation%dt_max, inp%output%interval)
     self%h_min = min(inp%simulation%dt_min, self%h_max)
@@ -113,31 +112,30 @@ contains
     self%ip = 1
     call sim_save(sim, self%snap(1))
     self%h_last = 0.0_wp
-    call sim_evaluate(sim, inp, 0.0_wp, self%kick(self%h), self%evs(self%i_cur), stat, errmsg)
+    call sim_evaluate(sim, 0.0_wp, self%kick(self%h), self%evs(self%i_cur), st)
     res%n_evaluations = res%n_evaluations + 1
-    if (stat /= 0) then
+    if (.not. st%ok()) then
       call finish(sim%model, res, 0.0_wp)
       return
     end if
-    call sim_book(sim, inp, res, self%evs(self%i_cur), 0.0_wp, self%slack)
-    self%snap(1)%loop = sim%loop    ! a rejected first step returns to t = 0 as booked
+    call sim_book(sim, res, self%evs(self%i_cur), 0.0_wp, self%slack)
+    self%snap(1)%state = sim%state   ! a rejected first step returns to t = 0 as booked
+    self%snap(1)%rec = sim%rec
   end subroutine adaptive_start
 
   !> One accepted step: tries the step h, estimates its error from the accelerations at both ends,
   !! looks for events, and retries shorter until the step is accepted; then books the new state,
   !! runs the checks and chooses the next step.
-  subroutine adaptive_step(self, sim, inp, res, done, stat, errmsg, progress_unit)
+  subroutine adaptive_step(self, sim, res, done, st, progress_unit)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation, advanced by one step
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     type(sim_result_t), intent(inout) :: res             !! time series and summary
     logical, intent(out) :: done                         !! the run has ended
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the failure with its context [-]
     integer, intent(in) :: progress_unit                 !! unit for progress lines, < 0 for none
     real(wp) :: h, h_g, t_new, err
     logical :: ok, event, rejected
-    character(len=msg_len) :: m2
+    type(status_t) :: s_try
 
     done = .false.
     rejected = .false.
@@ -152,40 +150,36 @@ contains
       end if
       err = 0.0_wp
       event = .false.
-      call self%advance(sim, inp, h, stat, m2)
-      ok = stat == 0
+      call self%advance(sim, h, s_try)
+      ok = s_try%ok()
       if (ok) ok = body_is_finite(sim%model%body)
       if (ok) then
         h_g = clip(self, sim, t_new, h)
         call sim_save(sim, self%snap(3 - self%ip))
-        call evaluate_end(self, sim, inp, t_new, h, h_g, stat, m2)
+        call evaluate_end(self, sim, t_new, h, h_g, s_try)
         res%n_evaluations = res%n_evaluations + 1
-        ok = stat == 0
+        ok = s_try%ok()
       end if
       if (ok) then
         err = self%local_error(sim, h)
         event = discrete_change(self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
-                                inp%simulation%tipover_angle)
+                                sim%par%tipover_angle)
       end if
       if ((.not. ok .and. h > self%h_min) .or. &
           (ok .and. h > self%h_event*(1.0_wp + 1.0e-9_wp) .and. (err > 1.0_wp .or. event))) then
-        call retry(self, sim, inp, res, h, ok, err, event, stat, m2)
+        call retry(self, sim, res, h, ok, err, event, st)
         rejected = .true.
-        if (stat /= 0) then
-          errmsg = m2
-          exit
-        end if
+        if (.not. st%ok()) exit
         cycle
       end if
       if (.not. ok) then
-        stat = STAT_NO_STEP
-        write (errmsg, '(a,a,es10.3,a,es12.5,a,a)') trim(res%integrator), ' integrator: no step down to dt_min = ', &
-          self%h_min, &
-          ' s succeeds at t = ', self%t, ' s: ', trim(m2)
+        call st%fail(STAT_NO_STEP, s_try%text())
+        call st%add_context(trim(res%integrator)//' integrator: no step down to dt_min = '//time_text(self%h_min, 3) &
+                            //' s succeeds', self%t)
       end if
       exit
     end do
-    if (stat /= 0) then   ! failed: the re-evaluation of t, or no step down to dt_min
+    if (.not. st%ok()) then   ! failed: the re-evaluation of t, or no step down to dt_min
       call finish(sim%model, res, self%t)
       done = .true.
       return
@@ -198,42 +192,40 @@ contains
     res%dt_largest = max(res%dt_largest, h)
     self%t = t_new
     self%h_last = h
-    call sim_book(sim, inp, res, self%evs(self%i_new), h, self%slack)
-    call sim_accept(sim, inp, res, t_new, h, done, stat, errmsg, progress_unit, &
-                    t_new >= sim%loop%next_progress*self%t_end/20.0_wp, self%evs(self%i_new))
+    call sim_book(sim, res, self%evs(self%i_new), h, self%slack)
+    call sim_accept(sim, res, t_new, h, done, st, progress_unit, &
+                    t_new >= sim%rec%next_progress*self%t_end/20.0_wp, self%evs(self%i_new))
     if (done) return
     if (t_new >= self%t_end) then
-      res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time
+      res%at_rest = sim%state%rest_clock >= sim%par%rest_time
       call finish(sim%model, res, self%t_end)
       done = .true.
       return
     end if
-    call next_step(self, sim, inp, t_new, h, h_g, err, event, rejected)
+    call next_step(self, sim, t_new, h, h_g, err, event, rejected)
   end subroutine adaptive_step
 
   !> The evaluation at the end t_new of the step h just taken, made for the step h_g to follow. With
   !! the adaptive integrator's own frame field (frame_field_passes = 0) the legs' field is predicted
   !! from the last two accepted evaluations when no event lies between them (a second pass of the
   !! gears follows only where a lock changed); otherwise it is sim_evaluate's default.
-  subroutine evaluate_end(self, sim, inp, t_new, h, h_g, stat, errmsg)
+  subroutine evaluate_end(self, sim, t_new, h, h_g, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator (its work record is filled)
     type(sim_t), intent(in) :: sim                       !! simulation at t_new
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     real(wp), intent(in) :: t_new                        !! time of the state [s]
     real(wp), intent(in) :: h                            !! the step just taken [s]
     real(wp), intent(in) :: h_g                          !! the step the evaluation is made for [s]
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the evaluation's failure [-]
     real(wp) :: acc(3), alpha(3)
-    if (inp%simulation%frame_field_passes == 0 .and. self%smooth .and. self%h_last > 0.0_wp) then
+    if (sim%par%frame_field_passes == 0 .and. self%smooth .and. self%h_last > 0.0_wp) then
       associate (e1 => self%evs(self%i_cur), e0 => self%evs(self%i_prev))
         acc = predicted_field(e1%acc, e0%acc, h, self%h_last)
         alpha = predicted_field(e1%alpha, e0%alpha, h, self%h_last)
       end associate
-      call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, errmsg, acc_field=acc, &
+      call sim_evaluate(sim, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), st, acc_field=acc, &
                         alpha_field=alpha, v_lead=0.5_wp*h)
     else
-      call sim_evaluate(sim, inp, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), stat, errmsg, v_lead=0.5_wp*h)
+      call sim_evaluate(sim, t_new, 0.5_wp*(h + h_g), self%evs(self%i_new), st, v_lead=0.5_wp*h)
     end if
   end subroutine evaluate_end
 
@@ -253,24 +245,22 @@ contains
   !> A rejected step h: back to the state at t, the step to retry (a quarter after a failure, aimed
   !! at the event's zero after an event, from the error estimate otherwise), and the state at t
   !! evaluated again for it (in the field of the body accelerations of its first evaluation).
-  subroutine retry(self, sim, inp, res, h, ok, err, event, stat, errmsg)
+  subroutine retry(self, sim, res, h, ok, err, event, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation, back at t
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     type(sim_result_t), intent(inout) :: res             !! counters
     real(wp), intent(in) :: h                            !! the rejected step [s]
     logical, intent(in) :: ok                            !! the step itself succeeded [-]
     real(wp), intent(in) :: err                          !! its error / tolerance [-]
     logical, intent(in) :: event                         !! it contained an event [-]
-    integer, intent(out) :: stat                         !! 0 on success (of the re-evaluation)
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the re-evaluation's failure [-]
     real(wp) :: hn, acc_t(3), alpha_t(3)
     call sim_restore(sim, self%snap(self%ip))
     if (.not. ok) then
       hn = 0.25_wp*h
     else if (event) then
       hn = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
-                      inp%simulation%tipover_angle)
+                      sim%par%tipover_angle)
     else
       hn = h*max(0.1_wp, step_factor(err, self%smooth))
     end if
@@ -284,7 +274,7 @@ contains
     ! intent(out) of sim_evaluate)
     acc_t = self%evs(self%i_cur)%acc
     alpha_t = self%evs(self%i_cur)%alpha
-    call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
+    call sim_evaluate(sim, self%t, self%kick(self%h), self%evs(self%i_cur), st, acc_field=acc_t, &
                       alpha_field=alpha_t, v_lead=0.5_wp*self%h_last)
     res%n_evaluations = res%n_evaluations + 1
   end subroutine retry
@@ -293,10 +283,9 @@ contains
   !! second-difference estimate and ~ h^2 for the first-order one, growth at most 2 and none right
   !! after a rejection; within an event bracket the step aimed past the event's zero, after the
   !! located event the step that found it), then the records rotated.
-  subroutine next_step(self, sim, inp, t_new, h_step, h_g, err, event, rejected)
+  subroutine next_step(self, sim, t_new, h_step, h_g, err, event, rejected)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation at t_new
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     real(wp), intent(in) :: t_new                        !! time reached [s]
     real(wp), intent(in) :: h_step                       !! the accepted step [s]
     real(wp), intent(in) :: h_g                          !! the step the evaluation at t_new was made for [s]
@@ -314,7 +303,7 @@ contains
       self%bracket = .false.
       h = max(h, min(self%h_resume, self%h_max))
     else if (self%bracket) then
-      h = min(h, aim_after(self, t_new, self%evs(self%i_new), sim%model%n_gears, inp%simulation%tipover_angle))
+      h = min(h, aim_after(self, t_new, self%evs(self%i_new), sim%model%n_gears, sim%par%tipover_angle))
     end if
     h = clip(self, sim, t_new, h)
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
@@ -327,7 +316,8 @@ contains
     self%i_new = k
     self%smooth = .not. event
     self%ip = 3 - self%ip
-    self%snap(self%ip)%loop = sim%loop    ! a rejected step returns to this state as booked and checked
+    self%snap(self%ip)%state = sim%state    ! a rejected step returns to this state as booked and checked
+    self%snap(self%ip)%rec = sim%rec
   end subroutine next_step
 
   !> The step to retry after the step h from the current state (evaluated in e0) was rejected for
@@ -402,14 +392,12 @@ contains
   end function aim_after
 
   !> The leapfrog step h from the current state (evaluated in evs(i_cur)), with the variable-step kick.
-  subroutine adaptive_advance(self, sim, inp, h, stat, errmsg)
+  subroutine adaptive_advance(self, sim, h, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation, advanced by h
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     real(wp), intent(in) :: h                            !! step [s]
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
-    call leapfrog_advance(sim, inp, self%evs(self%i_cur), h, stat, errmsg, kick=self%kick(h))
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the step's failure with its context [-]
+    call leapfrog_advance(sim, self%evs(self%i_cur), h, st, kick=self%kick(h))
   end subroutine adaptive_advance
 
   !> The local error of the step h just tried (evaluated in evs(i_new)) over the tolerance:
@@ -421,9 +409,9 @@ contains
     real(wp) :: err                                      !! error / tolerance [-]
     if (self%smooth) then
       err = error_norm2(self%evs(self%i_prev), self%evs(self%i_cur), self%evs(self%i_new), self%h_last, h, &
-                        sim%l_char, self%tol, sim%model%n_gears)
+                        sim%par%l_char, self%tol, sim%model%n_gears)
     else
-      err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%l_char, self%tol, sim%model%n_gears)
+      err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%par%l_char, self%tol, sim%model%n_gears)
     end if
   end function adaptive_local_error
 
@@ -432,17 +420,14 @@ contains
   !! it (as a retry does; at t = 0 as adaptive_start does), its thrust and input moment the start of
   !! the next step's work. A change of the inputs is an event: the next error estimate is the
   !! first-order one.
-  subroutine adaptive_retarget(self, sim, inp, n_eval, stat, errmsg)
+  subroutine adaptive_retarget(self, sim, n_eval, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation at self%t
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     integer, intent(out) :: n_eval                       !! force evaluations made [-]
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
+    type(status_t), intent(out) :: st                    !! STAT_OK, or the evaluation's failure [-]
     real(wp) :: hc, acc_t(3), alpha_t(3)
     logical :: changed
     n_eval = 0
-    stat = STAT_OK
     changed = sim%ext_changed
     sim%ext_changed = .false.
     hc = clip(self, sim, self%t, self%h)
@@ -452,34 +437,31 @@ contains
     if (self%h_last > 0.0_wp) then
       acc_t = self%evs(self%i_cur)%acc
       alpha_t = self%evs(self%i_cur)%alpha
-      call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg, acc_field=acc_t, &
+      call sim_evaluate(sim, self%t, self%kick(self%h), self%evs(self%i_cur), st, acc_field=acc_t, &
                         alpha_field=alpha_t, v_lead=0.5_wp*self%h_last)
     else
-      call sim_evaluate(sim, inp, self%t, self%kick(self%h), self%evs(self%i_cur), stat, errmsg)
+      call sim_evaluate(sim, self%t, self%kick(self%h), self%evs(self%i_cur), st)
     end if
     n_eval = 1
-    if (stat /= 0) return
-    sim%loop%thrust_prev = self%evs(self%i_cur)%thrust_g
-    sim%loop%moment_prev = self%evs(self%i_cur)%ext_moment
-    self%snap(self%ip)%loop = sim%loop
+    if (.not. st%ok()) return
+    sim%rec%thrust_prev = self%evs(self%i_cur)%thrust_g
+    sim%rec%moment_prev = self%evs(self%i_cur)%ext_moment
+    self%snap(self%ip)%state = sim%state
+    self%snap(self%ip)%rec = sim%rec
   end subroutine adaptive_retarget
 
   !> The sample of the current state from the evaluation the next step is taken with (the one
   !! sim_book recorded when the state was reached, or its re-evaluation by adaptive_retarget).
-  subroutine adaptive_sample(self, sim, inp, res, stat, errmsg)
+  subroutine adaptive_sample(self, sim, res, st)
     class(adaptive_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                    !! simulation at self%t (velocities restored on return)
-    type(landyn_input_t), intent(in) :: inp              !! resolved, validated input
     type(sim_result_t), intent(inout) :: res             !! result the sample is appended to
-    integer, intent(out) :: stat                         !! 0 on success
-    character(len=*), intent(inout) :: errmsg            !! diagnosis on failure
-    stat = STAT_OK
+    type(status_t), intent(out) :: st                    !! STAT_OK, or STAT_FAILED with a message [-]
     if (abs(self%evs(self%i_cur)%t - self%t) > 0.0_wp) then
-      stat = STAT_FAILED
-      errmsg = trim(res%integrator)//' integrator: the current state has no evaluation'
+      call st%fail(STAT_FAILED, trim(res%integrator)//' integrator: the current state has no evaluation')
       return
     end if
-    call record_sample(sim, inp, res, self%evs(self%i_cur), self%h_last)
+    call record_sample(sim, res, self%evs(self%i_cur), self%h_last)
   end subroutine adaptive_sample
 
   !> The usual step-size factor 0.9 err^(-1/p): p = 3 for the second-difference estimate (error
@@ -514,7 +496,7 @@ contains
     real(wp) :: hc                                    !! step to take [s]
     real(wp) :: t_stop, gap
     integer :: n
-    t_stop = min(sim%loop%t_next_out, self%t_end, sim%t_stop)
+    t_stop = min(sim%rec%t_next_out, self%t_end, sim%t_stop)
     gap = t_stop - t
     hc = h
     if (gap <= self%slack) return

@@ -3,7 +3,7 @@
 !! the paper and with heritage fixed-step codes.
 module landyn_integrator_fixed
   use landyn_kinds, only: wp
-  use landyn_status, only: STAT_INPUT, STAT_OK
+  use landyn_status, only: STAT_INPUT, status_t
   use landyn_config, only: landyn_input_t
   use landyn_sim_core, only: sim_t, sim_result_t, sim_eval_t, sim_step, sim_evaluate, record_sample
   use landyn_real_text, only: fmt_real
@@ -33,18 +33,15 @@ contains
   end subroutine build
 
   !> Nothing to prepare: the first sim_step evaluates and records t = 0.
-  subroutine fixed_start(self, sim, inp, res, stat, errmsg)
+  subroutine fixed_start(self, sim, inp, res, st)
     class(fixed_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                 !! simulation at t = 0
     type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
     type(sim_result_t), intent(inout) :: res          !! result
-    integer, intent(out) :: stat                      !! 0 on success
-    character(len=*), intent(inout) :: errmsg         !! message on failure
-    stat = STAT_OK
+    type(status_t), intent(out) :: st                 !! STAT_OK, STAT_INPUT with a message [-]
     self%dt = inp%simulation%dt
-    if (.not. (self%dt > 0.0_wp .and. abs(sim%dt - self%dt) <= 0.0_wp)) then
-      stat = STAT_INPUT
-      errmsg = 'fixed integrator: the simulation was not set up with &simulation dt'
+    if (.not. (self%dt > 0.0_wp .and. abs(sim%par%dt - self%dt) <= 0.0_wp)) then
+      call st%fail(STAT_INPUT, 'fixed integrator: the simulation was not set up with &simulation dt')
       return
     end if
     res%integrator = 'fixed'
@@ -53,54 +50,45 @@ contains
   end subroutine fixed_start
 
   !> One step of the paper's scheme.
-  subroutine fixed_step(self, sim, inp, res, done, stat, errmsg, progress_unit)
+  subroutine fixed_step(self, sim, res, done, st, progress_unit)
     class(fixed_integrator_t), intent(inout) :: self  !! integrator
-    type(sim_t), intent(inout) :: sim                 !! simulation, advanced by one step
-    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
+    type(sim_t), intent(inout) :: sim                 !! simulation, advanced by one step (of its dt, self%dt)
     type(sim_result_t), intent(inout) :: res          !! time series and summary
     logical, intent(out) :: done                      !! the run has ended
-    integer, intent(out) :: stat                      !! 0 on success
-    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
+    type(status_t), intent(out) :: st                 !! STAT_OK, or the failure with its message [-]
     integer, intent(in) :: progress_unit              !! unit for progress lines, < 0 for none
-    sim%dt = self%dt
-    call sim_step(sim, inp, res, done, stat, errmsg, progress_unit, self%ev)
+    call sim_step(sim, res, done, st, progress_unit, self%ev)
     res%n_evaluations = res%n_evaluations + 1
   end subroutine fixed_step
 
   !> A stop time (sim%t_stop before t_end) must be a whole number of steps dt: the state after n
   !! steps is then the run's at n dt. Engine inputs need nothing: the state is evaluated at the
   !! start of the next step.
-  subroutine fixed_retarget(self, sim, inp, n_eval, stat, errmsg)
+  subroutine fixed_retarget(self, sim, n_eval, st)
     class(fixed_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                 !! simulation
-    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
     integer, intent(out) :: n_eval                    !! force evaluations made (none) [-]
-    integer, intent(out) :: stat                      !! 0, or STAT_INPUT for a stop time between steps
-    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
+    type(status_t), intent(out) :: st                 !! STAT_OK, or STAT_INPUT for a stop time between steps [-]
     real(wp) :: steps
     n_eval = 0
-    stat = STAT_OK
     sim%ext_changed = .false.
-    if (sim%t_stop >= inp%simulation%t_end) return
+    if (sim%t_stop >= sim%par%t_end) return
     steps = sim%t_stop/self%dt
     if (abs(steps - anint(steps)) > 1.0e-9_wp*max(1.0_wp, steps)) then
-      stat = STAT_INPUT
-      errmsg = 'fixed integrator: t = '//fmt_real(sim%t_stop)//' s is not a whole number of steps &simulation dt = ' &
-               //fmt_real(self%dt)//' s'
+      call st%fail(STAT_INPUT, 'fixed integrator: t = '//fmt_real(sim%t_stop)// &
+                   ' s is not a whole number of steps &simulation dt = '//fmt_real(self%dt)//' s')
     end if
   end subroutine fixed_retarget
 
   !> The sample of the state after the last step, with the evaluation its next step makes.
-  subroutine fixed_sample(self, sim, inp, res, stat, errmsg)
+  subroutine fixed_sample(self, sim, res, st)
     class(fixed_integrator_t), intent(inout) :: self  !! integrator (its work record is used)
     type(sim_t), intent(inout) :: sim                 !! simulation (velocities restored on return)
-    type(landyn_input_t), intent(in) :: inp           !! resolved, validated input
     type(sim_result_t), intent(inout) :: res          !! result the sample is appended to
-    integer, intent(out) :: stat                      !! 0 on success
-    character(len=*), intent(inout) :: errmsg         !! diagnosis on failure
-    call sim_evaluate(sim, inp, sim%loop%n*self%dt, self%dt, self%ev, stat, errmsg)
-    if (stat /= 0) return
-    call record_sample(sim, inp, res, self%ev, self%dt)
+    type(status_t), intent(out) :: st                 !! STAT_OK, or the evaluation's failure [-]
+    call sim_evaluate(sim, sim%state%n*self%dt, self%dt, self%ev, st)
+    if (.not. st%ok()) return
+    call record_sample(sim, res, self%ev, self%dt)
   end subroutine fixed_sample
 
 end module landyn_integrator_fixed

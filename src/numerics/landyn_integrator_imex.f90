@@ -13,6 +13,7 @@ module landyn_integrator_imex
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, max_gears, max_gear_q
   use landyn_config, only: landyn_input_t
+  use landyn_status, only: status_t
   use landyn_sim_core, only: sim_t, sim_result_t
   use landyn_integrator_adaptive, only: adaptive_integrator_t, weighted_max
   use landyn_integrator, only: integrator_build_t
@@ -40,28 +41,25 @@ contains
   end subroutine build
 
   !> The adaptive integrator's start; the result names this integrator.
-  subroutine imex_start(self, sim, inp, res, stat, errmsg)
+  subroutine imex_start(self, sim, inp, res, st)
     class(imex_integrator_t), intent(inout) :: self  !! integrator
     type(sim_t), intent(inout) :: sim                !! simulation at t = 0
-    type(landyn_input_t), intent(in) :: inp          !! resolved, validated input
+    type(landyn_input_t), intent(in) :: inp          !! resolved, validated input (the integrator's settings)
     type(sim_result_t), intent(inout) :: res         !! result
-    integer, intent(out) :: stat                     !! 0 on success
-    character(len=*), intent(inout) :: errmsg        !! diagnosis on failure
-    call self%adaptive_integrator_t%start(sim, inp, res, stat, errmsg)
+    type(status_t), intent(out) :: st                !! STAT_OK, or the evaluation's failure [-]
+    call self%adaptive_integrator_t%start(sim, inp, res, st)
     res%integrator = 'imex'
   end subroutine imex_start
 
   !> The step h from the current state: the footpads' unit responses at its evaluation, then the
   !! leapfrog with the normal contact forces linearly implicit.
-  subroutine imex_step_advance(self, sim, inp, h, stat, errmsg)
+  subroutine imex_step_advance(self, sim, h, st)
     class(imex_integrator_t), intent(inout) :: self  !! integrator (responses kept for the error estimate)
     type(sim_t), intent(inout) :: sim                !! simulation, advanced by h
-    type(landyn_input_t), intent(in) :: inp          !! resolved, validated input
     real(wp), intent(in) :: h                        !! step [s]
-    integer, intent(out) :: stat                     !! 0 on success
-    character(len=*), intent(inout) :: errmsg        !! diagnosis on failure
-    call imex_responses(sim, self%evs(self%i_cur), self%rsp, stat, errmsg)
-    if (stat == 0) call imex_advance(sim, inp, self%evs(self%i_cur), self%rsp, h, self%kick(h), stat, errmsg)
+    type(status_t), intent(out) :: st                !! STAT_OK, or the step's failure with its context [-]
+    call imex_responses(sim, self%evs(self%i_cur), self%rsp, st)
+    if (st%ok()) call imex_advance(sim, self%evs(self%i_cur), self%rsp, h, self%kick(h), st)
   end subroutine imex_step_advance
 
   !> The local error of the step h just tried over the tolerance: the adaptive integrator's estimate
@@ -101,7 +99,7 @@ contains
         d_alpha = d_alpha - dfn*r%alpha_u(:, i)
         d_qdd(1:nq, i) = d_qdd(1:nq, i) - dfn*r%qdd_u(1:nq, i)
       end do
-      err = weighted_max(d_acc, d_alpha, d_qdd(:, 1:ng), e0%q_weight, sim%l_char, ng)/self%tol
+      err = weighted_max(d_acc, d_alpha, d_qdd(:, 1:ng), e0%q_weight, sim%par%l_char, ng)/self%tol
       if (self%smooth) then
         err = err*h**3/24.0_wp*2.0_wp/(h + self%h_last)
       else

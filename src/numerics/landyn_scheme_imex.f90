@@ -26,7 +26,7 @@
 !! friction force is left explicit.
 module landyn_scheme_imex
   use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q
-  use landyn_config, only: landyn_input_t
+  use landyn_status, only: STAT_OK, status_t
   use landyn_kinematics, only: cross3, mv3, mtv3
   use landyn_body, only: body_t, body_point_velocity, body_point_acceleration
   use landyn_terrain, only: penetration_rate, surface_normal
@@ -59,18 +59,16 @@ contains
   !> The responses of every footpad in contact to its normal force, at the evaluation ev of the
   !! committed state (call before the evaluation is committed), in the field the evaluation was
   !! made in (ev%acc_field, ev%alpha_field) and for its step (ev%dt).
-  subroutine imex_responses(sim, ev, rsp, stat, errmsg)
+  subroutine imex_responses(sim, ev, rsp, st)
     type(sim_t), intent(in) :: sim              !! simulation (committed state of ev)
     type(sim_eval_t), intent(in) :: ev          !! evaluation of that state
     type(imex_response_t), intent(inout) :: rsp !! the responses (previous contents replaced)
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
     type(body_t) :: body
     real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), dir(3), fb_u(3), mb_u(3), fb_l(3), pos(3), vel(3), a_fp(3)
-    integer :: i, nq
+    integer :: i, nq, stat
     logical :: ok
     character(len=msg_len) :: m2
-    stat = 0
     rsp%n_off = 0
     body = sim%model%body
     body%acc = ev%acc_field
@@ -88,8 +86,9 @@ contains
         dir = mtv3(rg, mtv3(r, rsp%n(:, i)))
         call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, ev%dt, &
                                 mtv3(rg, ev%alpha_field))
-        if (stat /= 0) then
-          write (errmsg, '(a,i0,a,es12.5,a,a)') 'imex: gear ', i, ' at t = ', ev%t, ' s: ', trim(m2)
+        if (stat /= STAT_OK) then
+          call st%fail(stat, trim(m2))
+          call st%add_context('imex: gear', ev%t, i)
           return
         end if
         if (.not. ok) then
@@ -112,15 +111,13 @@ contains
   !> One step of length h from the state evaluated in ev, with the footpads' normal contact forces
   !! linearly implicit (responses rsp from imex_responses of the same state, before this call).
   !! As leapfrog_advance otherwise; stat /= 0 leaves the simulation unusable (restore a snapshot).
-  subroutine imex_advance(sim, inp, ev, rsp, h, kick, stat, errmsg)
+  subroutine imex_advance(sim, ev, rsp, h, kick, st)
     type(sim_t), intent(inout) :: sim           !! simulation, advanced to ev%t + h
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the state at t (sim_evaluate)
     type(imex_response_t), intent(in) :: rsp    !! the footpads' responses at ev (imex_responses)
     real(wp), intent(in) :: h                   !! step [s]
     real(wp), intent(in) :: kick                !! velocity update length (variable-step leapfrog) [s]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or the failure with its context [-]
     real(wp) :: v(max_nv), a(max_nv), df(max_gears)
     logical :: moving(max_gears), changed(max_gears)
     integer :: nv, first(max_gears), i, nq
@@ -144,7 +141,7 @@ contains
       ge%qdd(1:nq) = a(first(i):first(i) + nq - 1)
       call sim%model%gear(i)%g%commit(ge)
     end do
-    call leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
+    call leapfrog_move(sim, ev, moving, v, h, st)
   end subroutine imex_advance
 
   !> The implicit normal-force change of each footpad in contact (one after the other, each with

@@ -9,7 +9,7 @@
 !!   discrete state committed (footpad histories, rigid gears)
 module landyn_scheme_leapfrog
   use landyn_kinds, only: wp, max_gears
-  use landyn_config, only: landyn_input_t
+  use landyn_status, only: status_t
   use landyn_sim_model, only: sim_t, sim_eval_t
   use landyn_sim_state, only: max_nv, sim_commit_evaluation, sim_moving, sim_gather_velocities, &
                               sim_scatter_velocities, sim_gather_accelerations, sim_arrest, sim_increment_positions, &
@@ -24,13 +24,11 @@ contains
   !> One leapfrog step of length h from the state evaluated in `ev`. stat /= 0 (drift, no
   !! convergence, projection failure) leaves the simulation in an unusable state: restore a
   !! snapshot or stop.
-  subroutine leapfrog_advance(sim, inp, ev, h, stat, errmsg, kick)
+  subroutine leapfrog_advance(sim, ev, h, st, kick)
     type(sim_t), intent(inout) :: sim           !! simulation, advanced to ev%t + h
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the state at t (sim_evaluate)
     real(wp), intent(in) :: h                   !! step [s]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or the failure with its context [-]
     real(wp), intent(in), optional :: kick      !! velocity update length (variable-step leapfrog, the
                                                 !! step the evaluation was made for); default h [s]
     real(wp) :: v(max_nv), a(max_nv), hk
@@ -44,29 +42,27 @@ contains
     call sim_gather_velocities(sim, v, nv)
     call sim_gather_accelerations(sim, ev, moving, a)
     v(1:nv) = v(1:nv) + a(1:nv)*hk
-    call leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
+    call leapfrog_move(sim, ev, moving, v, h, st)
   end subroutine leapfrog_advance
 
   !> The rest of a leapfrog step once the end-of-step velocities v are known (every scheme written
   !! on the leapfrog shares it): the crush decisions over the step, positions moved with v for h,
   !! projected onto the constraints (positions, then velocities), the discrete state committed.
-  subroutine leapfrog_move(sim, inp, ev, moving, v, h, stat, errmsg)
+  subroutine leapfrog_move(sim, ev, moving, v, h, st)
     type(sim_t), intent(inout) :: sim           !! simulation with ev committed, advanced to ev%t + h
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_eval_t), intent(in) :: ev          !! evaluation the step is taken with
     logical, intent(in) :: moving(max_gears)    !! gear i moves [-]
     real(wp), intent(in) :: v(max_nv)           !! end-of-step velocities [m/s, rad/s]
     real(wp), intent(in) :: h                   !! step [s]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or the failure with its context [-]
     call sim_arrest(sim, moving, v)
     call sim_scatter_velocities(sim, moving, v)
     call sim_increment_positions(sim, moving, v, h)
-    call sim_project_positions(sim, inp, moving, ev%t + h, stat, errmsg)
-    if (stat /= 0) return
-    call sim_project_velocities(sim, inp, ev%t + h, stat, errmsg)
-    if (stat /= 0) return
-    call sim_commit_discrete(sim, ev, ev%t + h, stat, errmsg)
+    call sim_project_positions(sim, moving, ev%t + h, st)
+    if (.not. st%ok()) return
+    call sim_project_velocities(sim, ev%t + h, st)
+    if (.not. st%ok()) return
+    call sim_commit_discrete(sim, ev, ev%t + h, st)
   end subroutine leapfrog_move
 
 end module landyn_scheme_leapfrog

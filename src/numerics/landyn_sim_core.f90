@@ -2,8 +2,11 @@
 !! step of the paper's scheme (Fig. 6, Steps 1-7), the commit, the booking of work and peaks, the
 !! end checks. The model, its state and snapshots are landyn_sim_model's, the result and its
 !! recording landyn_sim_result's (both re-exported here). The integrators (landyn_integrator_*)
-!! compose these; run_simulation (landyn_simulation) drives one landing. Library code: returns a
-!! status and a message; progress goes to a unit the caller chooses.
+!! compose these; run_simulation (landyn_simulation) drives one landing. Only sim_init reads the
+!! input deck: it builds the run's parameters (sim_params_t) that every later procedure reads.
+!! The footpads' ground forces and the engine's thrust are the physics layer's
+!! (landyn_footpad_ground, landyn_engine). Library code: returns a status_t (code and message
+!! with its context); progress goes to a unit the caller chooses.
 !!
 !! Per step (all forces from the state at t_n, then semi-implicit Euler):
 !!   2. footpad positions and velocities (body kinematics + gear coordinates), penetration and
@@ -22,8 +25,8 @@ module landyn_sim_core
   use landyn_loads, only: n_load, gear_load_vector, load_peaks_update
   use landyn_terrain, only: slip_velocity
   use landyn_footpad_ground, only: footpad_ground_force
-  use landyn_status, only: STAT_OK, STAT_NON_FINITE
-  use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, leg_energy, &
+  use landyn_status, only: STAT_OK, STAT_NON_FINITE, status_t
+  use landyn_sim_model, only: model_t, sim_t, sim_eval_t, sim_snapshot_t, velocities_t, setup_model, sim_params, leg_energy, &
                               sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite, &
                               max_primary_stroke
   use landyn_scheme_leapfrog, only: leapfrog_advance
@@ -41,31 +44,23 @@ contains
 
   !> Builds the model, allocates the result and sets the integrator's state at t = 0. The gears are
   !! the gears of the input's &gears gear_type unless `gears` gives others (setup_model).
-  subroutine sim_init(inp, sim, res, stat, errmsg, gears)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
-    type(sim_t), intent(out) :: sim             !! simulation at t = 0
-    type(sim_result_t), intent(out) :: res      !! result, allocated
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! message on failure
-    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i
-    integer :: i, ng, n_cap
-    stat = STAT_OK
-    ng = inp%gears%n_gears
-    call setup_model(inp, sim%model, stat, errmsg, gears)
-    if (stat /= 0) return
+  subroutine sim_init(inp, sim, res, st, gears)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(sim_t), intent(out) :: sim             !! simulation at t = 0, its parameters set [-]
+    type(sim_result_t), intent(out) :: res      !! result, allocated [-]
+    type(status_t), intent(out) :: st           !! STAT_OK, or the set-up's failure with its message [-]
+    type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i [-]
+    integer :: n_cap
+    call setup_model(inp, sim%model, st, gears)
+    if (.not. st%ok()) return
+    sim%par = sim_params(inp)
     res%initial_position = sim%model%body%x - matmul(sim%model%body%r, sim%model%body%mc)
-    sim%dt = inp%simulation%dt
-    sim%nstep = nint(inp%simulation%t_end/sim%dt)
     n_cap = int(inp%simulation%t_end/inp%output%interval + 1.0e-9_wp) + 2
     call allocate_result(res, sim%model, n_cap)
-    sim%l_char = 0.0_wp
-    do i = 1, ng
-      sim%l_char = max(sim%l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
-    end do
-    sim%ke0 = body_kinetic_energy(sim%model%body)
-    sim%pe0 = -sim%model%body%mass*inp%simulation%gravity*sim%model%body%x(3)
-    sim%loop%xt_prev = body_point_position(sim%model%body, inp%engine%point)
-    sim%loop%n = 0
+    sim%rec%ke0 = body_kinetic_energy(sim%model%body)
+    sim%rec%pe0 = -sim%model%body%mass*sim%par%gravity*sim%model%body%x(3)
+    sim%rec%xt_prev = body_point_position(sim%model%body, sim%par%engine%point)
+    sim%state%n = 0
     res%end_reason = 'end time reached'
   end subroutine sim_init
 
@@ -73,42 +68,40 @@ contains
   !! output sample of t_n, then (unless t_n is the end time) the step to t_n+1 and its commit
   !! (footpad histories, strut modes), followed by the divergence, tip-over and rest checks.
   !! done = .true. when the run has ended (end time, rest, tip-over or failure).
-  subroutine sim_step(sim, inp, res, done, stat, errmsg, progress_unit, ev)
+  subroutine sim_step(sim, res, done, st, progress_unit, ev)
     type(sim_t), intent(inout) :: sim           !! simulation, advanced by one step
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     logical, intent(out) :: done                !! the run has ended
-    integer, intent(out) :: stat                !! 0 on success (also for a tip-over); /= 0 on divergence
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK (also for a tip-over), the failure otherwise [-]
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
     type(sim_eval_t), intent(inout) :: ev       !! work record for the step's evaluation (the caller's, so
                                                 !! that it is not set up afresh at every step)
     real(wp) :: t, dt
 
     done = .false.
-    dt = sim%dt
-    t = sim%loop%n*dt
-    call sim_evaluate(sim, inp, t, dt, ev, stat, errmsg)
-    if (stat /= 0) then
+    dt = sim%par%dt
+    t = sim%state%n*dt
+    call sim_evaluate(sim, t, dt, ev, st)
+    if (.not. st%ok()) then
       call finish(sim%model, res, t)
       done = .true.
       return
     end if
-    call sim_book(sim, inp, res, ev, dt, 0.5_wp*dt)
-    if (sim%loop%n == sim%nstep) then
-      res%at_rest = sim%loop%rest_clock >= inp%simulation%rest_time
-      call finish(sim%model, res, sim%nstep*dt)
+    call sim_book(sim, res, ev, dt, 0.5_wp*dt)
+    if (sim%state%n == sim%par%nstep) then
+      res%at_rest = sim%state%rest_clock >= sim%par%rest_time
+      call finish(sim%model, res, sim%par%nstep*dt)
       done = .true.
       return
     end if
-    call leapfrog_advance(sim, inp, ev, dt, stat, errmsg)
-    if (stat /= 0) then
+    call leapfrog_advance(sim, ev, dt, st)
+    if (.not. st%ok()) then
       call finish(sim%model, res, t + dt)
       done = .true.
       return
     end if
-    call sim_accept(sim, inp, res, t + dt, dt, done, stat, errmsg, progress_unit, &
-                    sim%loop%n >= sim%loop%next_progress*sim%nstep/20)
+    call sim_accept(sim, res, t + dt, dt, done, st, progress_unit, &
+                    sim%state%n >= sim%rec%next_progress*sim%par%nstep/20)
   end subroutine sim_step
 
   !> Forces and accelerations of the state at time t for a step of dt to come (Steps 2, 3-4 and 6
@@ -117,16 +110,14 @@ contains
   !! the loads on the body and its accelerations. The simulation is not changed (intent(in)):
   !! the accelerations, strut forces, lock decisions and footpad states are the evaluation's, and
   !! the step (landyn_scheme_leapfrog) commits the evaluation it is taken with.
-  subroutine sim_evaluate(sim, inp, t, dt, ev, stat, errmsg, acc_field, alpha_field, v_lead)
+  subroutine sim_evaluate(sim, t, dt, ev, st, acc_field, alpha_field, v_lead)
     type(sim_t), intent(in) :: sim              !! simulation (unchanged)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     real(wp), intent(in) :: t                   !! time of the state [s]
     real(wp), intent(in) :: dt                  !! step to come [s]
     ! inout, not out: every component an evaluation defines is set below (for gears 1..n_gears);
     ! intent(out) would reset the whole record, max_gears gears of it, at every evaluation
     type(sim_eval_t), intent(inout) :: ev       !! the evaluation (previous contents replaced)
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or a gear's failure with its context [-]
     real(wp), intent(in), optional :: acc_field(3)    !! body acceleration for the legs' frame field, global;
                                                       !! default: the committed (last step's) one; with
                                                       !! frame_field_passes = 0 a prediction, evaluated again
@@ -142,7 +133,6 @@ contains
     type(body_t) :: body
     real(wp) :: thrust_l(3)
 
-    stat = STAT_OK
     ev%t = t
     ev%dt = dt
     ! the body as this evaluation sees it: its velocities led for the footpads, then its
@@ -156,7 +146,7 @@ contains
     call ground_forces(sim, t, body, ev, v_lead)
     body%v = sim%model%body%v
     body%omega = sim%model%body%omega
-    call engine_thrust(sim, inp, t, ev, thrusting, thrust_l)
+    call engine_thrust(sim, t, ev, thrusting, thrust_l)
 
     ! ---- Steps 3-4: gear dynamics and crush logic. The legs' frame moves with the body, whose
     ! acceleration at t is not known before the gears' loads are: the paper's scheme takes the last
@@ -169,16 +159,16 @@ contains
     ! reaches the other legs in the step it acts (docs/theory.md, "Frame field"). With 0 (the
     ! adaptive integrator's own field) the field passed in is a prediction: a second pass only
     ! where the first changed a lock; without one, two passes.
-    n_pass = inp%simulation%frame_field_passes
+    n_pass = sim%par%frame_field_passes
     on_demand = n_pass == 0 .and. present(acc_field)
     if (n_pass == 0) n_pass = 2
     do pass = 1, n_pass
       if (on_demand .and. pass == 2) then
         if (.not. ev%locks_changed) exit
       end if
-      call frame_field_pass(sim, inp, t, dt, thrusting, thrust_l, sim%loads .and. (pass == n_pass .or. on_demand), &
-                            body, ev, stat, errmsg)
-      if (stat /= 0) return
+      call frame_field_pass(sim, t, dt, thrusting, thrust_l, sim%par%loads .and. (pass == n_pass .or. on_demand), &
+                            body, ev, st)
+      if (.not. st%ok()) return
     end do
     ev%acc = body%acc
     ev%alpha = body%alpha
@@ -218,25 +208,23 @@ contains
         ! trial footpad state of this step: committed with the step (sim_commit_discrete)
         ev%trial(i) = model%footpad(i)
         call footpad_ground_force(model%plane(i), model%contact, model%friction, ev%xd(:, i), ev%vd(:, i), &
-                                  sim%loop%n > 0, sim%loop%xd_stick(:, i), t - sim%loop%t_stick, ev%trial(i), &
+                                  sim%state%n > 0, sim%state%xd_stick(:, i), t - sim%state%t_stick, ev%trial(i), &
                                   ev%delta(i), ev%fn(i), ev%stick_margin(i), ev%fground(:, i))
       end do
     end associate
   end subroutine ground_forces
 
-  !> The engine's thrust at t, lander axes, and the global thrust force with a caller's engine
-  !! inputs (landyn_session) added to the deck's.
-  subroutine engine_thrust(sim, inp, t, ev, thrusting, thrust_l)
+  !> The engine's thrust at t, lander axes (landyn_engine, physics), and the global thrust force
+  !! with a caller's engine inputs (landyn_session) added to the deck's.
+  subroutine engine_thrust(sim, t, ev, thrusting, thrust_l)
     type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     real(wp), intent(in) :: t                   !! time of the state [s]
     type(sim_eval_t), intent(inout) :: ev       !! the evaluation: thrust_g (and ext_moment) set [-]
     logical, intent(out) :: thrusting           !! the deck's engine thrusts at t [-]
     real(wp), intent(out) :: thrust_l(3)        !! the deck's thrust at t, lander axes [N]
 
-    thrusting = inp%engine%thrust > 0.0_wp .and. t < inp%engine%cutoff_time
-    thrust_l = 0.0_wp
-    if (thrusting) thrust_l = inp%engine%thrust*inp%engine%direction
+    thrusting = sim%par%engine%thrusting(t)
+    thrust_l = sim%par%engine%thrust_at(t)
     if (sim%ext_on) then
       ! a caller's engine inputs (landyn_session): added to the deck's thrust
       ev%thrust_g = mv3(sim%model%body%r, thrust_l + sim%ext_force)
@@ -249,9 +237,8 @@ contains
   !> One pass of Steps 3-4 and 6: every gear's crush logic and DAE in the frame field of the body's
   !! present accelerations, the loads on the body (gears, gravity, thrust, a caller's inputs) and
   !! the body's new accelerations.
-  subroutine frame_field_pass(sim, inp, t, dt, thrusting, thrust_l, loads, body, ev, stat, errmsg)
+  subroutine frame_field_pass(sim, t, dt, thrusting, thrust_l, loads, body, ev, st)
     type(sim_t), intent(in) :: sim              !! simulation (unchanged) [-]
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     real(wp), intent(in) :: t                   !! time of the state [s]
     real(wp), intent(in) :: dt                  !! step to come [s]
     logical, intent(in) :: thrusting            !! the deck's engine thrusts at t [-]
@@ -259,14 +246,12 @@ contains
     logical, intent(in) :: loads                !! the gears record their interface loads [-]
     type(body_t), intent(inout) :: body         !! the body: its accelerations, the field in, the new ones out [-]
     type(sim_eval_t), intent(inout) :: ev       !! the evaluation: the gears' part and the field set [-]
-    integer, intent(out) :: stat                !! 0 on success [-]
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure [-]
-    integer :: ng, i, ns, nq
+    type(status_t), intent(inout) :: st         !! STAT_OK on entry; a gear's failure with its context [-]
+    integer :: ng, i, ns, nq, stat
     logical :: locked(max_struts)
     real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), force(3), moment(3), fb_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
 
-    stat = STAT_OK
     ng = sim%model%n_gears
     associate (model => sim%model)
       r = model%body%r
@@ -280,8 +265,9 @@ contains
         field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), loads)
-        if (stat /= 0) then
-          write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+        if (stat /= STAT_OK) then
+          call st%fail(stat, trim(m2))
+          call st%add_context('gear', t, i)
           return
         end if
         ns = model%n_struts(i)
@@ -304,9 +290,9 @@ contains
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust (computed with the footpad forces above)
       if (thrusting) then
-        moment = moment + cross3(inp%engine%point - model%body%mc, thrust_l)
+        moment = moment + cross3(sim%par%engine%point - model%body%mc, thrust_l)
       end if
-      if (sim%ext_on) moment = moment + cross3(inp%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
+      if (sim%ext_on) moment = moment + cross3(sim%par%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
       force = force + ev%thrust_g
       ! ---- Step 6: body accelerations
       call body_accelerations(body, force, moment)
@@ -318,9 +304,8 @@ contains
   !! velocities half a step behind, whose synchronised kinetic energy changes by exactly that to
   !! second order), the slide distance, the peaks of every step, and the output sample when one is
   !! due (within `slack` of its time).
-  subroutine sim_book(sim, inp, res, ev, h_sync, slack)
-    type(sim_t), intent(inout) :: sim           !! simulation (accumulators updated)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
+  subroutine sim_book(sim, res, ev, h_sync, slack)
+    type(sim_t), intent(inout) :: sim           !! simulation (recorder accounts updated)
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the current state
     real(wp), intent(in) :: h_sync              !! the step just taken: the stored velocities lag the positions
@@ -331,33 +316,33 @@ contains
 
     ng = sim%model%n_gears
     associate (model => sim%model)
-      if (any(ev%delta(1:ng) > 0.0_wp)) sim%loop%touched = .true.
-      if (sim%loop%n > 0) then
+      if (any(ev%delta(1:ng) > 0.0_wp)) sim%state%touched = .true.
+      if (sim%state%n > 0) then
         do i = 1, ng
-          fnm = 0.5_wp*(sim%loop%fn_prev(i) + ev%fn(i))
-          sim%loop%w_normal = sim%loop%w_normal + fnm*(ev%delta(i) - sim%loop%delta_prev(i))
-          sim%loop%w_friction = sim%loop%w_friction &
-            - dot_product(0.5_wp*(sim%loop%fground_prev(:, i) + ev%fground(:, i)), ev%xd(:, i) - sim%loop%xd_prev(:, i)) &
-            - fnm*(ev%delta(i) - sim%loop%delta_prev(i))
-          if (sim%loop%fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
-            + norm2(slip_velocity(model%plane(i), ev%xd(:, i) - sim%loop%xd_prev(:, i)))
+          fnm = 0.5_wp*(sim%rec%fn_prev(i) + ev%fn(i))
+          sim%rec%w_normal = sim%rec%w_normal + fnm*(ev%delta(i) - sim%rec%delta_prev(i))
+          sim%rec%w_friction = sim%rec%w_friction &
+            - dot_product(0.5_wp*(sim%rec%fground_prev(:, i) + ev%fground(:, i)), ev%xd(:, i) - sim%rec%xd_prev(:, i)) &
+            - fnm*(ev%delta(i) - sim%rec%delta_prev(i))
+          if (sim%rec%fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
+            + norm2(slip_velocity(model%plane(i), ev%xd(:, i) - sim%rec%xd_prev(:, i)))
         end do
-        xt = body_point_position(model%body, inp%engine%point)
-        sim%loop%w_thrust = sim%loop%w_thrust + dot_product(0.5_wp*(sim%loop%thrust_prev + ev%thrust_g), xt - sim%loop%xt_prev)
-        sim%loop%xt_prev = xt
+        xt = body_point_position(model%body, sim%par%engine%point)
+        sim%rec%w_thrust = sim%rec%w_thrust + dot_product(0.5_wp*(sim%rec%thrust_prev + ev%thrust_g), xt - sim%rec%xt_prev)
+        sim%rec%xt_prev = xt
         ! a caller's pure moment: the trapezoid of its power M . omega over the step (the stored
         ! rates belong to the middle of the step, as the displacement of the thrust point above)
-        if (sim%ext_on) sim%loop%w_thrust = sim%loop%w_thrust &
-          + dot_product(0.5_wp*(sim%loop%moment_prev + ev%ext_moment), model%body%omega)*h_sync
+        if (sim%ext_on) sim%rec%w_thrust = sim%rec%w_thrust &
+          + dot_product(0.5_wp*(sim%rec%moment_prev + ev%ext_moment), model%body%omega)*h_sync
       end if
-      if (sim%ext_on) sim%loop%moment_prev = ev%ext_moment
+      if (sim%ext_on) sim%rec%moment_prev = ev%ext_moment
       do i = 1, ng
         res%peak_penetration(i) = max(res%peak_penetration(i), ev%delta(i))
         res%peak_normal_force(i) = max(res%peak_normal_force(i), ev%fn(i))
       end do
-      sim%loop%xd_prev = ev%xd; sim%loop%delta_prev = ev%delta; sim%loop%fn_prev = ev%fn
-      sim%loop%fground_prev = ev%fground
-      sim%loop%thrust_prev = ev%thrust_g
+      sim%rec%xd_prev = ev%xd; sim%rec%delta_prev = ev%delta; sim%rec%fn_prev = ev%fn
+      sim%rec%fground_prev = ev%fground
+      sim%rec%thrust_prev = ev%thrust_g
 
       if (norm2(ev%ovl) > res%peak_overload) then
         res%peak_overload = norm2(ev%ovl)
@@ -365,7 +350,7 @@ contains
       end if
       ! peaks of every step, for the summary and the interval-peak channels
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
-      if (sim%loads) call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
+      if (sim%par%loads) call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
       do i = 1, ng
         ns = model%n_struts(i)
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
@@ -374,9 +359,9 @@ contains
       end do
 
       ! ---- output sample (state at t with the forces at t)
-      if (ev%t >= sim%loop%t_next_out - slack) then
-        call record_sample(sim, inp, res, ev, h_sync)
-        sim%loop%t_next_out = sim%loop%t_next_out + inp%output%interval
+      if (ev%t >= sim%rec%t_next_out - slack) then
+        call record_sample(sim, res, ev, h_sync)
+        sim%rec%t_next_out = sim%rec%t_next_out + sim%par%out_interval
       end if
     end associate
   end subroutine sim_book
@@ -384,9 +369,8 @@ contains
   !> Records the output sample of the state at ev%t with the forces of its evaluation ev: its
   !! velocities (and the audit's kinetic energies) synchronised to ev%t, i.e. the stored ones, half
   !! a step behind, plus half a step (h_sync) of the accelerations just computed.
-  subroutine record_sample(sim, inp, res, ev, h_sync)
+  subroutine record_sample(sim, res, ev, h_sync)
     type(sim_t), intent(inout) :: sim           !! simulation at ev%t (velocities restored on return)
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series
     type(sim_eval_t), intent(in) :: ev          !! evaluation of the state
     real(wp), intent(in) :: h_sync              !! step the stored velocities lag by twice [s]
@@ -394,28 +378,26 @@ contains
     real(wp) :: ke_legs, e_el
     integer :: i
     call lead_velocities(sim%model, 0.5_wp*h_sync, ev, kept)
-    ke_legs = leg_energy(sim%model, inp%simulation%gravity)
+    ke_legs = leg_energy(sim%model, sim%par%gravity)
     e_el = 0.0_wp
     do i = 1, sim%model%n_gears
       if (ev%delta(i) > 0.0_wp) e_el = e_el + sim%model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
     end do
-    call record(res, sim%model, ev, sim%loop%w_normal, &
-                sim%loop%w_friction, sim%loop%w_thrust, sim%loop%w_impact, sim%ke0, sim%pe0, ke_legs, e_el, &
-                inp%simulation%gravity)
+    call record(res, sim%model, ev, sim%rec%w_normal, &
+                sim%rec%w_friction, sim%rec%w_thrust, sim%rec%w_impact, sim%rec%ke0, sim%rec%pe0, ke_legs, e_el, &
+                sim%par%gravity)
     call restore_velocities(sim%model, kept)
   end subroutine record_sample
 
   !> After an accepted step to t: mode-switch counts, divergence, tip-over and rest checks, progress.
-  !! done = .true. when the run ends here (tip-over, rest, non-finite state: stat = STAT_NON_FINITE).
-  subroutine sim_accept(sim, inp, res, t, dt, done, stat, errmsg, progress_unit, progress_due, ev)
+  !! done = .true. when the run ends here (tip-over, rest, non-finite state: STAT_NON_FINITE).
+  subroutine sim_accept(sim, res, t, dt, done, st, progress_unit, progress_due, ev)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     real(wp), intent(in) :: t                   !! time reached [s]
     real(wp), intent(in) :: dt                  !! the step just taken [s]
     logical, intent(out) :: done                !! the run has ended
-    integer, intent(out) :: stat                !! 0 on success (also for a tip-over and rest)
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK (also for a tip-over and rest), else the failure [-]
     integer, intent(in) :: progress_unit        !! unit for progress lines, < 0 for none
     logical, intent(in) :: progress_due         !! a progress line is due [-]
     type(sim_eval_t), intent(in), optional :: ev  !! evaluation of the state reached, when the integrator
@@ -425,7 +407,6 @@ contains
     logical :: locked_now
     real(wp) :: tilt
 
-    stat = STAT_OK
     done = .false.
     ng = sim%model%n_gears
     locked_now = .false.
@@ -439,68 +420,65 @@ contains
         end if
         ! strut releases (locked -> not locked), and those in the step after a lock anywhere
         ! (docs/theory.md, "Mode switches": a lock's stopping force reaches the legs a step late)
-        n_rel = count(sim%loop%mode(1:ns, i) == 0 .and. m(1:ns) /= 0)
+        n_rel = count(sim%state%mode(1:ns, i) == 0 .and. m(1:ns) /= 0)
         res%n_releases = res%n_releases + n_rel
-        if (sim%loop%locked_last) res%n_releases_after_lock = res%n_releases_after_lock + n_rel
-        if (any(sim%loop%mode(1:ns, i) /= 0 .and. m(1:ns) == 0)) locked_now = .true.
-        call count_mode_switches(m(1:ns), sim%loop%mode(1:ns, i), res%mode_switches(1:ns, i))
+        if (sim%state%locked_last) res%n_releases_after_lock = res%n_releases_after_lock + n_rel
+        if (any(sim%state%mode(1:ns, i) /= 0 .and. m(1:ns) == 0)) locked_now = .true.
+        call count_mode_switches(m(1:ns), sim%state%mode(1:ns, i), res%mode_switches(1:ns, i))
       end do
-      sim%loop%locked_last = locked_now
-      res%n_steps = sim%loop%n
-      sim%loop%t = t
+      sim%state%locked_last = locked_now
+      res%n_steps = sim%state%n
+      sim%state%t = t
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then
-        stat = STAT_NON_FINITE
-        write (errmsg, '(a,es12.5,a)') 'the solution became non-finite at t = ', t, &
-          ' s: the integration diverged (reduce &simulation dt or check the input)'
+        call st%fail(STAT_NON_FINITE, 'the integration diverged (reduce &simulation dt or check the input)')
+        call st%add_context('the solution became non-finite', t)
         call finish(model, res, t)
         done = .true.
         return
       end if
       tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))
       res%max_tilt = max(res%max_tilt, tilt*rad2deg)
-      if (tilt > inp%simulation%tipover_angle) then
+      if (tilt > sim%par%tipover_angle) then
         res%tipped_over = .true.
-        call end_early(sim, inp, res, t, dt, 'tipped over')
+        call end_early(sim, res, t, dt, 'tipped over')
         done = .true.
         return
       end if
       ! rest (landyn_rest, the outcome's definition): decided from the accepted state
-      if (sim%loop%touched .and. at_rest_now(model, inp%simulation%rest_speed, sim%l_char)) then
-        sim%loop%rest_clock = sim%loop%rest_clock + dt
+      if (sim%state%touched .and. at_rest_now(model, sim%par%rest_speed, sim%par%l_char)) then
+        sim%state%rest_clock = sim%state%rest_clock + dt
       else
-        sim%loop%rest_clock = 0.0_wp
+        sim%state%rest_clock = 0.0_wp
       end if
-      if (inp%simulation%stop_at_rest .and. sim%loop%rest_clock >= inp%simulation%rest_time) then
+      if (sim%par%stop_at_rest .and. sim%state%rest_clock >= sim%par%rest_time) then
         res%at_rest = .true.
-        call end_early(sim, inp, res, t, dt, 'at rest')
+        call end_early(sim, res, t, dt, 'at rest')
         done = .true.
         return
       end if
       if (progress_unit >= 0 .and. progress_due) then
         write (progress_unit, '(a,f8.4,a,f8.4,a,i3,a,f9.2,a)') 'landyn: t = ', t, ' s of ', &
-          inp%simulation%t_end, ' s (', 5*sim%loop%next_progress, ' %), max primary stroke ', &
+          sim%par%t_end, ' s (', 5*sim%rec%next_progress, ' %), max primary stroke ', &
           1000.0_wp*max_primary_stroke(model, ng), ' mm'
         flush (progress_unit)
-        sim%loop%next_progress = sim%loop%next_progress + 1
+        sim%rec%next_progress = sim%rec%next_progress + 1
       end if
     end associate
   end subroutine sim_accept
 
   !> Ends the run before t_end: the reason, a final sample of the state at t (unless one was just
   !! recorded) with the forces of an evaluation of that state, the summary.
-  subroutine end_early(sim, inp, res, t, h_last, reason)
+  subroutine end_early(sim, res, t, h_last, reason)
     type(sim_t), intent(in) :: sim              !! simulation at t
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input
     type(sim_result_t), intent(inout) :: res    !! time series and summary
     real(wp), intent(in) :: t                   !! time [s]
     real(wp), intent(in) :: h_last              !! the step that reached t [s]
     character(len=*), intent(in) :: reason      !! end reason [-]
     type(sim_t) :: work
     type(sim_eval_t) :: ev
-    integer :: stat
-    character(len=msg_len) :: m2
+    type(status_t) :: st
     res%end_reason = reason
     if (res%n_out > 0) then
       if (res%t(res%n_out) >= t - 1.0e-12_wp) then
@@ -510,9 +488,8 @@ contains
     end if
     ! the sample leads the velocities by half a step in place: on a copy of the final state
     work = sim
-    m2 = ''
-    call sim_evaluate(sim, inp, t, h_last, ev, stat, m2)
-    if (stat == 0) call record_sample(work, inp, res, ev, h_last)
+    call sim_evaluate(sim, t, h_last, ev, st)
+    if (st%ok()) call record_sample(work, res, ev, h_last)
     call finish(sim%model, res, t)
   end subroutine end_early
 

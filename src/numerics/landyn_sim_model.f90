@@ -1,10 +1,12 @@
 !> The simulation's model and state: the model assembled from the resolved input (body, gears,
-!! terrain, contact and friction laws) placed at t = 0, the simulation record with the integrator's
-!! accumulators, the evaluation record, snapshots (save/restore) and the legs' energy for the
-!! audit. The time integration that works on them is landyn_sim_core.
+!! terrain, contact and friction laws) placed at t = 0, the run's parameters (sim_params_t, built
+!! once from the input), the simulation record with the integrator's state (step_state_t) and the
+!! recorder's accounts (sim_recorder_t), the evaluation record, snapshots (save/restore) and the
+!! legs' energy for the audit. The time integration that works on them is landyn_sim_core.
 module landyn_sim_model
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
   use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q
+  use landyn_strings, only: int_text
   use landyn_config, only: landyn_input_t, is_set
   use landyn_kinematics, only: cross3, mv3
   use landyn_body, only: body_t, body_init, body_point_position, inertia_tensor
@@ -14,20 +16,27 @@ module landyn_sim_model
   use landyn_contact, only: contact_law_t, make_contact_law
   use landyn_friction, only: friction_law_t, make_friction_law
   use landyn_footpad_state, only: footpad_state_t
-  use landyn_status, only: STAT_OK, STAT_INPUT
+  use landyn_engine, only: engine_t
+  use landyn_status, only: STAT_OK, STAT_INPUT, status_t
+  use landyn_engine, only: make_engine
   implicit none
   private
 
-  public :: model_t, sim_loop_t, sim_t, sim_eval_t, velocities_t, sim_snapshot_t
-  public :: setup_model, leg_energy, sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite
+  public :: model_t, sim_params_t, step_state_t, sim_recorder_t, sim_t, sim_eval_t, velocities_t, sim_snapshot_t
+  public :: sim_params, setup_model, leg_energy, sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite
   public :: max_primary_stroke
 
-  !> Everything the time loop integrates. The gears are held through gear_base_t (any gear type);
-  !! their strut and coordinate counts are cached at assembly.
+  !> The model: the lander's parameters (fixed at assembly) and its evolving physical state. The
+  !! gears are held through gear_base_t (any gear type); their strut and coordinate counts are
+  !! cached at assembly.
+  !!
+  !! Parameters (set by setup_model, never changed during the run): n_gears, n_struts, n_q, plane,
+  !! contact, friction, point_a, rot, g_vec, first_moment0 (and each gear's own parameters).
+  !! State (what sim_save/sim_restore copy): body, footpad, and each gear's state (its
+  !! save_state/restore_state).
   type :: model_t
+    ! ---- parameters
     integer :: n_gears = 0                      !! number of gears [-]
-    type(body_t) :: body                        !! the lander body
-    type(gear_slot_t) :: gear(max_gears)        !! the gears
     integer :: n_struts(max_gears) = 0          !! struts of gear i (its strut_count()) [-]
     integer :: n_q(max_gears) = 0               !! generalized coordinates of gear i (its coordinate_count()) [-]
     type(terrain_plane_t) :: plane(max_gears)         !! the terrain plane under footpad i
@@ -35,50 +44,84 @@ module landyn_sim_model
     ! history, stick state) is each footpad's footpad_state_t, changed only when a step is committed.
     class(contact_law_t), allocatable :: contact       !! normal contact law
     class(friction_law_t), allocatable :: friction     !! friction law
-    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
     real(wp) :: point_a(3, max_gears) = 0.0_wp  !! upper primary joints, lander frame [m]
     real(wp) :: rot(3, 3, max_gears) = 0.0_wp   !! gear frame -> lander frame of each gear (gear_rotation,
                                                 !! set at assembly) [-]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
+    ! ---- state
+    type(body_t) :: body                        !! the lander body
+    type(gear_slot_t) :: gear(max_gears)        !! the gears (their parameters and state)
+    type(footpad_state_t) :: footpad(max_gears)        !! ground-interaction state of footpad i
   end type model_t
 
-  !> The integrator's own evolving state (accumulators of the fixed-step loop).
-  type :: sim_loop_t
+  !> The run's parameters: every setting the step needs, taken from the input once (sim_params,
+  !! called by sim_init) and not changed during the run. The procedures of a step read these, never
+  !! the input deck.
+  type :: sim_params_t
+    real(wp) :: dt = 0.0_wp                    !! &simulation dt: the fixed step, the first adaptive one [s]
+    integer :: nstep = 0                       !! fixed steps to the end time [-]
+    real(wp) :: t_end = 0.0_wp                 !! end time [s]
+    real(wp) :: out_interval = 0.0_wp          !! output interval [s]
+    real(wp) :: gravity = 0.0_wp               !! gravitational acceleration along global +z [m/s^2]
+    real(wp) :: tipover_angle = 0.0_wp         !! tilt counted as a tip-over [rad]
+    real(wp) :: rest_speed = 0.0_wp            !! speed below which the lander is still [m/s]
+    real(wp) :: rest_time = 0.0_wp             !! time it must stay still to be at rest [s]
+    logical :: stop_at_rest = .true.           !! end the run once at rest [-]
+    real(wp) :: constraint_tol = 0.0_wp        !! tolerance of the constraint correction [m, m/s]
+    integer :: max_correction_iter = 0         !! iteration cap of the constraint correction [-]
+    real(wp) :: max_constraint_drift = 0.0_wp  !! violation above this fails the step [m]
+    integer :: frame_field_passes = 0          !! gear passes per force evaluation [-]
+    real(wp) :: l_char = 0.0_wp                !! largest mass-centre to footpad distance [m]
+    logical :: loads = .true.                  !! compute and record the interface loads [-]
+    type(engine_t) :: engine                   !! the descent engine (&engine)
+  end type sim_params_t
+
+  !> The integrator's evolving state beside the model's: what a snapshot restores so that a step
+  !! is taken again exactly (step count, time, the stick states' reference, strut modes of the last
+  !! step, the rest clock).
+  type :: step_state_t
     integer :: n = 0                                   !! steps taken [-]
     real(wp) :: t = 0.0_wp                             !! time of the last accepted state (sim_accept) [s]
-    real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
-    integer :: next_progress = 1                       !! next progress report (in 5 % of the steps) [-]
-    real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
-    real(wp) :: w_friction = 0.0_wp                    !! friction dissipation [J]
-    real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
-    real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
-    real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous step [m]
     real(wp) :: xd_stick(3, max_gears) = 0.0_wp        !! footpad positions of the evaluation whose footpad states
                                                        !! were committed last (the stick states' reference) [m]
     real(wp) :: t_stick = 0.0_wp                       !! time of that evaluation [s]
-    real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous step [m]
-    real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous step [N]
-    real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous step [N]
-    real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous step [m]
-    real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous step, global [N]
-    real(wp) :: moment_prev(3) = 0.0_wp                !! input moment at the previous step (ext_on), lander axes [N m]
     real(wp) :: rest_clock = 0.0_wp                    !! time spent below the rest speed [s]
     logical :: touched = .false.                       !! a footpad has touched the ground [-]
     integer :: mode(max_struts, max_gears) = 0         !! crush mode of each strut at the last step [-]
     logical :: locked_last = .false.                   !! a strut locked in the last accepted step [-]
-  end type sim_loop_t
+  end type step_state_t
 
-  !> One simulation in progress: the model (parameters and evolving state) and the integrator.
-  type :: sim_t
-    type(model_t) :: model                             !! the model
-    type(sim_loop_t) :: loop                           !! integrator state
-    real(wp) :: dt = 0.0_wp                            !! time step [s]
-    integer :: nstep = 0                               !! steps to the end time [-]
-    real(wp) :: l_char = 0.0_wp                        !! largest mass-centre to footpad distance [m]
+  !> The recorder's accounts: energy references and work sums, the previous booked evaluation's
+  !! values the trapezoids need, the next output time and the progress counter. Booked by sim_book
+  !! (w_impact by the velocity projection of each step: a snapshot therefore keeps the accounts
+  !! too, so that a rejected step's impact loss is taken back).
+  type :: sim_recorder_t
     real(wp) :: ke0 = 0.0_wp                           !! initial kinetic energy [J]
     real(wp) :: pe0 = 0.0_wp                           !! initial potential energy [J]
-    logical :: loads = .true.                          !! compute and record the interface loads [-]
+    real(wp) :: t_next_out = 0.0_wp                    !! next output time [s]
+    integer :: next_progress = 1                       !! next progress report (in 5 % of the run) [-]
+    real(wp) :: w_normal = 0.0_wp                      !! work of the normal forces on the ground [J]
+    real(wp) :: w_friction = 0.0_wp                    !! friction dissipation [J]
+    real(wp) :: w_thrust = 0.0_wp                      !! thrust work [J]
+    real(wp) :: w_impact = 0.0_wp                      !! energy dissipated in impacts [J]
+    real(wp) :: xd_prev(3, max_gears) = 0.0_wp         !! footpad positions at the previous booked step [m]
+    real(wp) :: delta_prev(max_gears) = 0.0_wp         !! penetrations at the previous booked step [m]
+    real(wp) :: fn_prev(max_gears) = 0.0_wp            !! normal forces at the previous booked step [N]
+    real(wp) :: fground_prev(3, max_gears) = 0.0_wp    !! ground forces at the previous booked step [N]
+    real(wp) :: xt_prev(3) = 0.0_wp                    !! thrust point at the previous booked step [m]
+    real(wp) :: thrust_prev(3) = 0.0_wp                !! thrust at the previous booked step, global [N]
+    real(wp) :: moment_prev(3) = 0.0_wp                !! input moment at the previous step (ext_on), lander axes [N m]
+  end type sim_recorder_t
+
+  !> One simulation in progress (in the manner of OpenFAST's parameter, state and misc types): the
+  !! run's parameters, the model, the integrator's state, the recorder's accounts, and a driving
+  !! caller's inputs.
+  type :: sim_t
+    type(sim_params_t) :: par                          !! the run's parameters
+    type(model_t) :: model                             !! the model
+    type(step_state_t) :: state                        !! integrator state
+    type(sim_recorder_t) :: rec                        !! recorder accounts
     ! a caller that drives the simulation (the C API's session, landyn_session): where a step must
     ! end, and engine inputs added to the deck's thrust. Their defaults leave a run untouched.
     real(wp) :: t_stop = huge(1.0_wp)                  !! the adaptive integrators end a step exactly here [s]
@@ -134,7 +177,8 @@ module landyn_sim_model
     type(body_t) :: body                               !! body state
     type(gear_snapshot_slot_t) :: gear(max_gears)      !! gear states (allocated by the first sim_save)
     type(footpad_state_t) :: footpad(max_gears)        !! footpad histories and stick states
-    type(sim_loop_t) :: loop                           !! integrator state
+    type(step_state_t) :: state                        !! integrator state
+    type(sim_recorder_t) :: rec                        !! recorder accounts (w_impact is booked during a step)
   end type sim_snapshot_t
 
 contains
@@ -142,59 +186,83 @@ contains
   !> Builds the model (body, gears, terrain, laws) and places it at t = 0. The input's gears are of
   !! the type &gears gear_type names (landyn_gear_types); gears given in `gears` take the place of
   !! the input's (in the gear frames the input defines), before the lander is placed.
-  subroutine setup_model(inp, model, stat, errmsg, gears)
+  subroutine setup_model(inp, model, st, gears)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(out) :: model         !! model at t = 0 [-]
-    integer, intent(out) :: stat                !! 0 on success, STAT_INPUT when a gear exceeds the capacities [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(out) :: st           !! STAT_OK, STAT_INPUT when a gear exceeds the capacities, or
+                                                !! a law's or gear's failure, with its message [-]
     type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i [-]
 
-    stat = STAT_OK
     model%n_gears = inp%gears%n_gears
     model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
-    call make_laws(inp, model, stat, errmsg)
-    if (stat /= 0) return
-    call build_gears(inp, model, stat, errmsg)
-    if (stat /= 0) return
+    call make_laws(inp, model, st)
+    if (.not. st%ok()) return
+    call build_gears(inp, model, st)
+    if (.not. st%ok()) return
     if (present(gears)) call replace_gears(gears, model)
-    call check_gear_capacities(model, stat, errmsg)
-    if (stat /= 0) return
-    call place_lander(inp, model, stat, errmsg)
+    call check_gear_capacities(model, st)
+    if (.not. st%ok()) return
+    call place_lander(inp, model, st)
   end subroutine setup_model
+
+  !> The run's parameters from the resolved input: the settings of &simulation, &output interval
+  !! and &engine the step reads, the step count of the fixed scheme and l_char (the largest
+  !! mass-centre to footpad-joint distance).
+  function sim_params(inp) result(par)
+    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
+    type(sim_params_t) :: par                   !! the parameters [-]
+    integer :: i
+    par%dt = inp%simulation%dt
+    par%nstep = nint(inp%simulation%t_end/par%dt)
+    par%t_end = inp%simulation%t_end
+    par%out_interval = inp%output%interval
+    par%gravity = inp%simulation%gravity
+    par%tipover_angle = inp%simulation%tipover_angle
+    par%rest_speed = inp%simulation%rest_speed
+    par%rest_time = inp%simulation%rest_time
+    par%stop_at_rest = inp%simulation%stop_at_rest
+    par%constraint_tol = inp%simulation%constraint_tol
+    par%max_correction_iter = inp%simulation%max_correction_iter
+    par%max_constraint_drift = inp%simulation%max_constraint_drift
+    par%frame_field_passes = inp%simulation%frame_field_passes
+    par%l_char = 0.0_wp
+    do i = 1, inp%gears%n_gears
+      par%l_char = max(par%l_char, norm2(inp%gears%point_d(:, i) - inp%lander%mass_centre))
+    end do
+    par%engine = make_engine(inp%engine)
+  end function sim_params
 
   !> The laws of the model (contact, friction, terrain planes) and its footpad states at rest. The
   !! gears' own laws (buffers, tube friction) are their gear type's (build_gears).
-  subroutine make_laws(inp, model, stat, errmsg)
+  subroutine make_laws(inp, model, st)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its laws, planes, footpads are set [-]
-    integer, intent(out) :: stat                !! 0 on success [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(inout) :: st         !! STAT_OK, or a law's failure with its message [-]
+    integer :: stat
     character(len=msg_len) :: m2
 
     call make_contact_law(inp%contact, model%contact, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
+    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     call make_friction_law(inp%friction, model%friction, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
+    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     model%footpad = footpad_state_t()
     call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
+    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
   end subroutine make_laws
 
   !> The input's gears, of the type &gears gear_type names (made by the gear-type registry,
   !! landyn_gear_types), in the model with their counts cached.
-  subroutine build_gears(inp, model, stat, errmsg)
+  subroutine build_gears(inp, model, st)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its gears are set [-]
-    integer, intent(out) :: stat                !! 0 on success [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
-    integer :: i
+    type(status_t), intent(inout) :: st         !! STAT_OK, or the gear type's failure with its message [-]
+    integer :: i, stat
     character(len=msg_len) :: m2
 
-    stat = STAT_OK
     do i = 1, model%n_gears
       model%point_a(:, i) = inp%gears%point_a(:, i)
       call make_gear(inp, i, model%gear(i)%g, stat, m2)
-      if (stat /= 0) then; errmsg = m2; return; end if
+      if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
       call gear_counts(model, i)
     end do
   end subroutine build_gears
@@ -213,17 +281,14 @@ contains
   end subroutine replace_gears
 
   !> STAT_INPUT when a gear has more struts or coordinates than the evaluation records hold.
-  subroutine check_gear_capacities(model, stat, errmsg)
+  subroutine check_gear_capacities(model, st)
     type(model_t), intent(in) :: model          !! model with its gears set [-]
-    integer, intent(out) :: stat                !! 0 when all fit, STAT_INPUT otherwise [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(inout) :: st         !! STAT_OK when all fit, STAT_INPUT with a message otherwise [-]
     integer :: i
-    stat = STAT_OK
     do i = 1, model%n_gears
       if (model%n_struts(i) > max_struts .or. model%n_q(i) > max_gear_q) then
-        stat = STAT_INPUT
-        write (errmsg, '(a,i0,a,i0,a,i0,a)') 'gear ', i, ': ', model%n_struts(i), ' struts and ', model%n_q(i), &
-          ' coordinates exceed the capacities max_struts and max_gear_q (landyn_kinds)'
+        call st%fail(STAT_INPUT, 'gear '//int_text(i)//': '//int_text(model%n_struts(i))//' struts and ' &
+                     //int_text(model%n_q(i))//' coordinates exceed the capacities max_struts and max_gear_q (landyn_kinds)')
         return
       end if
     end do
@@ -231,13 +296,12 @@ contains
 
   !> Places the lander at t = 0: at the given position, or with the lowest footpad at `clearance`
   !! above its surface; free fall, and the legs' first moments at rest.
-  subroutine place_lander(inp, model, stat, errmsg)
+  subroutine place_lander(inp, model, st)
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with its gears and planes set; its body is set [-]
-    integer, intent(out) :: stat                !! 0 on success [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(inout) :: st         !! STAT_OK, or the body's failure with its message [-]
     real(wp) :: x_ol(3), dz, xd(3), pos(3), vel(3)
-    integer :: i
+    integer :: i, stat
     character(len=msg_len) :: m2
 
     if (all(is_set(inp%initial%position))) then
@@ -248,7 +312,7 @@ contains
     call body_init(model%body, inp%lander%mass, &
       inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
       inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-    if (stat /= 0) then; errmsg = m2; return; end if
+    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     if (.not. all(is_set(inp%initial%position))) then
       dz = huge(1.0_wp)
       do i = 1, model%n_gears
@@ -261,7 +325,7 @@ contains
       call body_init(model%body, inp%lander%mass, &
         inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
         inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-      if (stat /= 0) then; errmsg = m2; return; end if
+      if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     end if
     model%body%acc = model%g_vec     ! free fall before touchdown
     do i = 1, model%n_gears
@@ -304,7 +368,7 @@ contains
 
   !> Snapshot of everything that evolves in a simulation: body, gears (coordinates, rates, crush
   !! modes and history, caches), footpad histories and stick states, and the integrator's
-  !! accumulators. Restoring it makes the simulation continue exactly as from the moment it was
+  !! state and the recorder's accounts. Restoring it makes the simulation continue exactly as from the moment it was
   !! taken (bit for bit): the basis of rejected steps and event location.
   subroutine sim_save(sim, snap)
     type(sim_t), intent(in) :: sim              !! simulation
@@ -320,7 +384,8 @@ contains
       end associate
     end do
     snap%footpad = sim%model%footpad
-    snap%loop = sim%loop
+    snap%state = sim%state
+    snap%rec = sim%rec
   end subroutine sim_save
 
   !> Puts a snapshot from sim_save back.
@@ -333,7 +398,8 @@ contains
       call sim%model%gear(i)%g%restore_state(snap%gear(i)%s)
     end do
     sim%model%footpad = snap%footpad
-    sim%loop = snap%loop
+    sim%state = snap%state
+    sim%rec = snap%rec
   end subroutine sim_restore
 
   !> Advances the stored velocities of body and gears by `lead` times the accelerations of an

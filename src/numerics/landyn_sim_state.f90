@@ -16,8 +16,7 @@
 !! projections (`moving`).
 module landyn_sim_state
   use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q, max_struts
-  use landyn_status, only: STAT_OK
-  use landyn_config, only: landyn_input_t
+  use landyn_status, only: STAT_OK, status_t
   use landyn_body, only: body_increment
   use landyn_impact, only: system_velocity_projection
   use landyn_sim_model, only: sim_t, sim_eval_t
@@ -152,22 +151,20 @@ contains
   end subroutine sim_increment_positions
 
   !> Projects each moving gear's coordinates onto its constraints (Step 4's position half).
-  subroutine sim_project_positions(sim, inp, moving, t, stat, errmsg)
-    type(sim_t), intent(inout) :: sim           !! simulation
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input (tolerances)
+  subroutine sim_project_positions(sim, moving, t, st)
+    type(sim_t), intent(inout) :: sim           !! simulation (tolerances from its parameters)
     logical, intent(in) :: moving(max_gears)    !! gear i moves [-]
     real(wp), intent(in) :: t                   !! time of the state (messages) [s]
-    integer, intent(out) :: stat                !! STAT_OK, or the gear's failure
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-    integer :: i
+    type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
+    integer :: i, stat
     character(len=msg_len) :: m2
-    stat = STAT_OK
     do i = 1, sim%model%n_gears
       if (.not. moving(i)) cycle
-      call sim%model%gear(i)%g%correct_positions(inp%simulation%constraint_tol, inp%simulation%max_correction_iter, &
-                                                 inp%simulation%max_constraint_drift, stat, m2)
+      call sim%model%gear(i)%g%correct_positions(sim%par%constraint_tol, sim%par%max_correction_iter, &
+                                                 sim%par%max_constraint_drift, stat, m2)
       if (stat /= STAT_OK) then
-        write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+        call st%fail(stat, trim(m2))
+        call st%add_context('gear', t, i)
         return
       end if
     end do
@@ -175,48 +172,47 @@ contains
 
   !> Projects the velocities of body and gears onto the velocity constraints in the kinetic
   !! metric of the whole model (a plastic impact of the constrained system); its loss is booked
-  !! in the loop's w_impact.
-  subroutine sim_project_velocities(sim, inp, t, stat, errmsg)
-    type(sim_t), intent(inout) :: sim           !! simulation
-    type(landyn_input_t), intent(in) :: inp     !! resolved, validated input (tolerance)
+  !! in the recorder's w_impact.
+  subroutine sim_project_velocities(sim, t, st)
+    type(sim_t), intent(inout) :: sim           !! simulation (tolerance from its parameters)
     real(wp), intent(in) :: t                   !! time of the state (messages) [s]
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: st           !! STAT_OK, or the projection's failure with its context [-]
     real(wp) :: e_imp
+    integer :: stat
     character(len=msg_len) :: m2
     call system_velocity_projection(sim%model%body, sim%model%gear, sim%model%n_gears, &
-                                    inp%simulation%constraint_tol, e_imp, stat, m2)
+                                    sim%par%constraint_tol, e_imp, stat, m2)
     if (stat /= STAT_OK) then
-      write (errmsg, '(a,es12.5,a,a)') 'velocity projection at t = ', t, ' s: ', trim(m2)
+      call st%fail(stat, trim(m2))
+      call st%add_context('velocity projection', t)
       return
     end if
-    sim%loop%w_impact = sim%loop%w_impact + e_imp
+    sim%rec%w_impact = sim%rec%w_impact + e_imp
   end subroutine sim_project_velocities
 
   !> After the step: the footpad histories and stick states of the evaluation it was taken with,
   !! gears whose struts are all locked become rigid (with their caches), the step is counted.
-  subroutine sim_commit_discrete(sim, ev, t, stat, errmsg)
+  subroutine sim_commit_discrete(sim, ev, t, st)
     type(sim_t), intent(inout) :: sim           !! simulation after the step
     type(sim_eval_t), intent(in) :: ev          !! the evaluation the step was taken with
     real(wp), intent(in) :: t                   !! time reached (messages) [s]
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
-    integer :: i, ng
+    type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
+    integer :: i, ng, stat
     character(len=msg_len) :: m2
-    stat = STAT_OK
     ng = sim%model%n_gears
     sim%model%footpad(1:ng) = ev%trial(1:ng)
-    sim%loop%xd_stick(:, 1:ng) = ev%xd(:, 1:ng)   ! the positions those stick states belong to
-    sim%loop%t_stick = ev%t                       ! and their time
+    sim%state%xd_stick(:, 1:ng) = ev%xd(:, 1:ng)   ! the positions those stick states belong to
+    sim%state%t_stick = ev%t                       ! and their time
     do i = 1, ng
       call sim%model%gear(i)%g%settle()
       call sim%model%gear(i)%g%prepare(stat, m2)
       if (stat /= STAT_OK) then
-        write (errmsg, '(a,i0,a,es12.5,a,a)') 'gear ', i, ' at t = ', t, ' s: ', trim(m2)
+        call st%fail(stat, trim(m2))
+        call st%add_context('gear', t, i)
         return
       end if
     end do
-    sim%loop%n = sim%loop%n + 1
+    sim%state%n = sim%state%n + 1
   end subroutine sim_commit_discrete
 
 end module landyn_sim_state

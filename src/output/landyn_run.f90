@@ -12,7 +12,7 @@
 !! Library code: nothing here stops or prints, except progress into the unit the caller passes.
 module landyn_run
   use landyn_config, only: landyn_input_t
-  use landyn_status, only: EXIT_OK, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
+  use landyn_status, only: EXIT_OK, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN, status_t
   use landyn_simulation, only: sim_result_t, run_simulation
   use landyn_health, only: health_t, check_health, check_input_health, health_fail
   use landyn_outcome, only: classify_outcome, outcome_no_touchdown
@@ -35,15 +35,16 @@ contains
     integer, intent(in) :: progress_unit          !! unit for progress lines, < 0 for none [-]
     logical, intent(in), optional :: loads        !! compute the interface loads (run_simulation) [-]
     logical, intent(out), optional :: ran         !! the simulation ran to an end (a file can be written) [-]
-    integer :: stat
+    type(status_t) :: st
     if (present(ran)) ran = .false.
     call check_input_health(inp, health)
     if (health%status() == health_fail) then
       status = EXIT_HEALTH
       return
     end if
-    call run_simulation(inp, res, stat, msg, progress_unit, loads)
-    if (stat /= 0) then
+    call run_simulation(inp, res, st, progress_unit, loads)
+    if (.not. st%ok()) then
+      msg = st%text()
       status = EXIT_DIVERGED
       return
     end if
