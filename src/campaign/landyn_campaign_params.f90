@@ -6,7 +6,7 @@ module landyn_campaign_params
   use landyn_kinds, only: wp
   use landyn_config, only: is_set
   use landyn_input, only: input_errors_t
-  use landyn_campaign_nml, only: lower_case, int_text, real_text_short, quote_text
+  use landyn_campaign_text, only: lower_case, int_text, real_text_short, quote_text
   use landyn_campaign_types, only: param_t, criteria_t, raw_parameter_t, raw_criteria_t, max_values, &
                                    max_body_points, label_len, min_truncated_mass
   use landyn_campaign_target, only: parse_target
