@@ -1,9 +1,10 @@
 !> Campaign decks: reading, validation, and the inputs of every case.
 !!
 !! A campaign deck (docs/campaign.md) is a namelist text with the groups &campaign (once),
-!! &parameter (once per varied input; not in list mode) and &criteria (optional). Each item is
-!! read on its own, so every problem is reported, in the form `<deck>:<line>: &<group>: <what>`
-!! (read errors) or `<deck>: &<group>: <what>` (checks across items), like run decks.
+!! &parameter (once per varied input; not in list mode) and &criteria (optional), read by the
+!! run-deck reader with the campaign-deck registry (landyn_campaign_table), so every problem is
+!! reported, in the form `<deck>:<line>: &<group>: <what>` (read errors) or `<deck>: &<group>: <what>`
+!! (checks across items), like run decks.
 !!
 !! Every case runs the base run deck with the case's overrides: `case_deck_text` writes the base
 !! deck's items group by group, drops a base item whose name the case sets itself, and appends
@@ -15,7 +16,8 @@
 !!
 !! Library code: nothing here stops or prints.
 !!
-!! The parts: landyn_campaign_types (the data), landyn_campaign_params (&parameter, &criteria),
+!! The parts: landyn_campaign_types (the data), landyn_campaign_table (the deck's variables),
+!! landyn_campaign_params (&parameter, &criteria),
 !! landyn_campaign_target (which run-deck inputs can vary, from the input registry),
 !! landyn_campaign_attach (base deck, case list, final checks), landyn_campaign_case_deck (case values,
 !! case decks, case inputs). This module reads the deck and is the campaign layer's entry point.

@@ -9,8 +9,10 @@
 !! One reader for every kind of deck: read_deck takes a registry instance (landyn_deck_registry's
 !! deck_registry_t: the groups and their entries) and a target (deck_target_t: where the values
 !! go). parse_deck reads a run deck (the registry of landyn_input_registry into landyn_input_t);
-!! landyn_study_deck reads study decks with its own table. A group marked repeatable may be given
-!! more than once; its messages then name it with its number ('&variant 2: ...').
+!! landyn_study_deck and landyn_campaign_table read study and campaign decks with their own tables.
+!! A group marked repeatable may be given more than once; its messages then name it with its number
+!! ('&variant 2: ...') unless the registry is not `numbered` (campaign decks: '&parameter: ...'). The
+!! registry also sets the limits of numbers (`max_exponent` before reading, `max_magnitude` after).
 !!
 !! Library code: nothing here stops or prints.
 module landyn_input_reader
