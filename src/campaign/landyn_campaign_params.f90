@@ -18,12 +18,16 @@ module landyn_campaign_params
   !> The &parameter variables that some kinds of parameter do not use, in the order of make_param's masks [-]
   character(len=*), parameter :: param_vars(*) = [character(len=7) :: 'start', 'stop', 'count', 'lo', 'hi', 'mean', &
     'sd', 'values', 'weights']
-  !> Which of param_vars each kind of parameter uses (Monte Carlo without a valid distribution: all
-  !! but start, stop and count) [-]
+  !> Which of param_vars a grid parameter uses [-]
   logical, parameter :: grid_uses(*) = [.true., .true., .true., .false., .false., .false., .false., .true., .false.]
+  !> Which of param_vars distribution 'uniform' uses [-]
   logical, parameter :: uniform_uses(*) = [.false., .false., .false., .true., .true., .false., .false., .false., .false.]
+  !> Which of param_vars distribution 'normal' uses [-]
   logical, parameter :: normal_uses(*) = [.false., .false., .false., .true., .true., .true., .true., .false., .false.]
+  !> Which of param_vars distribution 'discrete' uses [-]
   logical, parameter :: discrete_uses(*) = [.false., .false., .false., .false., .false., .false., .false., .true., .true.]
+  !> Which of param_vars a Monte Carlo parameter without a valid distribution may use: all but start, stop
+  !! and count [-]
   logical, parameter :: any_mc_uses(*) = [.false., .false., .false., .true., .true., .true., .true., .true., .true.]
 
 contains

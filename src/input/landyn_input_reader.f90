@@ -329,10 +329,6 @@ contains
       lv_int = v%i
       read (buffer, nml=nl_int, iostat=ios, iomsg=msg)
       v%i = lv_int
-    case ('int64')
-      lv_int64 = v%i8
-      read (buffer, nml=nl_int64, iostat=ios, iomsg=msg)
-      v%i8 = lv_int64
     case ('ints')
       allocate (lv_ints(size(v%ia)))   ! (allocated explicitly: gfortran -O0 warns on the implicit allocation)
       lv_ints = v%ia
@@ -351,6 +347,10 @@ contains
       lv_strings = v%sa
       read (buffer, nml=nl_strings, iostat=ios, iomsg=msg)
       v%sa = lv_strings
+    case ('int64')   ! (the campaign's seed)
+      lv_int64 = v%i8
+      read (buffer, nml=nl_int64, iostat=ios, iomsg=msg)
+      v%i8 = lv_int64
     case default
       call read_reals()
     end select
