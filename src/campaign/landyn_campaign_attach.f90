@@ -10,7 +10,8 @@ module landyn_campaign_attach
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input, resolved_input_text
   use landyn_namelist_text, only: has_nonfinite_word, numbers_within
-  use landyn_campaign_nml, only: split_namelist, int_text, real_text_short, quote_text, ints_text
+  use landyn_namelist_items, only: split_namelist
+  use landyn_campaign_text, only: int_text, real_text_short, quote_text, ints_text
   use landyn_campaign_types, only: campaign_t, raw_campaign_t, max_cases, cell_len
   use landyn_campaign_target, only: parse_target
   use landyn_campaign_case_deck, only: case_deck_text, fingerprint_text, text_fingerprint

@@ -111,24 +111,12 @@ contains
     integer, intent(in) :: n_par     !! varied inputs [-]
     integer, intent(in) :: n_gears   !! gears [-]
     type(case_row_t) :: row          !! the row [-]
-    real(wp) :: nan
-    nan = ieee_value(1.0_wp, ieee_quiet_nan)
+    real(wp) :: r(row_real_count(n_par, n_gears))
     row%case_id = id
     allocate (row%inputs(n_par), row%crush(3, n_gears), row%margin(3, n_gears))
-    row%inputs = nan
-    row%crush = nan
-    row%margin = nan
-    row%min_margin = nan
-    row%peak_overload = nan
-    row%peak_penetration = nan
-    row%max_slide = nan
-    row%final_tilt = nan
-    row%max_tilt = nan
-    row%min_clearance = nan
-    row%final_time = nan
-    row%tipover_margin = nan
-    row%max_friction_ratio = nan
-    row%wall_time = 0.0_wp
+    r = ieee_value(1.0_wp, ieee_quiet_nan)
+    r(size(r)) = 0.0_wp   ! the wall time
+    call set_reals(row, r, n_par, n_gears)
     row%message = ''
     row%end_reason = ''
     row%history_file = ''
@@ -403,6 +391,32 @@ contains
     text = row%message//row%end_reason//row%history_file
   end subroutine pack_row
 
+  !> The real part of a row from its packed form (pack_row's rbuf; the row's arrays allocated).
+  pure subroutine set_reals(row, rbuf, n_par, n_gears)
+    type(case_row_t), intent(inout) :: row  !! row [-]
+    real(wp), intent(in) :: rbuf(:)         !! real part, row_real_count(n_par, n_gears) values [mixed units]
+    integer, intent(in) :: n_par            !! varied inputs [-]
+    integer, intent(in) :: n_gears          !! gears [-]
+    integer :: k
+    row%inputs = rbuf(1:n_par)
+    k = n_par
+    row%crush = reshape(rbuf(k + 1:k + 3*n_gears), [3, n_gears])
+    k = k + 3*n_gears
+    row%margin = reshape(rbuf(k + 1:k + 3*n_gears), [3, n_gears])
+    k = k + 3*n_gears
+    row%min_margin = rbuf(k + 1)
+    row%peak_overload = rbuf(k + 2)
+    row%peak_penetration = rbuf(k + 3)
+    row%max_slide = rbuf(k + 4)
+    row%final_tilt = rbuf(k + 5)
+    row%max_tilt = rbuf(k + 6)
+    row%min_clearance = rbuf(k + 7)
+    row%final_time = rbuf(k + 8)
+    row%tipover_margin = rbuf(k + 9)
+    row%max_friction_ratio = rbuf(k + 10)
+    row%wall_time = rbuf(k + 11)
+  end subroutine set_reals
+
   !> True when two rows are identical bit for bit, wall time aside.
   function rows_equal(a, b) result(same)
     type(case_row_t), intent(in) :: a, b  !! rows [-]
@@ -428,7 +442,7 @@ contains
     integer, intent(in) :: n_gears          !! gears [-]
     type(case_row_t), intent(out) :: row    !! row [-]
     integer, intent(out) :: stat            !! 0 ok, 1 inconsistent parts [-]
-    integer :: k, l1, l2, l3
+    integer :: l1, l2, l3
     stat = STAT_FAILED
     if (size(ibuf) /= row_int_count .or. size(rbuf) /= row_real_count(n_par, n_gears)) return
     l1 = ibuf(9)
@@ -444,23 +458,7 @@ contains
     row%failed_criteria = ibuf(7)
     row%n_steps = ibuf(8)
     row%outcome = ibuf(12)
-    row%inputs = rbuf(1:n_par)
-    k = n_par
-    row%crush = reshape(rbuf(k + 1:k + 3*n_gears), [3, n_gears])
-    k = k + 3*n_gears
-    row%margin = reshape(rbuf(k + 1:k + 3*n_gears), [3, n_gears])
-    k = k + 3*n_gears
-    row%min_margin = rbuf(k + 1)
-    row%peak_overload = rbuf(k + 2)
-    row%peak_penetration = rbuf(k + 3)
-    row%max_slide = rbuf(k + 4)
-    row%final_tilt = rbuf(k + 5)
-    row%max_tilt = rbuf(k + 6)
-    row%min_clearance = rbuf(k + 7)
-    row%final_time = rbuf(k + 8)
-    row%tipover_margin = rbuf(k + 9)
-    row%max_friction_ratio = rbuf(k + 10)
-    row%wall_time = rbuf(k + 11)
+    call set_reals(row, rbuf, n_par, n_gears)
     row%message = text(1:l1)
     row%end_reason = text(l1 + 1:l1 + l2)
     row%history_file = text(l1 + l2 + 1:l1 + l2 + l3)

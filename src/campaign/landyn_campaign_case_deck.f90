@@ -10,7 +10,7 @@ module landyn_campaign_case_deck
   use landyn_status, only: STAT_OK, STAT_FAILED
   use landyn_config, only: landyn_input_t, is_set
   use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input
-  use landyn_campaign_nml, only: lower_case, int_text, real_text, real_text_short
+  use landyn_campaign_text, only: lower_case, int_text, real_text, real_text_short
   use landyn_campaign_rng, only: case_uniform, case_truncated_normal, splitmix64_mix, add64
   use landyn_campaign_types, only: campaign_t, param_t, max_normal_tries
   implicit none

@@ -1,9 +1,10 @@
 !> Campaign decks: reading, validation, and the inputs of every case.
 !!
 !! A campaign deck (docs/campaign.md) is a namelist text with the groups &campaign (once),
-!! &parameter (once per varied input; not in list mode) and &criteria (optional). Each item is
-!! read on its own, so every problem is reported, in the form `<deck>:<line>: &<group>: <what>`
-!! (read errors) or `<deck>: &<group>: <what>` (checks across items), like run decks.
+!! &parameter (once per varied input; not in list mode) and &criteria (optional), read by the
+!! run-deck reader with the campaign-deck registry (landyn_campaign_table), so every problem is
+!! reported, in the form `<deck>:<line>: &<group>: <what>` (read errors) or `<deck>: &<group>: <what>`
+!! (checks across items), like run decks.
 !!
 !! Every case runs the base run deck with the case's overrides: `case_deck_text` writes the base
 !! deck's items group by group, drops a base item whose name the case sets itself, and appends
@@ -15,7 +16,8 @@
 !!
 !! Library code: nothing here stops or prints.
 !!
-!! The parts: landyn_campaign_types (the data), landyn_campaign_params (&parameter, &criteria),
+!! The parts: landyn_campaign_types (the data), landyn_campaign_table (the deck's variables),
+!! landyn_campaign_params (&parameter, &criteria),
 !! landyn_campaign_target (which run-deck inputs can vary, from the input registry),
 !! landyn_campaign_attach (base deck, case list, final checks), landyn_campaign_case_deck (case values,
 !! case decks, case inputs). This module reads the deck and is the campaign layer's entry point.
@@ -25,12 +27,11 @@ module landyn_campaign_deck
   use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
   use landyn_input, only: input_errors_t, read_text_or_report
   use landyn_files, only: base_name
-  use landyn_campaign_nml, only: nml_group_t, nml_item_t, split_namelist, lower_case, int_text, &
-                                 real_text_short, quote_text, close_name_hint, dir_of, join_path, &
-                                 hint_and_list, name_list
-  use landyn_campaign_types, only: campaign_t, param_t, criteria_t, raw_campaign_t, raw_parameter_t, &
-                                   raw_criteria_t, max_values, max_saved, max_body_points, max_params, &
-                                   label_len, max_cases
+  use landyn_campaign_text, only: lower_case, int_text, real_text_short, quote_text, dir_of, join_path
+  use landyn_campaign_types, only: campaign_t, param_t, criteria_t, raw_campaign_t, max_values, max_saved, &
+                                   max_body_points, max_params, label_len, max_cases
+  use landyn_campaign_table, only: campaign_deck_t, campaign_registry
+  use landyn_input_reader, only: read_deck
   use landyn_campaign_params, only: make_param, make_criteria
   use landyn_campaign_attach, only: attach_base_deck, attach_list, finish_campaign
   use landyn_campaign_case_deck, only: case_values, case_deck_text, case_input, param_description, &
@@ -43,31 +44,6 @@ module landyn_campaign_deck
   public :: load_campaign, build_campaign, use_summary_file, case_values, case_deck_text, case_input, text_fingerprint
   public :: param_description, max_values, max_saved, max_body_points, max_params, label_len
   public :: run_variable_table, default_deck_variables
-
-  ! Campaign-deck variables: group, name, what it takes (for messages).
-  !> Variables of the &campaign group [-]
-  character(len=*), parameter :: campaign_vars(*) = [character(len=20) :: 'title', 'base_deck', 'mode', &
-    'n_samples', 'seed', 'summary_file', 'history_prefix', 'save_histories', 'list_file', 'checkpoint_interval']
-  !> What each of campaign_vars takes, for messages [-]
-  character(len=*), parameter :: campaign_takes(*) = [character(len=56) :: 'a quoted character string', &
-    'a quoted file name', "'grid', 'monte_carlo' or 'list'", 'an integer', 'an integer', 'a quoted file name', &
-    'a quoted file-name prefix', 'up to 1000 case ids', 'a quoted file name', 'a real number [s]']
-  !> Variables of the &parameter group [-]
-  character(len=*), parameter :: parameter_vars(*) = [character(len=20) :: 'name', 'label', 'values', 'start', &
-    'stop', 'count', 'distribution', 'lo', 'hi', 'mean', 'sd', 'weights']
-  !> What each of parameter_vars takes, for messages [-]
-  character(len=*), parameter :: parameter_takes(*) = [character(len=56) :: &
-    "a quoted input name, e.g. 'initial_state%velocity(1)'", 'a quoted column name', &
-    'up to 1000 real numbers [deck unit]', 'a real number [deck unit]', 'a real number [deck unit]', &
-    'an integer', "'uniform', 'normal' or 'discrete'", 'a real number [deck unit]', 'a real number [deck unit]', &
-    'a real number [deck unit]', 'a real number [deck unit]', 'up to 1000 real numbers >= 0']
-  !> Variables of the &criteria group [-]
-  character(len=*), parameter :: criteria_vars(*) = [character(len=20) :: 'min_stroke_margin', 'max_overload', &
-    'min_body_clearance', 'body_point', 'require_at_rest', 'failed_runs', 'min_tipover_margin', 'max_friction_ratio']
-  !> What each of criteria_vars takes, for messages [-]
-  character(len=*), parameter :: criteria_takes(*) = [character(len=56) :: 'a real number [m]', &
-    'a real number [g]', 'a real number [m]', 'a 3 x 8 real array [m]; body_point(:, i) = x, y, z', &
-    'a logical', "'count_as_failure' or 'exclude'", 'a real number [deg]', 'a real number [-]']
 
 contains
 
@@ -154,110 +130,54 @@ contains
 
   ! ================================================================ deck parsing
 
-  !> Read the campaign deck's groups item by item into `camp` (and the raw &campaign values).
+  !> Read the campaign deck (landyn_campaign_table: the run-deck reader with the campaign-deck
+  !! registry) into `camp` (and the raw &campaign values), then check the values of each group.
   subroutine parse_campaign_deck(text, deck_name, camp, rc, errors)
     character(len=*), intent(in) :: text           !! deck text [-]
     character(len=*), intent(in) :: deck_name      !! deck path [-]
     type(campaign_t), intent(inout) :: camp        !! campaign filled from the deck [-]
     type(raw_campaign_t), intent(out) :: rc        !! raw &campaign values [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    type(nml_group_t), allocatable :: groups(:)
-    type(raw_parameter_t), allocatable :: rp(:)
-    type(raw_criteria_t) :: rcr
-    integer :: np, n_campaign
-    integer, allocatable :: plines(:)
+    type(campaign_deck_t) :: deck
+    integer :: np
 
     camp%deck_name = deck_name
     camp%deck_text = text
     camp%title = ''
-    call split_namelist(text, deck_name, groups, errors)
-    call read_deck_groups(groups, deck_name, rc, rp, plines, rcr, n_campaign, errors)
-    if (n_campaign == 0) then
+    allocate (deck%rp(0), deck%plines(0))
+    call read_deck(campaign_registry(), text, deck_name, deck, errors)
+    rc = deck%rc
+    do np = 1, size(deck%rp)
+      if (len_trim(deck%rp(np)%name) == 0) call errors%add(deck_name//':'//int_text(deck%plines(np))// &
+        ": &parameter: name is not given; valid: the input to vary, e.g. name = 'initial_state%velocity(1)'")
+    end do
+    if (deck%n_campaign == 0) then
       call errors%add(deck_name//': no &campaign group; a campaign deck needs &campaign with at least '// &
                       'base_deck and mode')
       return
     end if
 
     ! ---- &campaign
-    call apply_campaign_group(rc, deck_name, plines, camp, errors)
+    call apply_campaign_group(rc, deck_name, deck%plines, camp, errors)
 
     ! ---- &parameter
     if (camp%mode == 'grid' .or. camp%mode == 'monte_carlo') then
-      if (size(rp) == 0) call errors%add(deck_name//': no &parameter group; mode '//quote_text(trim(camp%mode))// &
-                                         ' needs one &parameter group per varied input')
-      if (size(rp) > max_params) call errors%add(deck_name//': '//int_text(size(rp))// &
+      if (size(deck%rp) == 0) call errors%add(deck_name//': no &parameter group; mode '// &
+                                              quote_text(trim(camp%mode))//' needs one &parameter group per varied input')
+      if (size(deck%rp) > max_params) call errors%add(deck_name//': '//int_text(size(deck%rp))// &
         ' &parameter groups; valid: at most '//int_text(max_params))
-      allocate (camp%par(size(rp)))
-      do np = 1, size(rp)
-        call make_param(rp(np), plines(np), camp%mode, deck_name, camp%par(np), errors)
+      allocate (camp%par(size(deck%rp)))
+      do np = 1, size(deck%rp)
+        call make_param(deck%rp(np), deck%plines(np), camp%mode, deck_name, camp%par(np), errors)
       end do
-      camp%n_par = size(rp)
+      camp%n_par = size(deck%rp)
     else
       allocate (camp%par(0))
     end if
 
     ! ---- &criteria
-    call make_criteria(rcr, deck_name, camp%crit, errors)
+    call make_criteria(deck%rcr, deck_name, camp%crit, errors)
   end subroutine parse_campaign_deck
-
-  !> The groups of a campaign deck read into their raw records: &campaign (once), every &parameter
-  !! (with its line) and &criteria (once); other groups and repeated ones are reported.
-  subroutine read_deck_groups(groups, deck_name, rc, rp, plines, rcr, n_campaign, errors)
-    type(nml_group_t), intent(in) :: groups(:)     !! the deck's groups [-]
-    character(len=*), intent(in) :: deck_name      !! deck path [-]
-    type(raw_campaign_t), intent(inout) :: rc      !! raw &campaign values [-]
-    type(raw_parameter_t), allocatable, intent(out) :: rp(:)  !! raw &parameter values, in deck order [-]
-    integer, allocatable, intent(out) :: plines(:) !! line of each &parameter group [-]
-    type(raw_criteria_t), intent(out) :: rcr       !! raw &criteria values [-]
-    integer, intent(out) :: n_campaign             !! &campaign groups found [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    type(raw_campaign_t) :: rc_unused      ! read_items takes the three records; one is read
-    type(raw_parameter_t) :: rp_unused
-    type(raw_criteria_t) :: rcr_unused
-    character(len=20), allocatable :: given(:)
-    integer :: ig, n_criteria, line_campaign, line_criteria
-    n_campaign = 0
-    n_criteria = 0
-    line_campaign = 0
-    line_criteria = 0
-    allocate (rp(0), plines(0))
-    do ig = 1, size(groups)
-      associate (g => groups(ig))
-        if (len(g%name) == 0) cycle
-        select case (g%name)
-        case ('campaign')
-          n_campaign = n_campaign + 1
-          if (n_campaign > 1) then
-            call errors%add(deck_name//':'//int_text(g%line)//': &campaign: group given a second time (first at line '// &
-                            int_text(line_campaign)//'); give it once')
-            cycle
-          end if
-          line_campaign = g%line
-          call read_items(g, deck_name, campaign_vars, campaign_takes, given, errors, rc, rp_unused, rcr_unused)
-        case ('parameter')
-          rp = [rp, raw_parameter_t()]
-          plines = [plines, g%line]
-          call read_items(g, deck_name, parameter_vars, parameter_takes, given, errors, rc_unused, rp(size(rp)), &
-                          rcr_unused)
-          if (len_trim(rp(size(rp))%name) == 0) call errors%add(deck_name//':'//int_text(g%line)// &
-            ": &parameter: name is not given; valid: the input to vary, e.g. name = 'initial_state%velocity(1)'")
-        case ('criteria')
-          n_criteria = n_criteria + 1
-          if (n_criteria > 1) then
-            call errors%add(deck_name//':'//int_text(g%line)//': &criteria: group given a second time (first at line '// &
-                            int_text(line_criteria)//'); give it once')
-            cycle
-          end if
-          line_criteria = g%line
-          call read_items(g, deck_name, criteria_vars, criteria_takes, given, errors, rc_unused, rp_unused, rcr)
-        case default
-          call errors%add(deck_name//':'//int_text(g%line)//": unknown namelist group '&"//g%name//"'"// &
-                          close_name_hint(g%name, [character(len=9) :: 'campaign', 'parameter', 'criteria'])// &
-                          '; valid groups in a campaign deck: &campaign, &parameter, &criteria')
-        end select
-      end associate
-    end do
-  end subroutine read_deck_groups
 
   !> The &campaign values checked and set in `camp`: title, mode, seed, checkpoint interval, base
   !! deck and case list paths, n_samples (monte_carlo), list_file (list), summary file, history
@@ -317,114 +237,5 @@ contains
     end if
     camp%save_histories = pack(rc%save_histories, rc%save_histories /= 0)
   end subroutine apply_campaign_group
-
-  !> Read every item of group g (&campaign, &parameter or &criteria) on its own into the group's
-  !! raw record: the item is read as a one-item namelist record naming the record's component
-  !! (`<group>_%<item>`), so subscripts and repeat counts keep their namelist meaning; a record
-  !! is changed only by an item read without error, with finite values.
-  subroutine read_items(g, deck_name, vars, takes, given, errors, campaign_, parameter_, criteria_)
-    type(nml_group_t), intent(in) :: g                      !! the group [-]
-    character(len=*), intent(in) :: deck_name               !! deck path [-]
-    character(len=*), intent(in) :: vars(:)                 !! the group's variables [-]
-    character(len=*), intent(in) :: takes(:)                !! what each takes [-]
-    character(len=20), allocatable, intent(out) :: given(:) !! variables given [-]
-    type(input_errors_t), intent(inout) :: errors           !! problems are appended here [-]
-    type(raw_campaign_t), intent(inout) :: campaign_        !! &campaign values [-]
-    type(raw_parameter_t), intent(inout) :: parameter_      !! &parameter values [-]
-    type(raw_criteria_t), intent(inout) :: criteria_        !! &criteria values [-]
-    type(raw_campaign_t) :: c0
-    type(raw_parameter_t) :: p0
-    type(raw_criteria_t) :: r0
-    character(len=256) :: msg
-    character(len=:), allocatable :: buffer, prefix
-    integer :: k, ios, iv, p
-    namelist /campaign/ campaign_
-    namelist /parameter/ parameter_
-    namelist /criteria/ criteria_
-    allocate (given(0))
-    buffer = ''
-    prefix = g%name//'_%'
-    do k = 1, g%n_items
-      associate (it => g%items(k))
-        iv = check_item(it, g%name, vars, takes, deck_name, given, errors)
-        if (iv == 0) cycle
-        c0 = campaign_
-        p0 = parameter_
-        r0 = criteria_
-        msg = ''
-        buffer = '&'//g%name//' '//prefix//it%lhs//' = '//it%value//' /'
-        select case (g%name)
-        case ('campaign')
-          read (buffer, nml=campaign, iostat=ios, iomsg=msg)
-        case ('parameter')
-          read (buffer, nml=parameter, iostat=ios, iomsg=msg)
-          if (ios == 0 .and. .not. all(ieee_is_finite([parameter_%values, parameter_%start, parameter_%stop, &
-              parameter_%lo, parameter_%hi, parameter_%mean, parameter_%sd, parameter_%weights]))) ios = -1
-        case default
-          read (buffer, nml=criteria, iostat=ios, iomsg=msg)
-          if (ios == 0 .and. .not. all(ieee_is_finite([criteria_%min_stroke_margin, criteria_%max_overload, &
-              criteria_%min_body_clearance, criteria_%body_point, criteria_%min_tipover_margin, &
-              criteria_%max_friction_ratio]))) ios = -1
-        end select
-        if (ios == 0) cycle
-        campaign_ = c0
-        parameter_ = p0
-        criteria_ = r0
-        if (ios == -1) msg = 'not a finite number'
-        do   ! the record's name is ours, not the deck's
-          p = index(msg, prefix)
-          if (p == 0) exit
-          msg = msg(1:p - 1)//msg(p + len(prefix):)
-        end do
-        call read_error(deck_name, it, g%name, takes(iv), msg, errors)
-      end associate
-    end do
-  end subroutine read_items
-
-  !> Checks an item's variable name (known, given once, has a value). Returns its index in
-  !! `vars`, or 0 after reporting the problem.
-  function check_item(it, group, vars, takes, deck_name, given, errors) result(iv)
-    type(nml_item_t), intent(in) :: it                     !! the item [-]
-    character(len=*), intent(in) :: group                  !! group name [-]
-    character(len=*), intent(in) :: vars(:)                !! the group's variables [-]
-    character(len=*), intent(in) :: takes(:)               !! what each variable takes [-]
-    character(len=*), intent(in) :: deck_name              !! deck path [-]
-    character(len=20), allocatable, intent(inout) :: given(:)  !! keys given so far [-]
-    type(input_errors_t), intent(inout) :: errors          !! problems are appended here [-]
-    integer :: iv                                          !! index in vars, 0 on a problem [-]
-    character(len=:), allocatable :: pre
-    pre = deck_name//':'//int_text(it%line)//': &'//group//': '
-    do iv = 1, size(vars)
-      if (trim(vars(iv)) == it%base) exit
-    end do
-    if (iv > size(vars)) then
-      iv = 0
-      call errors%add(pre//"unknown variable '"//it%lhs//"' ("//it%lhs//' = '//it%value//')'// &
-                      hint_and_list(close_name_hint(it%base, vars), name_list(vars)))
-      return
-    end if
-    if (any(given == it%key(1:min(len(it%key), 20)))) then
-      call errors%add(pre//it%lhs//' is given more than once ('//it%lhs//' = '//it%value//'); give it once')
-      iv = 0
-      return
-    end if
-    given = [character(len=20) :: given, it%key(1:min(len(it%key), 20))]
-    if (len_trim(it%value) == 0) then
-      call errors%add(pre//'no value given for '//it%lhs//' ('//trim(vars(iv))//' takes '//trim(takes(iv))//')')
-      iv = 0
-    end if
-  end function check_item
-
-  !> Append the message for an item whose value cannot be read: where, the item, what it takes, the iomsg.
-  subroutine read_error(deck_name, it, group, takes, msg, errors)
-    character(len=*), intent(in) :: deck_name      !! deck path [-]
-    type(nml_item_t), intent(in) :: it             !! the item [-]
-    character(len=*), intent(in) :: group          !! group name [-]
-    character(len=*), intent(in) :: takes          !! what the variable takes [-]
-    character(len=*), intent(in) :: msg            !! iomsg [-]
-    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    call errors%add(deck_name//':'//int_text(it%line)//': &'//group//': cannot read '//it%lhs//' = '// &
-                    quote_text(it%value)//' ('//it%base//' takes '//trim(takes)//'): '//trim(msg))
-  end subroutine read_error
 
 end module landyn_campaign_deck

@@ -41,7 +41,7 @@ module landyn_campaign_parallel
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_h5, only: delete_file
-  use landyn_campaign_nml, only: int_text, real_text_short
+  use landyn_campaign_text, only: int_text, real_text_short
   use landyn_campaign_deck, only: campaign_t, build_campaign, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, pack_row, unpack_row, row_int_count, row_real_count, &
                                   status_ok

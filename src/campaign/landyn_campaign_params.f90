@@ -6,7 +6,7 @@ module landyn_campaign_params
   use landyn_kinds, only: wp
   use landyn_config, only: is_set
   use landyn_input, only: input_errors_t
-  use landyn_campaign_nml, only: lower_case, int_text, real_text_short, quote_text
+  use landyn_campaign_text, only: lower_case, int_text, real_text_short, quote_text
   use landyn_campaign_types, only: param_t, criteria_t, raw_parameter_t, raw_criteria_t, max_values, &
                                    max_body_points, label_len, min_truncated_mass
   use landyn_campaign_target, only: parse_target
@@ -14,6 +14,21 @@ module landyn_campaign_params
   private
 
   public :: make_param, make_criteria
+
+  !> The &parameter variables that some kinds of parameter do not use, in the order of make_param's masks [-]
+  character(len=*), parameter :: param_vars(*) = [character(len=7) :: 'start', 'stop', 'count', 'lo', 'hi', 'mean', &
+    'sd', 'values', 'weights']
+  !> Which of param_vars a grid parameter uses [-]
+  logical, parameter :: grid_uses(*) = [.true., .true., .true., .false., .false., .false., .false., .true., .false.]
+  !> Which of param_vars distribution 'uniform' uses [-]
+  logical, parameter :: uniform_uses(*) = [.false., .false., .false., .true., .true., .false., .false., .false., .false.]
+  !> Which of param_vars distribution 'normal' uses [-]
+  logical, parameter :: normal_uses(*) = [.false., .false., .false., .true., .true., .true., .true., .false., .false.]
+  !> Which of param_vars distribution 'discrete' uses [-]
+  logical, parameter :: discrete_uses(*) = [.false., .false., .false., .false., .false., .false., .false., .true., .true.]
+  !> Which of param_vars a Monte Carlo parameter without a valid distribution may use: all but start, stop
+  !! and count [-]
+  logical, parameter :: any_mc_uses(*) = [.false., .false., .false., .true., .true., .true., .true., .true., .true.]
 
 contains
 
@@ -27,6 +42,7 @@ contains
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     character(len=:), allocatable :: pre, msg, dist, what
     integer :: nv, nw
+    logical :: given(size(param_vars))
 
     p%line = line
     pre = deck_name//':'//int_text(line)//': &parameter'
@@ -53,24 +69,31 @@ contains
     else
       what = "distribution '"//dist//"'"
     end if
+    given = [is_set(rp%start), is_set(rp%stop), rp%count /= -1, is_set(rp%lo), is_set(rp%hi), is_set(rp%mean), &
+             is_set(rp%sd), nv > 0, nw > 0]
     select case (mode)
     case ('grid')
-      call grid_param(rp, nv, nw, dist, pre, what, p, errors)
+      p%kind = 'grid'
+      call report_unused(given .and. .not. grid_uses, pre, what, errors)
+      call grid_param(rp, nv, dist, pre, p, errors)
     case ('monte_carlo')
-      call not_given(is_set(rp%start), 'start', pre, what, errors)
-      call not_given(is_set(rp%stop), 'stop', pre, what, errors)
-      call not_given(rp%count /= -1, 'count', pre, what, errors)
+      if (any(dist == [character(len=8) :: 'uniform', 'normal', 'discrete'])) p%kind = dist
       select case (dist)
       case ('uniform')
-        call uniform_param(rp, nv, nw, pre, what, p, errors)
+        call report_unused(given .and. .not. uniform_uses, pre, what, errors)
+        call uniform_param(rp, pre, p, errors)
       case ('normal')
-        call normal_param(rp, nv, nw, pre, what, p, errors)
+        call report_unused(given .and. .not. normal_uses, pre, what, errors)
+        call normal_param(rp, pre, p, errors)
       case ('discrete')
-        call discrete_param(rp, nv, nw, pre, what, p, errors)
+        call report_unused(given .and. .not. discrete_uses, pre, what, errors)
+        call discrete_param(rp, nv, nw, pre, p, errors)
       case ('')
+        call report_unused(given .and. .not. any_mc_uses, pre, what, errors)
         call errors%add(pre//": distribution is not given; valid: 'uniform' (lo, hi), 'normal' (mean, sd, "// &
                         "optional lo, hi) or 'discrete' (values, optional weights)")
       case default
+        call report_unused(given .and. .not. any_mc_uses, pre, what, errors)
         call errors%add(pre//': distribution = '//quote_text(dist)//" is invalid; valid: 'uniform', 'normal' "// &
                         "or 'discrete'")
       end select
@@ -81,24 +104,16 @@ contains
 
   !> A grid parameter: its values, given as values or as start, stop and count (evenly spaced, the
   !! last exactly stop); the distribution variables must not be given.
-  subroutine grid_param(rp, nv, nw, dist, pre, what, p, errors)
+  subroutine grid_param(rp, nv, dist, pre, p, errors)
     type(raw_parameter_t), intent(in) :: rp        !! values read [-]
     integer, intent(in) :: nv                      !! values given [-]
-    integer, intent(in) :: nw                      !! weights given [-]
     character(len=*), intent(in) :: dist           !! distribution given (must be empty) [-]
     character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
-    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
     type(param_t), intent(inout) :: p              !! the parameter [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     integer :: i
-    p%kind = 'grid'
     if (len(dist) > 0) call errors%add(pre//': distribution = '//quote_text(dist)// &
       ' is not used in grid mode (grids take values, or start, stop and count); remove it')
-    call not_given(is_set(rp%lo), 'lo', pre, what, errors)
-    call not_given(is_set(rp%hi), 'hi', pre, what, errors)
-    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
-    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
-    call not_given(nw > 0, 'weights', pre, what, errors)
     if (nv > 0) then
       if (is_set(rp%start) .or. is_set(rp%stop) .or. rp%count /= -1) then
         call errors%add(pre//': give either values or start, stop and count, not both')
@@ -130,19 +145,11 @@ contains
   end subroutine grid_param
 
   !> A Monte Carlo parameter of distribution 'uniform' on lo .. hi.
-  subroutine uniform_param(rp, nv, nw, pre, what, p, errors)
+  subroutine uniform_param(rp, pre, p, errors)
     type(raw_parameter_t), intent(in) :: rp        !! values read [-]
-    integer, intent(in) :: nv                      !! values given [-]
-    integer, intent(in) :: nw                      !! weights given [-]
     character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
-    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
     type(param_t), intent(inout) :: p              !! the parameter [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    p%kind = 'uniform'
-    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
-    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
-    call not_given(nv > 0, 'values', pre, what, errors)
-    call not_given(nw > 0, 'weights', pre, what, errors)
     if (.not. (is_set(rp%lo) .and. is_set(rp%hi))) then
       call errors%add(pre//": distribution 'uniform' needs lo and hi")
     else if (.not. rp%lo < rp%hi) then
@@ -156,18 +163,12 @@ contains
 
   !> A Monte Carlo parameter of distribution 'normal' (mean, sd), optionally truncated to lo .. hi, which
   !! must keep at least min_truncated_mass of it.
-  subroutine normal_param(rp, nv, nw, pre, what, p, errors)
+  subroutine normal_param(rp, pre, p, errors)
     type(raw_parameter_t), intent(in) :: rp        !! values read [-]
-    integer, intent(in) :: nv                      !! values given [-]
-    integer, intent(in) :: nw                      !! weights given [-]
     character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
-    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
     type(param_t), intent(inout) :: p              !! the parameter [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     real(wp) :: mass, a, b
-    p%kind = 'normal'
-    call not_given(nv > 0, 'values', pre, what, errors)
-    call not_given(nw > 0, 'weights', pre, what, errors)
     if (.not. (is_set(rp%mean) .and. is_set(rp%sd))) then
       call errors%add(pre//": distribution 'normal' needs mean and sd (lo and hi truncate it, optional)")
     else if (.not. rp%sd > 0.0_wp) then
@@ -195,21 +196,15 @@ contains
 
   !> A Monte Carlo parameter of distribution 'discrete': values and their cumulative weights (equal
   !! weights when none are given).
-  subroutine discrete_param(rp, nv, nw, pre, what, p, errors)
+  subroutine discrete_param(rp, nv, nw, pre, p, errors)
     type(raw_parameter_t), intent(in) :: rp        !! values read [-]
     integer, intent(in) :: nv                      !! values given [-]
     integer, intent(in) :: nw                      !! weights given [-]
     character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
-    character(len=*), intent(in) :: what           !! the parameter's kind for messages [-]
     type(param_t), intent(inout) :: p              !! the parameter [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     real(wp) :: a, b
     integer :: i
-    p%kind = 'discrete'
-    call not_given(is_set(rp%lo), 'lo', pre, what, errors)
-    call not_given(is_set(rp%hi), 'hi', pre, what, errors)
-    call not_given(is_set(rp%mean), 'mean', pre, what, errors)
-    call not_given(is_set(rp%sd), 'sd', pre, what, errors)
     if (nv == 0) then
       call errors%add(pre//": distribution 'discrete' needs values (and optional weights)")
     else
@@ -235,15 +230,17 @@ contains
     end if
   end subroutine discrete_param
 
-  !> Report a variable given in the group that this kind of parameter does not use.
-  subroutine not_given(given, var, pre, what, errors)
-    logical, intent(in) :: given                   !! the variable was given [-]
-    character(len=*), intent(in) :: var            !! its name [-]
+  !> Report the variables given in the group that this kind of parameter does not use.
+  subroutine report_unused(unused, pre, what, errors)
+    logical, intent(in) :: unused(:)               !! per param_vars entry: given but not used [-]
     character(len=*), intent(in) :: pre            !! message prefix: deck, line, group, name [-]
     character(len=*), intent(in) :: what           !! the parameter's kind: 'a grid parameter' or "distribution '<name>'" [-]
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
-    if (given) call errors%add(pre//': '//var//' is not used by '//what//'; remove it')
-  end subroutine not_given
+    integer :: k
+    do k = 1, size(unused)
+      if (unused(k)) call errors%add(pre//': '//trim(param_vars(k))//' is not used by '//what//'; remove it')
+    end do
+  end subroutine report_unused
 
   !> For an integer input, report the first value that is not a whole number (or exceeds 1e9).
   subroutine check_integral(p, pre, errors)
@@ -307,12 +304,8 @@ contains
     type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
     integer :: i, n
     crit%min_stroke_margin = rcr%min_stroke_margin
-    crit%overload_applied = is_set(rcr%max_overload)
-    if (crit%overload_applied) then
-      crit%max_overload = rcr%max_overload
-      if (.not. rcr%max_overload > 0.0_wp) call errors%add(deck_name//': &criteria: max_overload = '// &
-        real_text_short(rcr%max_overload)//' g is invalid; valid: max_overload > 0 g')
-    end if
+    call positive_limit(rcr%max_overload, 'max_overload', ' g', deck_name, crit%overload_applied, crit%max_overload, &
+                        errors)
     crit%clearance_applied = is_set(rcr%min_body_clearance)
     if (crit%clearance_applied) crit%min_body_clearance = rcr%min_body_clearance
     n = 0
@@ -333,16 +326,28 @@ contains
     crit%require_at_rest = rcr%require_at_rest
     crit%tipover_applied = is_set(rcr%min_tipover_margin)
     if (crit%tipover_applied) crit%min_tipover_margin = rcr%min_tipover_margin
-    crit%friction_applied = is_set(rcr%max_friction_ratio)
-    if (crit%friction_applied) then
-      crit%max_friction_ratio = rcr%max_friction_ratio
-      if (.not. rcr%max_friction_ratio > 0.0_wp) call errors%add(deck_name//': &criteria: max_friction_ratio = '// &
-        real_text_short(rcr%max_friction_ratio)//' is invalid; valid: max_friction_ratio > 0')
-    end if
+    call positive_limit(rcr%max_friction_ratio, 'max_friction_ratio', '', deck_name, crit%friction_applied, &
+                        crit%max_friction_ratio, errors)
     crit%failed_runs = lower_case(trim(adjustl(rcr%failed_runs)))
     if (crit%failed_runs /= 'count_as_failure' .and. crit%failed_runs /= 'exclude') &
       call errors%add(deck_name//': &criteria: failed_runs = '//quote_text(trim(rcr%failed_runs))// &
                       " is invalid; valid: 'count_as_failure' or 'exclude'")
   end subroutine make_criteria
+
+  !> A &criteria limit applied only when given, and then > 0.
+  subroutine positive_limit(raw, name, unit, deck_name, applied, x, errors)
+    real(wp), intent(in) :: raw                    !! value read, unset_real when not given [unit]
+    character(len=*), intent(in) :: name           !! variable [-]
+    character(len=*), intent(in) :: unit           !! ' <unit>' in messages, '' if none [-]
+    character(len=*), intent(in) :: deck_name      !! deck path [-]
+    logical, intent(out) :: applied                !! the limit was given [-]
+    real(wp), intent(inout) :: x                   !! the limit, set when given [unit]
+    type(input_errors_t), intent(inout) :: errors  !! problems are appended here [-]
+    applied = is_set(raw)
+    if (.not. applied) return
+    x = raw
+    if (.not. raw > 0.0_wp) call errors%add(deck_name//': &criteria: '//name//' = '//real_text_short(raw)//unit// &
+                                           ' is invalid; valid: '//name//' > 0'//unit)
+  end subroutine positive_limit
 
 end module landyn_campaign_params

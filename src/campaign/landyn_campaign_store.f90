@@ -633,18 +633,13 @@ contains
     real(wp), allocatable :: bp(:, :)
 
     call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/criteria/max_overload_applied', ival, stat, errmsg); if (stat /= 0) return
-    c%overload_applied = ival /= 0
-    call h5_read(f, '/criteria/max_overload', c%max_overload, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/criteria/min_tipover_margin_applied', ival, stat, errmsg); if (stat /= 0) return
-    c%tipover_applied = ival /= 0
-    call h5_read(f, '/criteria/min_tipover_margin', c%min_tipover_margin, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/criteria/max_friction_ratio_applied', ival, stat, errmsg); if (stat /= 0) return
-    c%friction_applied = ival /= 0
-    call h5_read(f, '/criteria/max_friction_ratio', c%max_friction_ratio, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/criteria/min_body_clearance_applied', ival, stat, errmsg); if (stat /= 0) return
-    c%clearance_applied = ival /= 0
-    call h5_read(f, '/criteria/min_body_clearance', c%min_body_clearance, stat, errmsg); if (stat /= 0) return
+    call read_applied(f, 'max_overload', c%overload_applied, c%max_overload, stat, errmsg); if (stat /= 0) return
+    call read_applied(f, 'min_tipover_margin', c%tipover_applied, c%min_tipover_margin, stat, errmsg)
+    if (stat /= 0) return
+    call read_applied(f, 'max_friction_ratio', c%friction_applied, c%max_friction_ratio, stat, errmsg)
+    if (stat /= 0) return
+    call read_applied(f, 'min_body_clearance', c%clearance_applied, c%min_body_clearance, stat, errmsg)
+    if (stat /= 0) return
     call h5_read(f, '/criteria/body_points', bp, stat, errmsg); if (stat /= 0) return
     c%n_body_points = min(size(bp, 2), max_body_points)
     c%body_point(:, 1:c%n_body_points) = bp(:, 1:c%n_body_points)
@@ -653,6 +648,21 @@ contains
     call h5_read(f, '/criteria/failed_runs', s, stat, errmsg); if (stat /= 0) return
     c%failed_runs = s
   end subroutine read_criteria_group
+
+  !> A criterion applied only when given: /criteria/<name>_applied and /criteria/<name>.
+  subroutine read_applied(f, name, applied, x, stat, errmsg)
+    type(h5_file_t), intent(in) :: f                     !! open file [-]
+    character(len=*), intent(in) :: name                 !! the criterion's dataset name [-]
+    logical, intent(inout) :: applied                    !! the criterion is applied [-]
+    real(wp), intent(inout) :: x                         !! its limit [unit of the criterion]
+    integer, intent(out) :: stat                         !! 0 ok [-]
+    character(len=*), intent(inout) :: errmsg            !! message [-]
+    integer(ip) :: ival
+    call h5_read(f, '/criteria/'//name//'_applied', ival, stat, errmsg)
+    if (stat /= 0) return
+    applied = ival /= 0
+    call h5_read(f, '/criteria/'//name, x, stat, errmsg)
+  end subroutine read_applied
 
   !> The rows of a summary file, allocated from /cases/case_id, with their integer columns (status,
   !! flags, failed criteria, steps, outcome).

@@ -9,7 +9,8 @@ module landyn_campaign_target
                                    k_logical, k_string
   use landyn_config, only: default_input
   use landyn_input, only: input_errors_t, resolved_input_text
-  use landyn_campaign_nml, only: nml_group_t, split_namelist, lower_case, int_text, close_name_hint, &
+  use landyn_namelist_items, only: nml_group_t, split_namelist
+  use landyn_campaign_text, only: lower_case, int_text, close_name_hint, &
                                  hint_and_list, name_list
   use landyn_campaign_types, only: param_t
   implicit none

@@ -9,7 +9,7 @@ module landyn_campaign_tasks
   use landyn_kinds, only: wp, msg_len
   use landyn_input, only: input_errors_t
   use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
-  use landyn_campaign_nml, only: int_text, ints_text, real_text_short, lower_case
+  use landyn_campaign_text, only: int_text, ints_text, real_text_short, lower_case
   use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, status_no_touchdown, n_criteria, criterion_name, &
                                   failed_criteria_names, failure_counts

@@ -5,7 +5,7 @@ module landyn_campaign_types
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_config, only: unset_real, path_len
-  use landyn_campaign_nml, only: nml_group_t
+  use landyn_namelist_items, only: nml_group_t
   implicit none
   private
 

@@ -7,13 +7,14 @@
 !!
 !! Library code: nothing here stops or prints.
 module landyn_deck_registry
+  use landyn_kinds, only: wp
   use landyn_input_registry, only: input_var_t, input_vars, group_names, table_group_index, table_var_index, &
                                    entry_unit_text, table_group_list, table_group_hint, table_var_hint
   use landyn_input_value, only: input_value_t
   implicit none
   private
 
-  public :: deck_registry_t, deck_target_t, group_name_len, run_deck_registry
+  public :: deck_registry_t, deck_target_t, group_name_len, run_deck_registry, new_deck_registry
 
   integer, parameter :: group_name_len = 24   !! longest group name [-]
 
@@ -22,6 +23,10 @@ module landyn_deck_registry
     type(input_var_t), allocatable :: vars(:)                     !! the variables, in deck order [-]
     character(len=group_name_len), allocatable :: groups(:)      !! group names, in deck order [-]
     logical, allocatable :: repeatable(:)                         !! a group that may be given more than once [-]
+    logical :: numbered = .true.        !! messages name a repeatable group with its number ('&variant 2') [-]
+    integer :: max_exponent = 300       !! a number beyond 10**max_exponent is out of range (checked before reading) [-]
+    real(wp) :: max_magnitude = 1.0e30_wp  !! largest |value| of a real read [any unit]
+    character(len=16) :: limit_text = '|value| <= 1e30'  !! that limit in messages [-]
   contains
     procedure :: group_index      !! index of a group name
     procedure :: var_index        !! index of a variable of a group
@@ -35,6 +40,7 @@ module landyn_deck_registry
   type, abstract :: deck_target_t
     integer :: group = 0      !! the group being read (set by begin_group) [-]
     integer :: instance = 0   !! how many times that group has started, this one included [-]
+    integer :: line = 0       !! line of the group's '&' in the deck (set by the reader before begin_group) [-]
   contains
     procedure(access_i), deferred :: access  !! copy entry iv to or from the holder
     procedure :: begin_group                 !! a group starts: records it in group and instance
@@ -57,12 +63,22 @@ contains
   !> The registry of run decks (landyn_input_registry): its groups, none repeatable.
   function run_deck_registry() result(reg)
     type(deck_registry_t) :: reg  !! the run-deck registry [-]
-    allocate (reg%vars(size(input_vars)))
-    reg%vars = input_vars
-    allocate (reg%groups(size(group_names)), reg%repeatable(size(group_names)))
-    reg%groups = group_names
-    reg%repeatable = .false.
+    integer :: ig
+    reg = new_deck_registry(input_vars, group_names, [(.false., ig = 1, size(group_names))])
   end function run_deck_registry
+
+  !> A registry of the table `vars` whose entries name their group by its index in `groups`; the
+  !! other settings (numbered, limits) keep their defaults.
+  function new_deck_registry(vars, groups, repeatable) result(reg)
+    type(input_var_t), intent(in) :: vars(:)     !! the entries, in deck order [-]
+    character(len=*), intent(in) :: groups(:)    !! group names, in deck order [-]
+    logical, intent(in) :: repeatable(:)         !! per group: may be given more than once [-]
+    type(deck_registry_t) :: reg                 !! the registry [-]
+    allocate (reg%vars(size(vars)), reg%groups(size(groups)), reg%repeatable(size(groups)))
+    reg%vars = vars
+    reg%groups = groups
+    reg%repeatable = repeatable
+  end function new_deck_registry
 
   !> Called by the reader when group `ig` starts (its `instance`-th time in the deck), before its items.
   subroutine begin_group(this, ig, instance)

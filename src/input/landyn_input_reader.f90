@@ -9,12 +9,15 @@
 !! One reader for every kind of deck: read_deck takes a registry instance (landyn_deck_registry's
 !! deck_registry_t: the groups and their entries) and a target (deck_target_t: where the values
 !! go). parse_deck reads a run deck (the registry of landyn_input_registry into landyn_input_t);
-!! landyn_study_deck reads study decks with its own table. A group marked repeatable may be given
-!! more than once; its messages then name it with its number ('&variant 2: ...').
+!! landyn_study_deck and landyn_campaign_table read study and campaign decks with their own tables.
+!! A group marked repeatable may be given more than once; its messages then name it with its number
+!! ('&variant 2: ...') unless the registry is not `numbered` (campaign decks: '&parameter: ...'). The
+!! registry also sets the limits of numbers (`max_exponent` before reading, `max_magnitude` after).
 !!
 !! Library code: nothing here stops or prints.
 module landyn_input_reader
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_errors, only: input_errors_t
   use landyn_config, only: landyn_input_t, unset_real, is_set, path_len
@@ -22,8 +25,9 @@ module landyn_input_reader
                             quoted => quote_text
   use landyn_namelist_text, only: strip_comments, next_group, find_item_names, line_of, first_nonblank, &
                                   one_line => one_line_text, strip_commas => separators_to_blanks, &
-                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within, leading_text
-  use landyn_input_registry, only: input_var_t, k_int, k_logical, k_string
+                                  remove_blanks, mask_non_ascii, bare_name_in_value, numbers_within, leading_text, &
+                                  without_trailing_separators, shortened
+  use landyn_input_registry, only: input_var_t, k_int, k_logical, k_string, k_int64
   use landyn_input_access, only: input_value_t, access_var
   use landyn_deck_registry, only: deck_registry_t, deck_target_t, run_deck_registry
   use landyn_input_format, only: deg_to_rad
@@ -40,8 +44,6 @@ module landyn_input_reader
   end type run_target_t
 
   integer, parameter :: ios_implausible = -12345    !! our own iostat: non-finite or absurdly large value
-  real(wp), parameter :: max_magnitude = 1.0e30_wp  !! largest accepted |value| of a real input [any unit]
-  integer, parameter :: max_decimal_exponent = 300  !! numbers beyond 1e300 are rejected before reading
   integer, parameter :: snippet_len = 100           !! longest deck excerpt quoted in a message [-]
   integer, parameter :: key_len = 128               !! longest variable reference compared for duplicates [-]
 
@@ -124,9 +126,10 @@ contains
         seen(ig) = line
         times(ig) = times(ig) + 1
         glabel = gname
-        if (reg%repeatable(ig)) glabel = gname//' '//fmt_int(times(ig))
+        if (reg%repeatable(ig) .and. reg%numbered) glabel = gname//' '//fmt_int(times(ig))
         if (.not. terminated) call errors%add(loc(deck_name, work, p)//'&'//glabel// &
                                               ": group is not terminated by '/'")
+        target%line = line
         call target%begin_group(ig, times(ig))
         call read_group(reg, ig, glabel, work, q, e - 1, deck_name, target, errors)
       end if
@@ -204,17 +207,17 @@ contains
                         fmt_int(string_limit(reg%vars(iv), iv, target))//' characters')
         cycle
       end if
-      ok = numbers_within(value, max_decimal_exponent)
+      ok = numbers_within(value, reg%max_exponent)
       if (.not. ok) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
-                        snippet(value)//' is out of range; valid: |value| <= 1e30')
+                        snippet(value)//' is out of range; valid: '//trim(reg%limit_text))
         cycle
       end if
       msg = ''
-      call read_item(reg%vars(iv), iv, item, len(base), target, ios, msg)
+      call read_item(reg%vars(iv), iv, item, len(base), reg%max_magnitude, target, ios, msg)
       if (ios == ios_implausible) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': '//lhs//' = '// &
-                        snippet(value)//' is invalid; valid: finite numbers with |value| <= 1e30')
+                        snippet(value)//' is invalid; valid: finite numbers with '//trim(reg%limit_text))
       else if (ios /= 0) then
         call errors%add(loc(deck_name, work, starts(k))//'&'//gname//': cannot read '//lhs//' = '// &
                         quoted(snippet_raw(value))//' ('//trim(base)//' takes '//trim(reg%vars(iv)%takes)// &
@@ -288,11 +291,12 @@ contains
   !> Read one item into entry iv of `target`: `item` starts with the variable name (nbase characters),
   !! the rest is the subscript and `= value`. The name is replaced by a scratch variable of the
   !! entry's class and shape, read as a one-item namelist record; iomsg names the variable again.
-  subroutine read_item(e, iv, item, nbase, target, ios, msg)
+  subroutine read_item(e, iv, item, nbase, max_magnitude, target, ios, msg)
     type(input_var_t), intent(in) :: e             !! registry entry [-]
     integer, intent(in) :: iv                      !! its index [-]
     character(len=*), intent(in) :: item           !! 'name(sub) = value' as given [-]
     integer, intent(in) :: nbase                   !! length of the name at the start of item [-]
+    real(wp), intent(in) :: max_magnitude          !! largest |value| of a real [any unit]
     class(deck_target_t), intent(inout) :: target  !! updated only when the read succeeds [-]
     integer, intent(out) :: ios                    !! 0, a Fortran iostat, or ios_implausible [-]
     character(len=*), intent(inout) :: msg         !! iomsg of a failed read [-]
@@ -300,6 +304,7 @@ contains
     real(wp) :: lv_real
     real(wp), allocatable :: lv_reals(:), lv_matrix(:, :)
     integer :: lv_int
+    integer(int64) :: lv_int64
     integer, allocatable :: lv_ints(:)
     logical :: lv_logical
     character(len=path_len) :: lv_string
@@ -309,6 +314,7 @@ contains
     namelist /nl_reals/ lv_reals
     namelist /nl_matrix/ lv_matrix
     namelist /nl_int/ lv_int
+    namelist /nl_int64/ lv_int64
     namelist /nl_ints/ lv_ints
     namelist /nl_logical/ lv_logical
     namelist /nl_string/ lv_string
@@ -341,6 +347,10 @@ contains
       lv_strings = v%sa
       read (buffer, nml=nl_strings, iostat=ios, iomsg=msg)
       v%sa = lv_strings
+    case ('int64')   ! (the campaign's seed)
+      lv_int64 = v%i8
+      read (buffer, nml=nl_int64, iostat=ios, iomsg=msg)
+      v%i8 = lv_int64
     case default
       call read_reals()
     end select
@@ -369,7 +379,7 @@ contains
         x = [lv_real]
       end if
       if (ios /= 0) return
-      if (.not. plausible(x)) then
+      if (.not. plausible(x, max_magnitude)) then
         ios = ios_implausible
         return
       end if
@@ -385,11 +395,13 @@ contains
   !! same word (one group per class and shape, so an item can name no other scratch variable).
   pure function scratch_class(e) result(s)
     type(input_var_t), intent(in) :: e   !! registry entry [-]
-    character(len=:), allocatable :: s   !! 'int', 'ints', 'logical', 'string', 'strings', 'matrix', 'reals' or 'real' [-]
+    character(len=:), allocatable :: s   !! 'int', 'ints', 'int64', 'logical', 'string', 'strings', 'matrix', 'reals', 'real' [-]
     select case (e%kind)
     case (k_int)
       s = 'int'
       if (e%n1 > 0) s = 'ints'
+    case (k_int64)
+      s = 'int64'
     case (k_logical)
       s = 'logical'
     case (k_string)
@@ -420,9 +432,10 @@ contains
   end function renamed
 
   !> True when every set value is finite with |x| <= max_magnitude (unset markers are skipped).
-  pure function plausible(x) result(ok)
-    real(wp), intent(in) :: x(:)  !! values [any unit]
-    logical :: ok                 !! all plausible [-]
+  pure function plausible(x, max_magnitude) result(ok)
+    real(wp), intent(in) :: x(:)            !! values [any unit]
+    real(wp), intent(in) :: max_magnitude   !! largest |value| accepted [any unit]
+    logical :: ok                           !! all plausible [-]
     integer :: i
     ok = .true.
     do i = 1, size(x)
@@ -453,8 +466,7 @@ contains
   pure function snippet(t) result(s)
     character(len=*), intent(in) :: t   !! text [-]
     character(len=:), allocatable :: s  !! excerpt [-]
-    s = snippet_raw(t)
-    if (len(s) > snippet_len) s = s(1:snippet_len - 3)//'...'
+    s = shortened(snippet_raw(t), snippet_len)
   end function snippet
 
   !> The text of a deck fragment on one line: blanks collapsed, trailing commas dropped.
@@ -481,15 +493,7 @@ contains
         prev_blank = .false.
       end if
     end do
-    do while (n > 0)
-      if (buf(n:n) /= ' ' .and. buf(n:n) /= ',') exit
-      n = n - 1
-    end do
-    if (n > 4*snippet_len) then
-      s = buf(1:4*snippet_len - 3)//'...'
-    else
-      s = buf(1:n)
-    end if
+    s = shortened(without_trailing_separators(buf(1:n)), 4*snippet_len)
   end function snippet_raw
 
 end module landyn_input_reader

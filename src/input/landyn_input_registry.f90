@@ -20,6 +20,7 @@ module landyn_input_registry
   private
 
   public :: input_var_t, input_vars, n_groups, group_names, group_components, group_docs, k_real, k_int, k_logical, k_string
+  public :: k_int64
   public :: g_simulation, g_contact
   public :: group_index, var_index, unit_text, group_list, group_hint, var_hint, range_text, closest_name
   public :: table_group_index, table_var_index, entry_unit_text, table_group_list, table_group_hint, table_var_hint
@@ -52,12 +53,13 @@ module landyn_input_registry
     '&output: result file and sampling.']
 
   integer, parameter :: k_real = 1, k_int = 2, k_logical = 3, k_string = 4  !! storage classes [-]
+  integer, parameter :: k_int64 = 5   !! 64-bit integer scalar (campaign seeds; no run-deck variable has it) [-]
 
   !> One run-deck variable.
   type :: input_var_t
     integer :: group = 0                !! group index [-]
     character(len=24) :: name = ''      !! namelist variable name [-]
-    integer :: kind = k_real            !! storage class: k_real, k_int, k_logical or k_string [-]
+    integer :: kind = k_real            !! storage class: k_real, k_int, k_logical, k_string or k_int64 [-]
     character(len=56) :: default = ''   !! the component's Fortran initialiser, in storage units (radians) [-]
     character(len=16) :: length = ''    !! k_string only: the component's length (a number or a limit's name) [-]
     integer :: n1 = 0                   !! first extent (0: scalar) [-]

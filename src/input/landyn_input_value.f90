@@ -3,6 +3,7 @@
 !! (landyn_input_access, written from the registry by landyn_input_codegen) calls `move` once
 !! per entry. Values are in STORAGE units (angles in radians).
 module landyn_input_value
+  use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_input_limits, only: path_len
   implicit none
@@ -14,6 +15,7 @@ module landyn_input_value
   type :: input_value_t
     real(wp), allocatable :: r(:)          !! real values, column-major [storage unit]
     integer :: i = 0                       !! integer value [-]
+    integer(int64) :: i8 = 0               !! 64-bit integer value [-]
     logical :: l = .false.                 !! logical value [-]
     character(len=:), allocatable :: s     !! string value (blank-padded as stored) [-]
     integer, allocatable :: ia(:)          !! integer values of an integer array [-]

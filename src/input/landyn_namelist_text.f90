@@ -1,5 +1,5 @@
-!> Namelist text splitting shared by the run-deck reader (landyn_input) and the campaign reader
-!! (landyn_campaign_nml): comment stripping, quote-aware scanning for groups and their ends,
+!> Namelist text splitting shared by the deck reader (landyn_input_reader) and the item splitter
+!! (landyn_namelist_items): comment stripping, quote-aware scanning for groups and their ends,
 !! finding the `name =` of each item, and the small position/blank helpers they need.
 !! Rules as in docs/input/README.md: `!` starts a comment outside quotes, a group is `&name ... /`
 !! (or `... &end`), items are `name = value` separated by commas, blanks or line ends.
@@ -12,7 +12,7 @@ module landyn_namelist_text
 
   public :: strip_comments, find_item_names
   public :: next_group
-  public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks
+  public :: line_of, first_nonblank, one_line_text, separators_to_blanks, remove_blanks, without_trailing_separators, shortened
   public :: mask_non_ascii, bare_name_in_value, numbers_within, has_nonfinite_word, leading_text
 
 contains
@@ -272,6 +272,31 @@ contains
       if (is_blank_char(s(i:i))) s(i:i) = ' '
     end do
   end function one_line_text
+
+  !> t, or its first n - 3 characters and '...' when it is longer than n (an excerpt in a message).
+  pure function shortened(t, n) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    integer, intent(in) :: n            !! longest result [characters]
+    character(len=:), allocatable :: s  !! t, shortened to n characters [-]
+    if (len(t) > n) then
+      s = t(1:n - 3)//'...'
+    else
+      s = t
+    end if
+  end function shortened
+
+  !> t without its trailing blanks and commas.
+  pure function without_trailing_separators(t) result(s)
+    character(len=*), intent(in) :: t   !! text [-]
+    character(len=:), allocatable :: s  !! t up to its last character that is neither ' ' nor ',' [-]
+    integer :: n
+    n = len(t)
+    do while (n > 0)
+      if (t(n:n) /= ' ' .and. t(n:n) /= ',') exit
+      n = n - 1
+    end do
+    s = t(1:n)
+  end function without_trailing_separators
 
   !> The text on one line with commas and blank characters made spaces.
   pure function separators_to_blanks(t) result(s)

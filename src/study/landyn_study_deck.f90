@@ -9,7 +9,7 @@ module landyn_study_deck
   use landyn_input_limits, only: path_len
   use landyn_input_registry, only: input_var_t, k_int, k_logical, k_string
   use landyn_input_value, only: input_value_t, move
-  use landyn_deck_registry, only: deck_registry_t, deck_target_t
+  use landyn_deck_registry, only: deck_registry_t, deck_target_t, new_deck_registry
   use landyn_input_reader, only: read_deck
   use landyn_errors, only: input_errors_t
   implicit none
@@ -87,12 +87,7 @@ contains
   !> The study-deck registry: groups &study (once) and &variant (repeatable).
   function study_registry() result(reg)
     type(deck_registry_t) :: reg  !! the registry [-]
-    allocate (reg%vars(size(study_vars)))
-    reg%vars = study_vars
-    allocate (reg%groups(2), reg%repeatable(2))
-    reg%groups(g_study) = 'study'
-    reg%groups(g_variant) = 'variant'
-    reg%repeatable = [.false., .true.]
+    reg = new_deck_registry(study_vars, [character(len=8) :: 'study', 'variant'], [.false., .true.])
   end function study_registry
 
   !> Read the study deck `text` (named `path` in messages) into `deck`; problems are appended to `errors`.

@@ -340,14 +340,14 @@ def t_batch_misuse(x, d):
         write(d, "c.nml", b + "\n&parameter name = 'initial_state%velocity(1)', values = 0.0 /\n")
         rc, out, err = run(B, ["--check", "c.nml"], d)
         expect(rc, 2, b, err)
-    mc = ["lo = -1e308, hi = 1e308", "sd = 1e308", "weights = 3*1e308"]
+    mc = ["sd = 1, lo = -1e308, hi = 1e308", "sd = 1e308", "sd = 1, weights = 3*1e308"]
     for m in mc:
         write(d, "c.nml", "&campaign base_deck = 'empty.nml', mode = 'monte_carlo', n_samples = 2 /\n"
                           "&parameter name = 'initial_state%%velocity(1)', distribution = 'normal', mean = 0, "
-                          "sd = 1, %s /\n" % m)
+                          "%s /\n" % m)
         rc, out, err = run(B, ["--check", "c.nml"], d)
         expect(rc, 2, "&parameter " + m, err)
-        check("is invalid" in err, "&parameter %s: reported as invalid" % m)
+        check("is out of range; valid: |value| < 1e31" in err, "&parameter %s: reported as out of range" % m)
     write(d, "c.nml", "&campaign base_deck = 'empty.nml', mode = 'grid' /\n"
                       "&parameter name = 'initial_state%velocity(1)', start = -1e308, stop = 1e308, count = 3 /\n"
                       "&criteria min_stroke_margin = -1e400 /\n")
