@@ -47,21 +47,21 @@ contains
     end do
     cap = 0.0_wp
     if (allocated(res%stroke_capacity)) cap = res%stroke_capacity
-    call schema_write(f, '/model/n_gears', ng, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/n_struts', res%n_struts, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/strut_names', names, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/mass_centre', inp%lander%mass_centre, 'm', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/gear_axes', res%gear_rot, '-', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/n_gears', ng, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/n_struts', res%n_struts, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/strut_names', names, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/mass_centre', inp%lander%mass_centre, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/gear_axes', res%gear_rot, stat, errmsg); if (stat /= 0) return
     call write_joints(f, inp, ng, ns, stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/stroke_capacity', cap, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/stroke_capacity', cap, stat, errmsg); if (stat /= 0) return
     j = max(0, min(inp%primary%n_stages, size(inp%primary%stage_end)))
-    call schema_write(f, '/model/primary_stage_end', inp%primary%stage_end(1:j), 'm', stat, errmsg)
+    call schema_write(f, '/model/primary_stage_end', inp%primary%stage_end(1:j), stat, errmsg)
     if (stat /= 0) return
-    call schema_write(f, '/model/terrain/height', inp%terrain%height(1:ng), 'm', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/terrain/slope', inp%terrain%slope(1:ng)*rad2deg, 'deg', stat, errmsg)
+    call schema_write(f, '/model/terrain/height', inp%terrain%height(1:ng), stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/terrain/slope', inp%terrain%slope(1:ng)*rad2deg, stat, errmsg)
     if (stat /= 0) return
-    call schema_write(f, '/model/terrain/slope_direction', inp%terrain%slope_direction(1:ng)*rad2deg, 'deg', &
-                      stat, errmsg)
+    call schema_write(f, '/model/terrain/slope_direction', inp%terrain%slope_direction(1:ng)*rad2deg, &
+stat, errmsg)
     if (stat /= 0) return
     call write_crush_levels(f, inp, ng, stat, errmsg); if (stat /= 0) return
     call write_conditions(f, inp, stat, errmsg)
@@ -102,10 +102,10 @@ contains
         m = m + n
       end do
     end do
-    call schema_write(f, '/model/crush_levels/gear', gear_of, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/strut', strut_of, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/force', f_all, 'N', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/name', n_all, '-', stat, errmsg)
+    call schema_write(f, '/model/crush_levels/gear', gear_of, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/strut', strut_of, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/force', f_all, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/name', n_all, stat, errmsg)
   end subroutine write_crush_levels
 
   !> The run's conditions: mass, gravity, friction coefficients and the touchdown state.
@@ -114,16 +114,16 @@ contains
     type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
     integer, intent(out) :: stat                   !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
-    call schema_write(f, '/model/mass', inp%lander%mass, 'kg', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/gravity', inp%simulation%gravity, 'm/s^2', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/friction/mu_static', inp%friction%mu_static, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/friction/mu_dynamic', inp%friction%mu_dynamic, '-', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/touchdown/velocity', inp%initial%velocity, 'm/s', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/touchdown/attitude', inp%initial%attitude*rad2deg, 'deg', stat, errmsg)
+    call schema_write(f, '/model/mass', inp%lander%mass, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/gravity', inp%simulation%gravity, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/friction/mu_static', inp%friction%mu_static, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/friction/mu_dynamic', inp%friction%mu_dynamic, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/touchdown/velocity', inp%initial%velocity, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/touchdown/attitude', inp%initial%attitude*rad2deg, stat, errmsg)
     if (stat /= 0) return
-    call schema_write(f, '/model/touchdown/angular_rate', inp%initial%angular_rate*rad2deg, 'deg/s', stat, errmsg)
+    call schema_write(f, '/model/touchdown/angular_rate', inp%initial%angular_rate*rad2deg, stat, errmsg)
     if (stat /= 0) return
-    call schema_write(f, '/model/touchdown/clearance', inp%initial%clearance, 'm', stat, errmsg)
+    call schema_write(f, '/model/touchdown/clearance', inp%initial%clearance, stat, errmsg)
   end subroutine write_conditions
 
   !> /model/upper_joint, lower_joint and strut_frame: the tripods' hard points and the struts'
@@ -170,10 +170,10 @@ contains
         frame(:, k, i, :) = r0(:, :, k)
       end do
     end do
-    call schema_write(f, '/model/upper_joint', upper, 'm', stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/lower_joint', lower, 'm', stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/upper_joint', upper, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/lower_joint', lower, stat, errmsg); if (stat /= 0) return
     do k = 1, 3
-      call schema_write(f, '/model/strut_frame/'//axis_names(k), frame(:, :, :, k), '-', stat, errmsg)
+      call schema_write(f, '/model/strut_frame/'//axis_names(k), frame(:, :, :, k), stat, errmsg)
       if (stat /= 0) return
     end do
   end subroutine write_joints

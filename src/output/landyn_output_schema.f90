@@ -1,7 +1,7 @@
 !> The result file's schema declared once (docs/output.md): every dataset's path, units, shape,
 !! kind and meaning, in one table. The writer (landyn_schema_write, used by landyn_output and
-!! landyn_provenance's callers) refuses a dataset that is not in the table or whose units, kind or
-!! rank differ; `landyn_schema` prints the table as a JSON manifest, which landyn_post reads
+!! landyn_provenance's callers) takes the units from the table and refuses a dataset that is not
+!! in the table or whose kind or rank differ; `landyn_schema` prints the table as a JSON manifest, which landyn_post reads
 !! (post/landyn_post/data/output_schema.json, checked against the build by CTest
 !! `output_schema_manifest`) and which docs/output.md's dataset tables are checked against
 !! (CTest `output_schema_docs`).
