@@ -98,7 +98,7 @@ stat, errmsg)
         gear_of = [gear_of(1:m), spread(i - 1, 1, n)]
         strut_of = [strut_of(1:m), spread(k - 1, 1, n)]
         f_all = [f_all(1:m), force(1:n)]
-        n_all = [n_all(1:m), name(1:n)]
+        n_all = [character(len=len(n_all)) :: n_all(1:m), name(1:n)]
         m = m + n
       end do
     end do
