@@ -2,7 +2,7 @@
 
 ``data/table2_load_cases.csv`` (Table 2, the load cases) and ``data/table3_crush_lengths.csv``
 (Table 3, crush lengths of the theory and MSC Adams models, mm). ``load_case_of(res)`` tells
-which of the paper's load cases a result was run for, from its resolved input (touchdown
+which of the paper's load cases a result was run for, from its touchdown conditions (/model:
 velocity, yaw, slope) -- not from its title -- and ``table3(load_case, column)`` gives the
 crush lengths per measure.
 """
@@ -42,11 +42,43 @@ def table3(load_case: str, column: str = "theory") -> dict[int, float]:
 
 
 def touchdown_conditions(res: Result) -> dict[str, float]:
-    """Touchdown conditions from /meta/resolved_input: vertical and horizontal speed (m/s),
-    horizontal direction (deg from +x), yaw/pitch/roll (deg), slope under footpad 1 (deg) and its
-    uphill azimuth (deg), friction coefficients, mass (kg), gravity (m/s^2). Missing values: NaN."""
-    d = res.deck
+    """Touchdown conditions: vertical and horizontal speed (m/s), horizontal direction (deg from
+    +x), yaw/pitch/roll (deg), slope under footpad 1 (deg) and its uphill azimuth (deg), whether
+    every footpad has that plane (slope_uniform, 1.0 or 0.0), friction coefficients, mass (kg),
+    gravity (m/s^2), clearance (m).
+
+    From /model (schema 1.5: /model/touchdown, /model/friction, /model/mass, /model/gravity,
+    /model/terrain). A file older than 1.5 lacks them: see _touchdown_from_deck, the deck fallback.
+    """
+    if not res.has_model_since("1.5"):
+        return _touchdown_from_deck(res)
+    att = res.model("touchdown/attitude")
+    ter = res.terrain()
+    return _conditions(res.model("touchdown/velocity"), att, ter[:, 1], ter[:, 2], {
+        "mu_static": float(res.model("friction/mu_static")), "mu_dynamic": float(res.model("friction/mu_dynamic")),
+        "mass": float(res.model("mass")), "gravity": float(res.model("gravity")),
+        "clearance": float(res.model("touchdown/clearance"))})
+
+
+def _conditions(v, att, slope, sdir, scalars: dict[str, float]) -> dict[str, float]:
+    """touchdown_conditions' dictionary from the velocity (3,), attitude (3,), slopes and uphill
+    azimuths per footpad (g,) and the scalar conditions."""
     out: dict[str, float] = {}
+    out["v_vertical"] = float(v[2])
+    out["v_horizontal"] = float(math.hypot(v[0], v[1]))
+    out["v_direction"] = float(math.degrees(math.atan2(v[1], v[0]))) if out["v_horizontal"] > 0 else 0.0
+    out["yaw"], out["pitch"], out["roll"] = (float(a) for a in att)
+    out["slope"] = float(slope[0])
+    out["slope_direction"] = float(sdir[0])
+    out["slope_uniform"] = float(np.allclose(slope, slope[0]) and np.allclose(sdir, sdir[0]))
+    out.update(scalars)
+    return out
+
+
+def _touchdown_from_deck(res: Result) -> dict[str, float]:
+    """Deck fallback of touchdown_conditions for files older than schema 1.5 (no /model/touchdown):
+    the conditions read from /meta/resolved_input; a value the deck lacks is NaN."""
+    d = res.deck
 
     def num(group, name, shape=None, fill=math.nan):
         try:
@@ -56,24 +88,12 @@ def touchdown_conditions(res: Result) -> dict[str, float]:
         except Exception:  # noqa: BLE001 - a value the deck lacks is reported as NaN
             return math.nan if shape is None else np.full(shape, math.nan)
 
-    v = num("initial_state", "velocity", (3,))
-    att = num("initial_state", "attitude", (3,))
-    out["v_vertical"] = float(v[2])
-    out["v_horizontal"] = float(math.hypot(v[0], v[1]))
-    out["v_direction"] = float(math.degrees(math.atan2(v[1], v[0]))) if out["v_horizontal"] > 0 else 0.0
-    out["yaw"], out["pitch"], out["roll"] = (float(a) for a in att)
     g = res.n_gears
-    slope = num("terrain", "slope", (g,), fill=0.0)
-    sdir = num("terrain", "slope_direction", (g,), fill=0.0)
-    out["slope"] = float(slope[0])
-    out["slope_direction"] = float(sdir[0])
-    out["slope_uniform"] = float(np.allclose(slope, slope[0]) and np.allclose(sdir, sdir[0]))
-    out["mu_static"] = num("friction", "mu_static")
-    out["mu_dynamic"] = num("friction", "mu_dynamic")
-    out["mass"] = num("lander", "mass")
-    out["gravity"] = num("simulation", "gravity")
-    out["clearance"] = num("initial_state", "clearance")
-    return out
+    return _conditions(num("initial_state", "velocity", (3,)), num("initial_state", "attitude", (3,)),
+                       num("terrain", "slope", (g,), fill=0.0), num("terrain", "slope_direction", (g,), fill=0.0),
+                       {"mu_static": num("friction", "mu_static"), "mu_dynamic": num("friction", "mu_dynamic"),
+                        "mass": num("lander", "mass"), "gravity": num("simulation", "gravity"),
+                        "clearance": num("initial_state", "clearance")})
 
 
 def load_case_of(res: Result) -> str | None:

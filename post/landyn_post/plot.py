@@ -293,18 +293,16 @@ def fig_strut_forces(res: Result, opts: PlotOptions | None = None):
 
 
 def _crush_levels(res: Result) -> dict[str, list[tuple[float, str]]]:
-    """Honeycomb levels (N, signed as the axial force: compression +) from the resolved input."""
-    out = {"primary": [], "secondary": []}
-    try:
-        d = res.deck
-        n = int(d.get("primary_strut", "n_stages"))
-        for k, f in enumerate(d.array("primary_strut", "stage_force", (n,))):
-            out["primary"].append((float(f), f"stage {k + 1} {f * KN:.0f} kN"))
-        fl = float(d.get("secondary_strut", "force_lengthening"))
-        fsh = float(d.get("secondary_strut", "force_shortening"))
-        out["secondary"] = [(-fl, f"lengthening {fl * KN:.0f} kN"), (fsh, f"shortening {fsh * KN:.0f} kN")]
-    except Exception:  # noqa: BLE001 - the levels are decoration; a deck without them draws none
-        pass
+    """Crush levels to draw (N, signed as the axial force: compression +, with their labels): the
+    primary panel's from strut 0, the secondary panel's from the others, each level once
+    (Result.crush_levels: /model/crush_levels, the resolved input for a file older than 1.5)."""
+    out: dict[str, list[tuple[float, str]]] = {"primary": [], "secondary": []}
+    seen: set[tuple[str, float, str]] = set()
+    for _, k, f, name in res.crush_levels():
+        panel = "primary" if k == 0 else "secondary"
+        if (panel, f, name) not in seen:
+            seen.add((panel, f, name))
+            out[panel].append((f, f"{name} {abs(f) * KN:.0f} kN"))
     return out
 
 

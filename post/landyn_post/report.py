@@ -65,7 +65,7 @@ def footpad_peak_notes(res: Result) -> list[str]:
 
 
 def touchdown_lines(res: Result) -> list[str]:
-    """Touchdown conditions from /meta/resolved_input: velocity, attitude, slope, friction, mass."""
+    """Touchdown conditions (paper.touchdown_conditions: /model): velocity, attitude, slope, friction, mass."""
     from .paper import load_case_of, touchdown_conditions
     c = touchdown_conditions(res)
     lc = load_case_of(res)

@@ -78,7 +78,7 @@ class DatasetSpec:
     """One dataset of the schema (one entry of the manifest).
 
     shape uses symbols: ``n`` output samples, ``g`` gears, ``s`` struts per gear, ``m`` rows of
-    /api/inputs, ``k`` primary honeycomb stages, integers for fixed lengths.
+    /api/inputs, ``k`` primary honeycomb stages, ``l`` crush levels, integers for fixed lengths.
     kind is ``real``, ``int``, ``bool`` (int 0/1 with attribute type=logical) or ``text``.
     components labels the last axis (vectors) where it has a meaning; STRUTS for strut axes.
     written is ``always``, ``with health`` or ``api inputs`` (only in C API files with inputs).
@@ -347,6 +347,25 @@ class Result:
         return np.stack([np.asarray(self.model("terrain/" + k), dtype=float)
                          for k in ("height", "slope", "slope_direction")], axis=1)
 
+    def has_model_since(self, version: str) -> bool:
+        """The file's schema is `version` (MAJOR.MINOR) or later: it has the /model datasets that
+        version added."""
+        return self.has_model and _minor(self.schema_version) >= _minor(version)
+
+    def crush_levels(self) -> list[tuple[int, int, float, str]]:
+        """Every strut's crush levels as rows (gear, strut, force, name): gear and strut 0-based,
+        force the axial force at which the strut's buffer crushes (N, compression +, like
+        strut_force), name what the level is ('stage 1', 'lengthening', ...).
+
+        From /model/crush_levels (schema 1.5: the buffer laws report them). A file older than 1.5
+        lacks them: see _crush_levels_from_deck, the deck fallback.
+        """
+        if not self.has_model_since("1.5"):
+            return _crush_levels_from_deck(self)
+        return [(int(i), int(k), float(f), str(n)) for i, k, f, n in
+                zip(self.model("crush_levels/gear"), self.model("crush_levels/strut"),
+                    self.model("crush_levels/force"), self.model("crush_levels/name"))]
+
     # -- channels
     def channel(self, text: str) -> Channel:
         """A scalar time history from a spec such as ``stroke[gear=1,strut=primary]``,
@@ -481,6 +500,27 @@ def _text(v) -> str:
     return str(v).rstrip("\x00 ")
 
 
+def _crush_levels_from_deck(res: Result) -> list[tuple[int, int, float, str]]:
+    """Deck fallback of Result.crush_levels for files older than schema 1.5 (no
+    /model/crush_levels): the honeycomb laws' levels re-derived from /meta/resolved_input
+    (&primary_strut stage_force, &secondary_strut force_lengthening / force_shortening), for a
+    tripod of every gear; empty when the deck lacks them (the levels are decoration)."""
+    rows: list[tuple[int, int, float, str]] = []
+    try:
+        d = res.deck
+        n = int(d.get("primary_strut", "n_stages"))
+        stages = [float(f) for f in d.array("primary_strut", "stage_force", (n,))]
+        fl = float(d.get("secondary_strut", "force_lengthening"))
+        fsh = float(d.get("secondary_strut", "force_shortening"))
+    except Exception:  # noqa: BLE001 - a deck without them draws none
+        return rows
+    for i in range(res.n_gears):
+        rows += [(i, 0, f, f"stage {k + 1}") for k, f in enumerate(stages)]
+        for k in range(1, min(3, res.n_struts)):
+            rows += [(i, k, -fl, "lengthening"), (i, k, fsh, "shortening")]
+    return rows
+
+
 def load(path: str | os.PathLike) -> Result:
     """Reads a LANDYN result file.
 
@@ -567,7 +607,7 @@ def _check_shapes(path: str, data: dict[str, object]) -> None:
             continue
         want = tuple({"n": n, "g": g, "s": ns}.get(s, s) for s in d.shape)
         got = np.shape(data[d.key])
-        free = [isinstance(w, str) for w in want]      # m, k: any length
+        free = [isinstance(w, str) for w in want]      # m, k, l: any length
         if len(got) != len(want) or any(a != b for a, b, x in zip(got, want, free) if not x):
             raise LandynFileError(f"{path}: {d.path} has shape {got}, expected {want} "
                                   f"({', '.join(map(str, d.shape))})")

@@ -72,14 +72,20 @@ def _without(src, dst, *paths):
     return dst
 
 
-def test_capacities_and_terrain_from_model(lc3_short, tmp_path):
-    """Capacities, hard points and terrain come from /model: the deck in /meta is not read."""
-    p = _without(lc3_short, tmp_path / "nodeck.h5", "/meta/resolved_input", "/meta/deck_text")
+def _with_nonsense_deck(src, dst):
+    """A copy of result file src whose /meta deck texts cannot be parsed: what is read from it
+    then comes from /model."""
+    p = _without(src, dst, "/meta/resolved_input", "/meta/deck_text")
     with h5py.File(p, "r+") as f:
         for k in ("resolved_input", "deck_text"):
             f["/meta/" + k] = np.bytes_(b"&nonsense x = /")
             f["/meta/" + k].attrs["units"] = np.bytes_(b"-")
-    r = load(p)
+    return p
+
+
+def test_capacities_and_terrain_from_model(lc3_short, tmp_path):
+    """Capacities, hard points and terrain come from /model: the deck in /meta is not read."""
+    r = load(_with_nonsense_deck(lc3_short, tmp_path / "nodeck.h5"))
     cap = r.strut_capacity()
     np.testing.assert_allclose(cap[:, 0, 0], 0.475)
     assert np.all(np.isnan(cap[:, 0, 1]))
@@ -94,6 +100,54 @@ def test_capacities_and_terrain_from_model(lc3_short, tmp_path):
     np.testing.assert_allclose(np.einsum("gsji,gsjk->gsik", fr, fr), np.broadcast_to(np.eye(3), fr.shape), atol=1e-12)
     z0 = (hp["d"] - hp["a"]) / np.linalg.norm(hp["d"] - hp["a"], axis=1)[:, None]
     np.testing.assert_allclose(fr[:, 0, :, 2], z0, atol=1e-12)
+
+
+#: LC-3's touchdown conditions (input/lc3.nml; yaw from the deck's pitch conversion, within 0.5 deg)
+LC3 = {"v_vertical": 4.0, "v_horizontal": 1.0, "slope": 8.0, "slope_uniform": 1.0, "mu_static": 0.4,
+       "mu_dynamic": 0.4, "mass": 16000.0, "gravity": 1.62}
+
+
+def test_levels_and_touchdown_from_model(lc3_short, tmp_path):
+    """Crush levels and touchdown conditions come from /model (schema 1.5): the deck is not read.
+    The levels are axial forces, compression +: each primary stage +, a secondary's lengthening
+    level -, its shortening level +; the plot's level lines are those."""
+    from landyn_post import paper, plot
+    r = load(_with_nonsense_deck(lc3_short, tmp_path / "nodeck.h5"))
+    rows = r.crush_levels()
+    per_gear = [(0, 78000.0, "stage 1"), (0, 156000.0, "stage 2"), (1, -43000.0, "lengthening"),
+                (1, 30000.0, "shortening"), (2, -43000.0, "lengthening"), (2, 30000.0, "shortening")]
+    assert rows == [(i, k, f, n) for i in range(4) for k, f, n in per_gear]
+    lv = plot._crush_levels(r)
+    assert lv["primary"] == [(78000.0, "stage 1 78 kN"), (156000.0, "stage 2 156 kN")]
+    assert lv["secondary"] == [(-43000.0, "lengthening 43 kN"), (30000.0, "shortening 30 kN")]
+    c = paper.touchdown_conditions(r)
+    for k, v in LC3.items():
+        assert c[k] == pytest.approx(v, abs=1e-9), k
+    assert paper.load_case_of(r) == "LC-3"
+
+
+def test_levels_and_touchdown_deck_fallback(lc3_short, tmp_path):
+    """A file older than schema 1.5 (no /model/crush_levels, /model/touchdown, ...): the same levels
+    and conditions from /meta/resolved_input; with an unreadable deck, no levels, and the conditions
+    raise the reader's error (no load case)."""
+    from landyn_post import paper
+    new = load(lc3_short)
+    added = [d.path for d in DATASETS if d.since == "1.5"]
+    p = _without(lc3_short, tmp_path / "old.h5", *added)
+    with h5py.File(p, "r+") as f:
+        f.attrs["schema_version"] = np.bytes_(b"1.4")
+    old = load(p)
+    assert not old.has_model_since("1.5") and new.has_model_since("1.5")
+    assert old.crush_levels() == new.crush_levels()
+    c_old, c_new = paper.touchdown_conditions(old), paper.touchdown_conditions(new)
+    assert set(c_old) == set(c_new)
+    for k in c_new:
+        assert c_old[k] == pytest.approx(c_new[k], abs=1e-9), k
+    bad = load(_with_nonsense_deck(p, tmp_path / "old_nodeck.h5"))
+    assert bad.crush_levels() == []
+    with pytest.raises(LandynPostError, match="resolved_input cannot be read"):
+        paper.touchdown_conditions(bad)
+    assert paper.load_case_of(bad) is None
 
 
 def test_file_without_model_group(lc3_short, tmp_path):

@@ -398,7 +398,7 @@ contains
     dims(1:min(rank, max_rank)) = d(1:min(rank, max_rank))
   end subroutine query_extent
 
-  !> Finish a dataset read: check `hdferr` and close the dataset.
+  !> Finish a dataset read: check `hdferr` and close the dataset (finish_read).
   subroutine end_read(file, path, dset, hdferr, stat, errmsg)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: path       !! dataset path
@@ -406,18 +406,33 @@ contains
     integer, intent(in) :: hdferr              !! status of the read
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! set on failure
+    call finish_read(file, 'h5_read', 'dataset', 'cannot read the data of', path, dset, hdferr, stat, errmsg)
+  end subroutine end_read
+
+  !> Finish the read of a dataset or attribute `obj` (named `label` in messages): fail when the
+  !! read reported a variable-length string or an error (`hdferr`), then close it.
+  subroutine finish_read(file, op, noun, read_failed, label, obj, hdferr, stat, errmsg)
+    type(h5_file_t), intent(in) :: file        !! open file
+    character(len=*), intent(in) :: op         !! public operation name, for messages [-]
+    character(len=*), intent(in) :: noun       !! 'dataset' or 'attribute' [-]
+    character(len=*), intent(in) :: read_failed  !! message of a failed read [-]
+    character(len=*), intent(in) :: label      !! dataset path or attribute label [-]
+    integer(hid_t), intent(inout) :: obj       !! dataset or attribute; closed on return
+    integer, intent(in) :: hdferr              !! status of the read
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
     logical :: ok
 
     stat = STAT_OK
     if (hdferr == vlen_string) then
-      call fail(stat, errmsg, 'h5_read', 'variable-length strings are not supported, dataset', path, file)
+      call fail(stat, errmsg, op, 'variable-length strings are not supported, '//noun, label, file)
     else if (hdferr < 0) then
-      call fail(stat, errmsg, 'h5_read', 'cannot read the data of', path, file)
+      call fail(stat, errmsg, op, read_failed, label, file)
     end if
     ok = .true.
-    call release(dset, ok)
-    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, 'h5_read', 'cannot close dataset', path, file)
-  end subroutine end_read
+    call release(obj, ok)
+    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, op, 'cannot close '//noun, label, file)
+  end subroutine finish_read
 
   !> Open the group or dataset `obj_path` to write the attribute `name` on it.
   subroutine open_object(file, obj_path, name, obj, stat, errmsg)
@@ -574,7 +589,7 @@ contains
     if (stat /= 0) call release(attr, ok)
   end subroutine open_attribute
 
-  !> Finish an attribute read: check `hdferr` and close the attribute.
+  !> Finish an attribute read: check `hdferr` and close the attribute (finish_read).
   subroutine end_attr_read(file, obj_path, name, attr, hdferr, stat, errmsg)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: obj_path   !! group or dataset path
@@ -583,19 +598,8 @@ contains
     integer, intent(in) :: hdferr              !! status of the read
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! set on failure
-    logical :: ok
-
-    stat = STAT_OK
-    if (hdferr == vlen_string) then
-      call fail(stat, errmsg, 'h5_read_attr', 'variable-length strings are not supported, attribute', &
-        attr_label(obj_path, name), file)
-    else if (hdferr < 0) then
-      call fail(stat, errmsg, 'h5_read_attr', 'cannot read attribute', attr_label(obj_path, name), file)
-    end if
-    ok = .true.
-    call release(attr, ok)
-    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, 'h5_read_attr', 'cannot close attribute', &
-      attr_label(obj_path, name), file)
+    call finish_read(file, 'h5_read_attr', 'attribute', 'cannot read attribute', attr_label(obj_path, name), attr, &
+                     hdferr, stat, errmsg)
   end subroutine end_attr_read
 
   !> 'obj_path@name', how attributes are named in messages.

@@ -37,6 +37,24 @@ contains
 
   ! ============================================================== files
 
+  !> What opening a file on handle `file` begins with (h5_create, h5_open_read): fails when the
+  !! handle is still open, or the HDF5 library cannot be initialised.
+  subroutine begin_open(file, op, path, stat, errmsg)
+    type(h5_file_t), intent(in) :: file        !! the handle, must not be open
+    character(len=*), intent(in) :: op         !! public operation name, for messages [-]
+    character(len=*), intent(in) :: path       !! file name
+    integer, intent(out) :: stat               !! 0 on success
+    character(len=*), intent(inout) :: errmsg  !! set on failure
+    integer :: hdferr
+    stat = STAT_OK
+    if (h5_is_open(file)) then
+      call fail_file(stat, errmsg, op, 'the handle is still open on file', file%path)
+      return
+    end if
+    call init_library(hdferr)
+    if (hdferr < 0) call fail_file(stat, errmsg, op, 'cannot initialise the HDF5 library for file', path)
+  end subroutine begin_open
+
   !> Create (truncate) an HDF5 file for writing; with exclusive = .true., fail instead when a file
   !! (or a link, also a dangling one) of that name exists, so nothing is written through a link.
   subroutine h5_create(file, path, stat, errmsg, exclusive)
@@ -47,16 +65,8 @@ contains
     logical, intent(in), optional :: exclusive !! fail when `path` exists (default .false.) [-]
     integer :: hdferr, mode
 
-    stat = STAT_OK
-    if (h5_is_open(file)) then
-      call fail_file(stat, errmsg, 'h5_create', 'the handle is still open on file', file%path)
-      return
-    end if
-    call init_library(hdferr)
-    if (hdferr < 0) then
-      call fail_file(stat, errmsg, 'h5_create', 'cannot initialise the HDF5 library for file', path)
-      return
-    end if
+    call begin_open(file, 'h5_create', path, stat, errmsg)
+    if (stat /= STAT_OK) return
     mode = H5F_ACC_TRUNC_F
     if (present(exclusive)) then
       if (exclusive) mode = H5F_ACC_EXCL_F
@@ -81,21 +91,13 @@ contains
     integer :: hdferr
     logical :: exists, is_hdf5
 
-    stat = STAT_OK
-    if (h5_is_open(file)) then
-      call fail_file(stat, errmsg, 'h5_open_read', 'the handle is still open on file', file%path)
-      return
-    end if
     inquire(file=trim(path), exist=exists)
-    if (.not. exists) then
+    if (.not. exists .and. .not. h5_is_open(file)) then  ! (begin_open reports a handle still open)
       call fail_file(stat, errmsg, 'h5_open_read', 'no such file', path)
       return
     end if
-    call init_library(hdferr)
-    if (hdferr < 0) then
-      call fail_file(stat, errmsg, 'h5_open_read', 'cannot initialise the HDF5 library for file', path)
-      return
-    end if
+    call begin_open(file, 'h5_open_read', path, stat, errmsg)
+    if (stat /= STAT_OK) return
     call h5fis_hdf5_f(trim(path), is_hdf5, hdferr)
     if (hdferr < 0 .or. .not. is_hdf5) then
       call fail_file(stat, errmsg, 'h5_open_read', 'not an HDF5 file (or not readable):', path)

@@ -141,12 +141,7 @@ contains
     character(len=64) :: b1
 
     if (n < 1 .or. .not. allocated(res%penetration)) return
-    ! (finiteness first: comparing a NaN traps in Debug builds)
-    if (all(ieee_is_finite(res%penetration(1:ng, 1)))) then
-      r = maxval(res%penetration(1:ng, 1))
-    else
-      r = huge(1.0_wp)
-    end if
+    r = extreme(res%penetration(1:ng, 1), largest=.true.)
     if (r > initial_penetration_max) then
       write (b1, '(es10.3)') r
       call put(h, 3, health_fail, 'a footpad starts '//trim(adjustl(b1))//' m below the ground (at most 1 mm): '// &
@@ -167,11 +162,7 @@ contains
     if (n < 1 .or. .not. allocated(res%strut_length)) return
     do ig = 1, ng
       do k = 1, size(res%strut_length, 1)
-        if (all(ieee_is_finite(res%strut_length(k, ig, 1:n)))) then
-          r = minval(res%strut_length(k, ig, 1:n))
-        else
-          r = -huge(1.0_wp)
-        end if
+        r = extreme(res%strut_length(k, ig, 1:n), largest=.false.)
         if (r <= 0.0_wp) then
           write (b1, '(es10.3)') r
           write (b2, '(i0,a,i0)') ig, ', strut ', k
@@ -182,6 +173,19 @@ contains
       end do
     end do
   end subroutine check_strut_lengths
+
+  !> maxval(x) (largest) or minval(x) (not largest), or huge / -huge when x holds a value that is
+  !! not finite: the value a check compares with its threshold, a non-finite one failing it
+  !! (finiteness first: comparing a NaN traps in Debug builds).
+  pure real(wp) function extreme(x, largest) result(r)
+    real(wp), intent(in) :: x(:)               !! values [any unit]
+    logical, intent(in) :: largest             !! the largest (else the smallest) [-]
+    if (all(ieee_is_finite(x))) then
+      r = merge(maxval(x), minval(x), largest)
+    else
+      r = merge(huge(1.0_wp), -huge(1.0_wp), largest)
+    end if
+  end function extreme
 
   !> Check 5: the energy audit's residual.
   subroutine check_energy_residual(res, h)

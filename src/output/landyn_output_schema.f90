@@ -1,14 +1,14 @@
 !> The result file's schema declared once (docs/output.md): every dataset's path, units, shape,
 !! kind and meaning, in one table. The writer (landyn_schema_write, used by landyn_output and
-!! landyn_provenance's callers) refuses a dataset that is not in the table or whose units, kind or
-!! rank differ; `landyn_schema` prints the table as a JSON manifest, which landyn_post reads
+!! landyn_provenance's callers) takes the units from the table and refuses a dataset that is not
+!! in the table or whose kind or rank differ; `landyn_schema` prints the table as a JSON manifest, which landyn_post reads
 !! (post/landyn_post/data/output_schema.json, checked against the build by CTest
 !! `output_schema_manifest`) and which docs/output.md's dataset tables are checked against
 !! (CTest `output_schema_docs`).
 !!
 !! Shapes are written as h5py reads them (C order), comma-separated: `n` output samples, `g` gears,
-!! `s` struts per gear, `m` rows of /api/inputs, `k` primary honeycomb stages, integers for fixed
-!! lengths; '' is a scalar. Fortran writes the reverse: x(3, n) reads as (n, 3).
+!! `s` struts per gear, `m` rows of /api/inputs, `k` primary honeycomb stages, `l` crush levels
+!! of all struts, integers for fixed lengths; '' is a scalar. Fortran writes the reverse: x(3, n) reads as (n, 3).
 module landyn_output_schema
   implicit none
   private
@@ -16,7 +16,7 @@ module landyn_output_schema
   public :: dataset_spec_t, output_datasets, result_schema_version, campaign_schema_version, find_dataset, spec_rank
 
   !> Version of the result-file schema, `MAJOR.MINOR` (docs/output.md, root attribute schema_version).
-  character(len=*), parameter :: result_schema_version = '1.4'
+  character(len=*), parameter :: result_schema_version = '1.5'
   !> Layout of a campaign summary file (docs/campaign.md, root attribute schema_version), defined here
   !! (not in src/campaign, built only with MPI) so that the manifest carries it to landyn_post.
   character(len=*), parameter :: campaign_schema_version = 'landyn-campaign-1.0'
@@ -105,7 +105,36 @@ module landyn_output_schema
     dataset_spec_t('/model/terrain/slope', 'deg', 'g', 'real', '', '1.4', 'always', &
       'its slope angle'), &
     dataset_spec_t('/model/terrain/slope_direction', 'deg', 'g', 'real', '', '1.4', 'always', &
-      'its uphill azimuth, from global +x toward +y')]
+      'its uphill azimuth, from global +x toward +y'), &
+    dataset_spec_t('/model/crush_levels/gear', '-', 'l', 'int', '', '1.5', 'always', &
+      'the table of every strut''s crush levels, one row a level, ordered by gear, strut, level: '// &
+      'the gear of the row, 0-based along the g axes'), &
+    dataset_spec_t('/model/crush_levels/strut', '-', 'l', 'int', '', '1.5', 'always', &
+      'the strut of the row, 0-based along the s axes'), &
+    dataset_spec_t('/model/crush_levels/force', 'N', 'l', 'real', '', '1.5', 'always', &
+      'the level: a constant force at which the strut''s buffer crushes, as an axial force '// &
+      '(compression +, like `strut_force`), reported by its buffer law: each stage of the primary '// &
+      'honeycomb (+), the secondary''s crush force in lengthening (-) and in shortening (+)'), &
+    dataset_spec_t('/model/crush_levels/name', '-', 'l', 'text', '', '1.5', 'always', &
+      'what the level is: `stage 1`, `stage 2`, ... (primary), `lengthening`, `shortening` '// &
+      '(secondaries)'), &
+    dataset_spec_t('/model/mass', 'kg', '', 'real', '', '1.5', 'always', &
+      'total lander mass, legs included (`&lander mass`)'), &
+    dataset_spec_t('/model/gravity', 'm/s^2', '', 'real', '', '1.5', 'always', &
+      'gravitational acceleration along global +z (`&simulation gravity`)'), &
+    dataset_spec_t('/model/friction/mu_static', '-', '', 'real', '', '1.5', 'always', &
+      'static friction coefficient of the footpads (`&friction mu_static`)'), &
+    dataset_spec_t('/model/friction/mu_dynamic', '-', '', 'real', '', '1.5', 'always', &
+      'dynamic friction coefficient (`&friction mu_dynamic`)'), &
+    dataset_spec_t('/model/touchdown/velocity', 'm/s', '3', 'real', 'x,y,z', '1.5', 'always', &
+      'mass-centre velocity at t = 0, global frame, z down (`&initial_state velocity`)'), &
+    dataset_spec_t('/model/touchdown/attitude', 'deg', '3', 'real', 'yaw,pitch,roll', '1.5', 'always', &
+      'Z-Y-X Euler angles yaw, pitch, roll at t = 0 (`&initial_state attitude`)'), &
+    dataset_spec_t('/model/touchdown/angular_rate', 'deg/s', '3', 'real', 'p,q,r', '1.5', 'always', &
+      'body rates p, q, r at t = 0, lander axes (`&initial_state angular_rate`)'), &
+    dataset_spec_t('/model/touchdown/clearance', 'm', '', 'real', '', '1.5', 'always', &
+      'gap of the lowest footpad at t = 0 when `&initial_state position` is not given '// &
+      '(`&initial_state clearance`)')]
 
   !> Datasets of section body.
   type(dataset_spec_t), parameter :: ds_body(*) = [ &

@@ -34,6 +34,7 @@ module landyn_buffer
     procedure(capacity_iface), deferred :: capacity      !! stroke capacity toward +s and -s [m]
     procedure(segment_iface), deferred :: segment        !! piece of the force-stroke curve at s (for event location) [-]
     procedure :: free_range => history_free_range        !! strokes between which the buffer offers no resistance [m]
+    procedure :: crush_levels => initial_crush_levels    !! its constant crush forces, for reports [N]
   end type buffer_law_t
 
   abstract interface
@@ -81,6 +82,7 @@ module landyn_buffer
     procedure :: resistance => primary_resistance  !! stage crush force in shortening, rigid stop in extension [N]
     procedure :: capacity => primary_capacity      !! end of the last stage in shortening, 0 in extension [m]
     procedure :: segment => primary_segment        !! stage number, n_stages + 1 on the stop [-]
+    procedure :: crush_levels => primary_crush_levels  !! stage k's crush force against shortening [N]
   end type primary_honeycomb_t
 
   !> Secondary strut: two-direction honeycomb (eq. 22), levels named by the motion they resist.
@@ -93,6 +95,7 @@ module landyn_buffer
     procedure :: resistance => secondary_resistance  !! crush force in lengthening and in shortening [N]
     procedure :: capacity => secondary_capacity      !! stroke_lengthening and stroke_shortening [m]
     procedure :: segment => secondary_segment        !! 0 within the stroke, +1 / -1 on a stop [-]
+    procedure :: crush_levels => secondary_crush_levels  !! the crush forces against lengthening and shortening [N]
   end type secondary_honeycomb_t
 
 contains
@@ -114,6 +117,77 @@ contains
     lo = lo + history_tol
     hi = s_hismax - history_tol
   end subroutine history_free_range
+
+  !> The law's constant crush forces, what reports draw as its levels: level j is the bound
+  !! force(j) against motion toward +s (toward(j) = +1) or -s (-1), named name(j); the first n are
+  !! set (n <= size(force)). Default: the bounds the law offers at the nominal state (stroke 0,
+  !! nothing crushed, at rest) in each direction where it has a finite, non-zero one, named
+  !! `initial +s`, `initial -s`: the forces at which a strut first gives way.
+  pure subroutine initial_crush_levels(self, force, toward, name, n)
+    class(buffer_law_t), intent(in) :: self     !! the buffer law
+    real(wp), intent(out) :: force(:)           !! crush force of each level, >= 0 [N]
+    integer, intent(out) :: toward(:)           !! +1: it resists motion toward +s, -1 toward -s [-]
+    character(len=*), intent(out) :: name(:)    !! what each level is, e.g. `stage 1` [-]
+    integer, intent(out) :: n                   !! number of levels [-]
+    real(wp) :: f(2)
+    integer :: j
+    character(len=10), parameter :: names(2) = ['initial +s', 'initial -s']
+    force = 0.0_wp
+    toward = 0
+    name = ''
+    n = 0
+    call self%resistance(0.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, f(1), f(2))
+    do j = 1, 2
+      if (f(j) > 0.0_wp .and. f(j) < rigid_force .and. n < min(size(force), size(toward), size(name))) then
+        n = n + 1
+        force(n) = f(j)
+        toward(n) = 3 - 2*j
+        name(n) = names(j)
+      end if
+    end do
+  end subroutine initial_crush_levels
+
+  !> Primary levels: the crush force of each stage (eq. 21) against shortening, `stage 1` ...
+  pure subroutine primary_crush_levels(self, force, toward, name, n)
+    class(primary_honeycomb_t), intent(in) :: self  !! the buffer law
+    real(wp), intent(out) :: force(:)           !! crush force of each stage [N]
+    integer, intent(out) :: toward(:)           !! +1: against shortening [-]
+    character(len=*), intent(out) :: name(:)    !! `stage k` [-]
+    integer, intent(out) :: n                   !! number of stages reported [-]
+    integer :: k
+    force = 0.0_wp
+    toward = 0
+    name = ''
+    n = min(self%n_stages, size(force), size(toward), size(name))
+    do k = 1, n
+      force(k) = self%stage_force(k)
+      toward(k) = 1
+      write (name(k), '(a,i0)') 'stage ', k
+    end do
+  end subroutine primary_crush_levels
+
+  !> Secondary levels (eq. 22): `lengthening` against +s, `shortening` against -s.
+  pure subroutine secondary_crush_levels(self, force, toward, name, n)
+    class(secondary_honeycomb_t), intent(in) :: self  !! the buffer law
+    real(wp), intent(out) :: force(:)           !! crush forces [N]
+    integer, intent(out) :: toward(:)           !! +1 against lengthening, -1 against shortening [-]
+    character(len=*), intent(out) :: name(:)    !! `lengthening`, `shortening` [-]
+    integer, intent(out) :: n                   !! 2, or fewer when the arrays are shorter [-]
+    force = 0.0_wp
+    toward = 0
+    name = ''
+    n = min(2, size(force), size(toward), size(name))
+    if (n >= 1) then
+      force(1) = self%f_lengthening
+      toward(1) = 1
+      name(1) = 'lengthening'
+    end if
+    if (n >= 2) then
+      force(2) = self%f_shortening
+      toward(2) = -1
+      name(2) = 'shortening'
+    end if
+  end subroutine secondary_crush_levels
 
   !> Primary bounds (eq. 21): the current stage's crush force against shortening at the crush front
   !! (plus the stop beyond the last stage), 0 inside the crushed range; rigid against extension at s <= 0.

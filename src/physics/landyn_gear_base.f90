@@ -106,6 +106,7 @@ module landyn_gear_base
     procedure :: crush_history                                         !! most negative and positive strokes reached [m]
     procedure :: crush_work                                            !! energy absorbed by each buffer [J]
     procedure :: buffer_capacity                                       !! stroke capacity of strut k's buffer [m]
+    procedure :: crush_levels                                          !! constant crush forces of strut k's buffer [N]
     procedure :: law_segments                                          !! piece of each buffer law [-]
     procedure :: coordinate_weights                                    !! error-norm weights of the coordinates [-]
     procedure :: prepare                                               !! caches for the next evaluation of a rigid gear
@@ -431,6 +432,21 @@ contains
     cap_pos = merge(huge(1.0_wp), 0.0_wp, k >= 1 .and. k <= gear%strut_count())
     cap_neg = 0.0_wp
   end subroutine buffer_capacity
+
+  !> The constant crush forces of strut k's buffer law as axial forces (compression +), what
+  !! reports draw as its levels (/model/crush_levels): force(j), named name(j), j <= n. Default:
+  !! none (n = 0), a gear type that does not report its buffers' levels.
+  subroutine crush_levels(gear, k, force, name, n)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    integer, intent(in) :: k                    !! strut [-]
+    real(wp), intent(out) :: force(:)           !! axial force of each level, compression + [N]
+    character(len=*), intent(out) :: name(:)    !! what each level is [-]
+    integer, intent(out) :: n                   !! number of levels [-]
+    force = 0.0_wp
+    name = ''
+    n = 0
+    if (k < 1 .or. k > gear%strut_count()) return  ! no strut k: no levels either
+  end subroutine crush_levels
 
   !> The piece of each strut's buffer law at the current strokes (the adaptive integrator bisects
   !! a step in which one changes). Default: 1, one piece.

@@ -180,6 +180,7 @@ module landyn_tripod_gear
     procedure :: crush_history => gear_crush_history                   !! most negative and positive strokes [m]
     procedure :: crush_work => tripod_crush_work                       !! energy absorbed by each buffer [J]
     procedure :: buffer_capacity => gear_buffer_capacity               !! stroke capacity of strut k's buffer [m]
+    procedure :: crush_levels => tripod_crush_levels                   !! strut k's buffer levels, axial [N]
     procedure :: law_segments => gear_law_segments                     !! piece of each buffer law [-]
     procedure :: coordinate_weights => tripod_coordinate_weights       !! error-norm weights of the coordinates [-]
     procedure :: prepare => gear_prepare                               !! caches of a rigid gear
@@ -384,6 +385,16 @@ module landyn_tripod_gear
       real(wp), intent(out) :: cap_pos        !! toward +s [m]
       real(wp), intent(out) :: cap_neg        !! toward -s (0: none) [m]
     end subroutine gear_buffer_capacity
+
+    !> Strut k's crush levels as axial forces, compression + (buffer_law_t%crush_levels, its
+    !! bound toward +s or -s turned into the axial sense by the stroke convention sigma).
+    module subroutine tripod_crush_levels(gear, k, force, name, n)
+      class(tripod_gear_t), intent(in) :: gear        !! gear
+      integer, intent(in) :: k                !! strut [-]
+      real(wp), intent(out) :: force(:)       !! axial force of each level, compression + [N]
+      character(len=*), intent(out) :: name(:) !! what each level is [-]
+      integer, intent(out) :: n               !! number of levels [-]
+    end subroutine tripod_crush_levels
 
     !> Sets strut k's buffer law (before gear_init).
     module subroutine gear_set_buffer(gear, k, law)

@@ -421,4 +421,18 @@ contains
     end select
   end procedure tripod_restore_state
 
+  ! ---- crush levels (reports: /model/crush_levels)
+
+  module procedure tripod_crush_levels
+    integer :: toward(size(force))
+    force = 0.0_wp
+    name = ''
+    n = 0
+    if (k < 1 .or. k > n_struts) return
+    call gear%buffer(k)%law%crush_levels(force, toward, name, n)
+    ! a bound against motion toward +s (toward = +1) resists dL = sigma ds: compression when
+    ! the strut shortens toward +s (sigma = -1), tension when it lengthens
+    force(1:n) = -gear%sigma(k)*real(toward(1:n), wp)*force(1:n)
+  end procedure tripod_crush_levels
+
 end submodule landyn_tripod_setup

@@ -78,7 +78,9 @@ def t_default_run(exe, src, d):
         n = f["timeseries/time"].shape[0]
         check(f["timeseries/gears/stroke"].shape == (n, 4, 3), "stroke time series has shape (n, n_gears, 3)")
         check(f["timeseries/body/overload"].attrs["units"] == b"g", "overload in g")
-        check(f.attrs["schema_version"] == b"1.4", "schema_version attribute (1.4: /model)")
+        check(f.attrs["schema_version"] == b"1.5", "schema_version attribute (1.5: /model/crush_levels, touchdown)")
+        check(f["/model/crush_levels/force"].attrs["units"] == b"N" and f["/model/touchdown/velocity"].shape == (3,),
+              "/model/crush_levels and /model/touchdown are written")
         check("/model/stroke_capacity" in f and f["/model/stroke_capacity"].shape[1:] == (3, 2),
               "/model/stroke_capacity has shape (n_gears, 3, 2)")
 
