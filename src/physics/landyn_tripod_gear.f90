@@ -41,7 +41,7 @@ module landyn_tripod_gear
 
   public :: tripod_gear_t, tripod_init, gear_state_t, gear_eval_t, strut_mass_t, strut_t
   public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy
-  public :: gear_strokes, gear_strut_lengths, gear_rotation, gear_rates, gear_set_rates
+  public :: gear_strokes, gear_strut_lengths, gear_rates, gear_set_rates
   public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
   public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
@@ -136,7 +136,6 @@ module landyn_tripod_gear
   type, extends(gear_base_t) :: tripod_gear_t
     private
     type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
-    real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
     type(strut_t) :: strut(n_struts)              !! primary, left, right: mass models (landyn_strut)
     real(wp) :: leg_mass = 0.0_wp                 !! sum of the strut masses (set by gear_init) [kg]
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
@@ -147,9 +146,6 @@ module landyn_tripod_gear
     type(gear_state_t) :: st                      !! everything that evolves (a snapshot is a copy of it)
   contains
     ! ---- the dynamics (gear_base_t)
-    procedure :: strut_count => tripod_strut_count                     !! three struts [-]
-    procedure :: coordinate_count => tripod_coordinate_count           !! nine generalized coordinates [-]
-    procedure :: rotation => gear_rotation                             !! gear frame -> lander frame rotation [-]
     procedure :: footpad => gear_footpad                               !! footpad position and velocity [m, m/s]
     procedure :: evaluate => gear_evaluate                             !! crush logic and accelerations
     procedure :: commit => gear_commit                                 !! makes an evaluation the committed state
@@ -299,12 +295,6 @@ module landyn_tripod_gear
       real(wp) :: len(n_struts)               !! strut lengths [m]
     end function gear_strut_lengths
 
-
-    !> Gear frame -> lander frame rotation.
-    module pure function gear_rotation(gear) result(rot)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-      real(wp) :: rot(3, 3)                   !! [-]
-    end function gear_rotation
 
     !> Generalized velocities (the stored ones: half a step behind the coordinates in the leapfrog).
     module pure function gear_rates(gear) result(qd)
@@ -761,16 +751,6 @@ module landyn_tripod_gear
       character(len=*), intent(inout) :: errmsg       !! diagnosis on failure
       type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
     end subroutine tripod_init
-
-    !> Three struts (the size of the per-strut arrays).
-    module pure integer function tripod_strut_count(gear) result(n)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-    end function tripod_strut_count
-
-    !> Nine generalized coordinates (the size of q).
-    module pure integer function tripod_coordinate_count(gear) result(n)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-    end function tripod_coordinate_count
 
     !> Primary, secondary left, secondary right (strut_names).
     module pure function tripod_strut_name(gear, k) result(name)

@@ -12,12 +12,12 @@ contains
 
   module procedure gear_init
     integer :: k
-    stat = STAT_OK
+    call gear%set_layout(n_struts, n_q, rot, stat, errmsg)
+    if (stat /= STAT_OK) return
     gear%tube = tube_friction_t()
     if (present(tube)) gear%tube = tube
     gear%st%tube_bound = 0.0_wp
     gear%geom = geom
-    gear%rot = rot
     gear%leg_mass = 0.0_wp
     do k = 1, n_struts
       gear%strut(k) = strut_from_mass(mass(k))
@@ -200,10 +200,6 @@ contains
   end procedure gear_strut_lengths
 
 
-  module procedure gear_rotation
-    rot = gear%rot
-  end procedure gear_rotation
-
   module procedure gear_rates
     qd = gear%st%qd
   end procedure gear_rates
@@ -341,14 +337,6 @@ contains
     end do
     call gear_init(self, geom, rot, mass, stat, errmsg, tube)
   end procedure tripod_init
-
-  module procedure tripod_strut_count
-    n = size(gear%len0)
-  end procedure tripod_strut_count
-
-  module procedure tripod_coordinate_count
-    n = size(gear%st%q)
-  end procedure tripod_coordinate_count
 
   module procedure tripod_strut_name
     name = strut_names(max(1, min(k, size(gear%len0))))
