@@ -113,9 +113,9 @@ module landyn_gear_base
     procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
     procedure :: strut_name                                            !! name of strut k (reports)
     procedure :: strut_modes                                           !! crush mode of each strut [-]
-    procedure :: axial_forces                                          !! axial buffer forces [N]
+    procedure :: axial_forces => not_reported                          !! axial buffer forces [N]
     procedure :: crush_history                                         !! most negative and positive strokes reached [m]
-    procedure :: crush_work                                            !! energy absorbed by each buffer [J]
+    procedure :: crush_work => not_reported                            !! energy absorbed by each buffer [J]
     procedure :: buffer_capacity                                       !! stroke capacity of strut k's buffer [m]
     procedure :: law_segments                                          !! piece of each buffer law [-]
     procedure :: coordinate_weights                                    !! error-norm weights of the coordinates [-]
@@ -437,12 +437,14 @@ contains
     end if
   end subroutine strut_modes
 
-  !> Axial buffer forces of the committed state. Default: 0 (a gear type that does not report them).
-  pure subroutine axial_forces(gear, v)
+  !> Default of the per-strut reports a gear type may not keep, 0 for every strut: axial_forces
+  !! (axial buffer forces of the committed state [N]) and crush_work (energy absorbed by each
+  !! buffer so far [J]).
+  pure subroutine not_reported(gear, v)
     class(gear_base_t), intent(in) :: gear      !! gear
-    real(wp), intent(out) :: v(:)               !! per strut [N]
+    real(wp), intent(out) :: v(:)               !! per strut [N or J]
     v(1:gear%strut_count()) = 0.0_wp
-  end subroutine axial_forces
+  end subroutine not_reported
 
   !> Most negative and most positive stroke reached by each strut. Default: what the present
   !! strokes show (min(0, s), max(0, s)), for a gear type that keeps no history.
@@ -457,13 +459,6 @@ contains
     s_min(1:ns) = min(0.0_wp, s(1:ns))
     s_max(1:ns) = max(0.0_wp, s(1:ns))
   end subroutine crush_history
-
-  !> Energy absorbed by each buffer so far. Default: 0 (a gear type that does not book it).
-  pure subroutine crush_work(gear, v)
-    class(gear_base_t), intent(in) :: gear      !! gear
-    real(wp), intent(out) :: v(:)               !! per strut [J]
-    v(1:gear%strut_count()) = 0.0_wp
-  end subroutine crush_work
 
   !> Stroke capacity of strut k's buffer in each direction. Default: unlimited toward +s, none
   !! toward -s (no stroke margin to report); 0 beyond the gear's struts.
