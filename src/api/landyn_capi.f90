@@ -151,12 +151,8 @@ contains
     integer(c_int) :: rc                           !! status [-]
     type(handle_t), pointer :: h
     real(c_double), pointer :: tp
-    call handle_of(sim, h, rc)
+    call handle_of(sim, h, rc, out=t)
     if (rc /= api_ok) return
-    if (.not. c_associated(t)) then
-      rc = api_err_input
-      return
-    end if
     call c_f_pointer(t, tp)
     tp = real(h%s%t, c_double)
   end function landyn_time
@@ -168,12 +164,8 @@ contains
     integer(c_int) :: rc                           !! status [-]
     type(handle_t), pointer :: h
     integer(c_int), pointer :: np
-    call handle_of(sim, h, rc)
+    call handle_of(sim, h, rc, out=count)
     if (rc /= api_ok) return
-    if (.not. c_associated(count)) then
-      rc = api_err_input
-      return
-    end if
     call c_f_pointer(count, np)
     np = int(size(h%s%outputs), c_int)
   end function landyn_output_count
@@ -244,13 +236,8 @@ contains
     real(c_double), pointer :: vp
     character(len=:), allocatable :: key, closest
     integer :: k
-    call handle_of(sim, h, rc, 'landyn_get_output', msg, msg_len)
+    call handle_of(sim, h, rc, 'landyn_get_output', msg, msg_len, out=value, out_name='value')
     if (rc /= api_ok) return
-    if (.not. c_associated(value)) then
-      rc = api_err_input
-      call put_text('landyn_get_output: value is NULL', msg, msg_len)
-      return
-    end if
     key = c_text(name)
     call session_output_index(h%s, key, k, closest)
     if (k == 0) then
@@ -282,26 +269,36 @@ contains
 
   ! ---------------------------------------------------------------- helpers
 
-  !> The handle behind a C pointer: api_ok and h associated when it is live, else api_err_handle.
-  subroutine handle_of(p, h, rc, caller, msg, msg_len)
+  !> The handle behind a C pointer: api_ok and h associated when it is live, else api_err_handle;
+  !! with `out`, the pointer a call writes its result through, api_err_input (h associated) when
+  !! that is NULL.
+  subroutine handle_of(p, h, rc, caller, msg, msg_len, out, out_name)
     type(c_ptr), intent(in) :: p                   !! the caller's pointer [-]
     type(handle_t), pointer, intent(out) :: h      !! the handle, null unless live [-]
-    integer(c_int), intent(out) :: rc              !! api_ok or api_err_handle [-]
+    integer(c_int), intent(out) :: rc              !! api_ok, api_err_handle or api_err_input [-]
     character(len=*), intent(in), optional :: caller       !! the C function, for the message [-]
     type(c_ptr), intent(in), optional :: msg               !! char *: message buffer (with caller) [-]
     integer(c_size_t), intent(in), optional :: msg_len     !! its size in bytes [-]
+    type(c_ptr), intent(in), optional :: out               !! the pointer the call writes its result through [-]
+    character(len=*), intent(in), optional :: out_name     !! its name, for the message (with caller) [-]
+    logical :: say
+    say = present(caller) .and. present(msg) .and. present(msg_len)
     h => null()
     rc = api_err_handle
     if (c_associated(p)) then
       call c_f_pointer(p, h)
       if (h%magic == magic_live) then
         rc = api_ok
+        if (present(out)) then
+          if (c_associated(out)) return
+          rc = api_err_input
+          if (say .and. present(out_name)) call put_text(caller//': '//out_name//' is NULL', msg, msg_len)
+        end if
         return
       end if
       h => null()
     end if
-    if (present(caller) .and. present(msg) .and. present(msg_len)) &
-      call put_text(caller//': not a live LANDYN handle', msg, msg_len)
+    if (say) call put_text(caller//': not a live LANDYN handle', msg, msg_len)
   end subroutine handle_of
 
   !> A NUL-terminated C string as Fortran text ('' for NULL).

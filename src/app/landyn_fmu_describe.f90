@@ -20,6 +20,7 @@ program landyn_fmu_describe
   use landyn_strings, only: int_text
   use landyn_version, only: landyn_version_string, landyn_git_revision
   use landyn_api_outputs, only: api_output_t, api_output_list
+  use landyn_cli, only: get_arg
   implicit none
 
   !> One FMU variable: its value reference is its index - 1.
@@ -46,7 +47,7 @@ program landyn_fmu_describe
     write (error_unit, '(a)') 'usage: landyn_fmu_describe OUT_DIR'
     stop 1
   end if
-  out_dir = argument(1)
+  out_dir = get_arg(1)
   allocate (vars(0))
   call add_parameters(vars)
   call add_inputs(vars)
@@ -62,16 +63,6 @@ program landyn_fmu_describe
   end if
 
 contains
-
-  !> Command-line argument i.
-  function argument(i) result(s)
-    integer, intent(in) :: i               !! argument number [-]
-    character(len=:), allocatable :: s     !! its text [-]
-    integer :: n
-    call get_command_argument(i, length=n)
-    allocate (character(len=n) :: s)
-    call get_command_argument(i, s)
-  end function argument
 
   !> Append one variable.
   subroutine push(list, v)

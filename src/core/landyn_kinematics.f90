@@ -69,7 +69,7 @@ module landyn_kinematics
   ! --- gear frames and geometry
   public :: gear_geometry_t, build_gear_geometry, footpad_jacobians
   ! --- strut kinematics
-  public :: strut_orientation, strut_axis, strut_axis_derivs
+  public :: strut_axis, strut_axis_derivs
   public :: joint_trig_t, joint_trig, strut_axis_derivs_trig, axis_derivs_t
   public :: strut_orientation_trig, strut_axis_trig, joint_rotation_derivs
   public :: strut_angles_from_point
@@ -562,16 +562,8 @@ contains
     w22(3,:) = [c1*s2, 0.0_wp, -c1*c2]
   end subroutine joint_rotation_derivs
 
-  !> Orientation of a strut: R = R0 rot_x(t1) rot_y(t2).
-  pure function strut_orientation(r0, t1, t2) result(r)
-    real(wp), intent(in) :: r0(3,3)  !! nominal strut frame [-]
-    real(wp), intent(in) :: t1       !! first joint angle (about x0) [rad]
-    real(wp), intent(in) :: t2       !! second joint angle (about rotated y) [rad]
-    real(wp) :: r(3,3)               !! strut orientation in the gear frame [-]
-    r = strut_orientation_trig(r0, joint_trig(t1, t2))
-  end function strut_orientation
-
-  !> strut_orientation from cos and sin of the joint angles.
+  !> Orientation of a strut, R = R0 rot_x(t1) rot_y(t2), from cos and sin of its joint angles
+  !! (joint_trig(t1, t2)).
   pure function strut_orientation_trig(r0, tr) result(r)
     real(wp), intent(in) :: r0(3,3)          !! nominal strut frame [-]
     type(joint_trig_t), intent(in) :: tr     !! cos and sin of the joint angles [-]

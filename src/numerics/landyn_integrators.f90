@@ -13,6 +13,7 @@
 module landyn_integrators
   use landyn_status, only: STAT_INPUT, STAT_OK
   use landyn_config, only: landyn_input_t
+  use landyn_law_checks, only: law_build_t
   use landyn_integrator, only: integrator_t, integrator_build_t
   implicit none
   private
@@ -29,9 +30,7 @@ contains
     integer, intent(out) :: stat                               !! STAT_OK, STAT_INPUT for an unknown name
     character(len=*), intent(inout) :: errmsg                  !! message on failure
     type(integrator_build_t) :: b
-    call b%start('simulation', inp%simulation%integrator, '', var='integrator', noun='integrators')
-    call walk(b)
-    call b%outcome(inp%simulation%integrator, registered_integrators(), stat, errmsg)
+    call b%make(walk, 'simulation', inp%simulation%integrator, stat, errmsg, var='integrator', noun='integrators')
     if (stat == STAT_OK) then
       call move_alloc(b%integ, integ)
     else
@@ -43,18 +42,19 @@ contains
   function registered_integrators() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(integrator_build_t) :: b
-    call b%start('simulation', '', '', listing=.true., var='integrator', noun='integrators')
-    call walk(b)
-    names = b%names
+    names = b%list(walk)
   end function registered_integrators
 
   !> The registry: every integrator, one line each, in the order of the documentation. A line
   !! offers its integrator's name; the one asked for is built, a listing collects the names.
-  subroutine walk(b)
-    type(integrator_build_t), intent(inout) :: b   !! the build (or the listing)
+  subroutine walk(lb)
+    class(law_build_t), intent(inout) :: lb        !! the build (or the listing), an integrator_build_t
+    select type (b => lb)
+    type is (integrator_build_t)
     block; use landyn_integrator_adaptive, only: build; if (b%offered('adaptive')) call build(b); end block
     block; use landyn_integrator_fixed, only: build; if (b%offered('fixed')) call build(b); end block
     block; use landyn_integrator_imex, only: build; if (b%offered('imex')) call build(b); end block
+    end select
   end subroutine walk
 
 end module landyn_integrators

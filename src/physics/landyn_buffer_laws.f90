@@ -14,6 +14,7 @@ module landyn_buffer_laws
   use landyn_status, only: STAT_OK
   use landyn_buffer, only: buffer_law_t
   use landyn_buffer_build, only: buffer_build_t
+  use landyn_law_checks, only: law_build_t
   implicit none
   private
 
@@ -32,9 +33,9 @@ contains
     integer, intent(out) :: stat                               !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
     type(buffer_build_t) :: b
-    call start(b, pri, sec, primary, '', .false.)
-    call walk(b)
-    call b%outcome(chosen(pri, sec, primary), buffer_law_names(), stat, errmsg)
+    call carry(b, pri, sec, primary)
+    call b%make(walk, strut_group(primary), chosen(pri, sec, primary), stat, errmsg, var='buffer_law', &
+                noun='buffer laws')
     if (stat == STAT_OK) call move_alloc(b%law, law)
   end subroutine make_buffer_law
 
@@ -50,9 +51,9 @@ contains
     do k = 1, 2   ! the primary's law, then the secondaries'
       block
         type(buffer_build_t) :: b
-        call start(b, pri, sec, k == 1, pre, .true.)
-        call walk(b)
-        if (b%found) call b%pass_on(errors)
+        call carry(b, pri, sec, k == 1)
+        call b%check(walk, strut_group(k == 1), chosen(pri, sec, k == 1), pre, errors, var='buffer_law', &
+                     noun='buffer laws')
       end block
     end do
   end subroutine check_buffer_law_input
@@ -62,35 +63,36 @@ contains
   function buffer_law_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(buffer_build_t) :: b
-    call b%start('primary_strut', '', '', listing=.true., var='buffer_law', noun='buffer laws')
-    call walk(b)
-    names = b%names
+    names = b%list(walk)
   end function buffer_law_names
 
   !> The registry: every buffer law, one line each, in the order of the documentation. A line
   !! offers its law's name; the law asked for is built, a listing collects the names.
-  subroutine walk(b)
-    type(buffer_build_t), intent(inout) :: b       !! the build (or the listing)
+  subroutine walk(lb)
+    class(law_build_t), intent(inout) :: lb        !! the build (or the listing), a buffer_build_t
+    select type (b => lb)
+    type is (buffer_build_t)
     block; use landyn_buffer_honeycomb, only: build; if (b%offered('honeycomb')) call build(b); end block
+    end select
   end subroutine walk
 
-  !> Set up a build (or a check) of the primary's or the secondaries' law.
-  subroutine start(b, pri, sec, primary, pre, check_only)
+  !> The input a build of the primary's or the secondaries' law carries.
+  subroutine carry(b, pri, sec, primary)
     type(buffer_build_t), intent(inout) :: b       !! the build
     type(primary_cfg_t), intent(in) :: pri         !! resolved &primary_strut input
     type(secondary_cfg_t), intent(in) :: sec       !! resolved &secondary_strut input
     logical, intent(in) :: primary                 !! the primary's law (else the secondaries') [-]
-    character(len=*), intent(in) :: pre            !! message prefix [-]
-    logical, intent(in) :: check_only              !! only the law-dependent checks [-]
-    character(len=15) :: group
-    group = 'secondary_strut'
-    if (primary) group = 'primary_strut'
-    call b%start(trim(group), chosen(pri, sec, primary), pre, check_only=check_only, var='buffer_law', &
-                 noun='buffer laws')
     b%primary = primary
     b%pri = pri
     b%sec = sec
-  end subroutine start
+  end subroutine carry
+
+  !> The namelist group of the primary's (primary) or the secondaries' law.
+  pure function strut_group(primary) result(group)
+    logical, intent(in) :: primary                 !! the primary's law (else the secondaries') [-]
+    character(len=:), allocatable :: group         !! 'primary_strut' or 'secondary_strut' [-]
+    group = trim(merge('primary_strut  ', 'secondary_strut', primary))
+  end function strut_group
 
   !> The law name the input chooses for the primary (primary) or the secondaries.
   function chosen(pri, sec, primary) result(name)

@@ -11,6 +11,7 @@ module landyn_contact
   use landyn_config, only: contact_cfg_t
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK
+  use landyn_law_checks, only: law_build_t
   use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, advance_contact_state
   use landyn_contact_base, only: base_contact_t, base_contact
   use landyn_contact_hunt_crossley, only: hunt_crossley_t, hunt_crossley
@@ -33,10 +34,8 @@ contains
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(contact_build_t) :: b
-    call b%start('contact', cfg%law, '')
     b%cfg = cfg
-    call walk(b)
-    call b%outcome(cfg%law, contact_law_names(), stat, errmsg)
+    call b%make(walk, 'contact', cfg%law, stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = b%key
@@ -51,10 +50,8 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(contact_build_t) :: b
-    call b%start('contact', cfg%law, pre, check_only=.true.)
     b%cfg = cfg
-    call walk(b)
-    if (b%found) call b%pass_on(errors)
+    call b%check(walk, 'contact', cfg%law, pre, errors)
   end subroutine check_contact_law_input
 
   !> Names accepted in &contact law, in the order of the registry, for messages and documentation:
@@ -62,15 +59,15 @@ contains
   function contact_law_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(contact_build_t) :: b
-    call b%start('contact', '', '', listing=.true.)
-    call walk(b)
-    names = b%names
+    names = b%list(walk)
   end function contact_law_names
 
   !> The registry: every contact law, one line each, in the order of the documentation. A line
   !! offers its law's name; the law asked for is built, a listing collects the names.
-  subroutine walk(b)
-    type(contact_build_t), intent(inout) :: b      !! the build (or the listing)
+  subroutine walk(lb)
+    class(law_build_t), intent(inout) :: lb        !! the build (or the listing), a contact_build_t
+    select type (b => lb)
+    type is (contact_build_t)
     block; use landyn_contact_base, only: build; if (b%offered('base')) call build(b); end block
     block; use landyn_contact_adams_impact, only: build; if (b%offered('adams_impact')) call build(b); end block
     block; use landyn_contact_hertz, only: build; if (b%offered('hertz')) call build(b); end block
@@ -79,6 +76,7 @@ contains
     block; use landyn_contact_kelvin_voigt_bilinear, only: build; if (b%offered('kelvin_voigt_bilinear')) call build(b); end block
     block; use landyn_contact_hunt_crossley, only: build; if (b%offered('hunt_crossley')) call build(b); end block
     block; use landyn_contact_regolith, only: build; if (b%offered('regolith')) call build(b); end block
+    end select
   end subroutine walk
 
 end module landyn_contact

@@ -10,6 +10,7 @@ module landyn_friction
   use landyn_config, only: friction_cfg_t
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK
+  use landyn_law_checks, only: law_build_t
   use landyn_friction_law, only: friction_law_t, friction_build_t, friction_state_t, adams_step, opposing_force, &
                                  default_stribeck_speed
   use landyn_friction_coulomb_step, only: coulomb_step_t, coulomb_step
@@ -31,10 +32,8 @@ contains
     integer, intent(out) :: stat                                 !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
     type(friction_build_t) :: b
-    call b%start('friction', cfg%law, '')
     b%cfg = cfg
-    call walk(b)
-    call b%outcome(cfg%law, friction_law_names(), stat, errmsg)
+    call b%make(walk, 'friction', cfg%law, stat, errmsg)
     if (stat == STAT_OK) then
       call move_alloc(b%law, law)
       law%name = b%key
@@ -49,10 +48,8 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(friction_build_t) :: b
-    call b%start('friction', cfg%law, pre, check_only=.true.)
     b%cfg = cfg
-    call walk(b)
-    if (b%found) call b%pass_on(errors)
+    call b%check(walk, 'friction', cfg%law, pre, errors)
   end subroutine check_friction_law_input
 
   !> Names accepted in &friction law, in the order of the registry, for messages and documentation:
@@ -60,15 +57,15 @@ contains
   function friction_law_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(friction_build_t) :: b
-    call b%start('friction', '', '', listing=.true.)
-    call walk(b)
-    names = b%names
+    names = b%list(walk)
   end function friction_law_names
 
   !> The registry: every friction law, one line each, in the order of the documentation. A line
   !! offers its law's name; the law asked for is built, a listing collects the names.
-  subroutine walk(b)
-    type(friction_build_t), intent(inout) :: b     !! the build (or the listing)
+  subroutine walk(lb)
+    class(law_build_t), intent(inout) :: lb        !! the build (or the listing), a friction_build_t
+    select type (b => lb)
+    type is (friction_build_t)
     block; use landyn_friction_coulomb_step, only: build; if (b%offered('coulomb_step')) call build(b); end block
     block; use landyn_friction_coulomb_step, only: build; if (b%offered('adams_step')) call build(b); end block
     block; use landyn_friction_coulomb, only: build => build_ty1; if (b%offered('ty1')) call build(b); end block
@@ -77,6 +74,7 @@ contains
     block; use landyn_friction_coulomb, only: build => build_ty4; if (b%offered('ty4')) call build(b); end block
     block; use landyn_friction_stribeck, only: build; if (b%offered('ty5')) call build(b); end block
     block; use landyn_friction_modified_stribeck, only: build; if (b%offered('ty6')) call build(b); end block
+    end select
   end subroutine walk
 
 end module landyn_friction

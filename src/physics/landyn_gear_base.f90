@@ -62,7 +62,9 @@ module landyn_gear_base
     real(wp) :: free_hi(max_struts) = 0.0_wp      !! upper end [m]
   end type gear_eval_t
 
-  !> A landing gear: struts, footpad and their state. Two parts:
+  !> A landing gear: struts, footpad and their state. Its layout (strut and coordinate counts,
+  !! rotation) is set once by the gear type's set-up (set_layout) and read through non-overridable
+  !! bindings; the rest in two parts:
   !!
   !! - the dynamics (deferred): what the simulation calls per step (landyn_sim_core, landyn_sim_state,
   !!   landyn_impact, the integrators) and to set up and save its model (landyn_sim_model);
@@ -71,11 +73,20 @@ module landyn_gear_base
   !!   weights and law segments the adaptive integrator compares, and the rigid gear's caches.
   !!   strut_lengths and violations have no sensible default and stay deferred.
   type, abstract :: gear_base_t
+    private
+    integer :: layout_struts = 0                  !! number of struts (set_layout) [-]
+    integer :: layout_coordinates = 0             !! number of generalized coordinates (set_layout) [-]
+    real(wp) :: layout_rot(3, 3) = reshape([1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp, 0.0_wp, 0.0_wp, 0.0_wp, 1.0_wp], &
+                                           [3, 3])  !! gear frame -> lander frame (set_layout) [-]
   contains
+    ! ---- the layout, set once by the gear type's set-up
+    ! (not non_overridable: gfortran 12 with -flto miscompiled its direct call from the tripod's
+    ! set-up, a segfault in test_impact's Release build; an extension cannot reach the components)
+    procedure :: set_layout                                            !! sets the counts and the rotation
+    procedure, non_overridable :: strut_count                          !! number of struts [-]
+    procedure, non_overridable :: coordinate_count                     !! number of generalized coordinates [-]
+    procedure, non_overridable :: rotation                             !! gear frame -> lander frame rotation [-]
     ! ---- the dynamics
-    procedure(count_iface), deferred :: strut_count                    !! number of struts [-]
-    procedure(count_iface), deferred :: coordinate_count               !! number of generalized coordinates [-]
-    procedure(rotation_iface), deferred :: rotation                    !! gear frame -> lander frame rotation [-]
     procedure(footpad_iface), deferred :: footpad                      !! footpad position and velocity, gear frame [m, m/s]
     procedure(evaluate_iface), deferred :: evaluate                    !! crush logic and accelerations into a gear_eval_t
     procedure(commit_iface), deferred :: commit                        !! makes an evaluation the committed state
@@ -102,9 +113,9 @@ module landyn_gear_base
     procedure(violations_iface), deferred :: violations                !! largest constraint violations [m]
     procedure :: strut_name                                            !! name of strut k (reports)
     procedure :: strut_modes                                           !! crush mode of each strut [-]
-    procedure :: axial_forces                                          !! axial buffer forces [N]
+    procedure :: axial_forces => not_reported                          !! axial buffer forces [N]
     procedure :: crush_history                                         !! most negative and positive strokes reached [m]
-    procedure :: crush_work                                            !! energy absorbed by each buffer [J]
+    procedure :: crush_work => not_reported                            !! energy absorbed by each buffer [J]
     procedure :: buffer_capacity                                       !! stroke capacity of strut k's buffer [m]
     procedure :: crush_levels                                          !! constant crush forces of strut k's buffer [N]
     procedure :: law_segments                                          !! piece of each buffer law [-]
@@ -128,19 +139,6 @@ module landyn_gear_base
   end type gear_snapshot_slot_t
 
   abstract interface
-    !> A count of the gear type (struts, generalized coordinates).
-    pure integer function count_iface(gear)
-      import :: gear_base_t
-      class(gear_base_t), intent(in) :: gear      !! gear
-    end function count_iface
-
-    !> Gear frame -> lander frame rotation.
-    pure function rotation_iface(gear) result(rot)
-      import :: gear_base_t, wp
-      class(gear_base_t), intent(in) :: gear      !! gear
-      real(wp) :: rot(3, 3)                       !! [-]
-    end function rotation_iface
-
     !> Footpad joint position and its velocity relative to the body, gear frame.
     pure subroutine footpad_iface(gear, pos, vel, rates)
       import :: gear_base_t, wp
@@ -317,6 +315,52 @@ module landyn_gear_base
 
 contains
 
+  ! ---- the layout
+
+  !> Sets the gear's strut and coordinate counts and its rotation, once, in the gear type's set-up
+  !! (strut_count, coordinate_count and rotation return them; before it: no struts, no coordinates,
+  !! the identity). stat = STAT_FAILED, nothing set, for a count below 1 or beyond the capacities
+  !! the simulation's records are sized by (max_struts, max_gear_q).
+  pure subroutine set_layout(gear, n_struts, n_coordinates, rot, stat, errmsg)
+    class(gear_base_t), intent(inout) :: gear   !! gear
+    integer, intent(in) :: n_struts             !! number of struts, 1..max_struts [-]
+    integer, intent(in) :: n_coordinates        !! number of generalized coordinates, 1..max_gear_q [-]
+    real(wp), intent(in) :: rot(3, 3)           !! gear frame -> lander frame rotation [-]
+    integer, intent(out) :: stat                !! STAT_OK on success
+    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    character(len=160) :: text
+    stat = STAT_OK
+    if (n_struts < 1 .or. n_struts > max_struts .or. n_coordinates < 1 .or. n_coordinates > max_gear_q) then
+      write (text, '(a,i0,a,i0,a,i0,a,i0,a)') 'gear layout: ', n_struts, ' struts, ', n_coordinates, &
+        ' coordinates; valid: 1..', max_struts, ', 1..', max_gear_q, ' (max_struts, max_gear_q)'
+      stat = STAT_FAILED
+      errmsg = trim(text)
+      return
+    end if
+    gear%layout_struts = n_struts
+    gear%layout_coordinates = n_coordinates
+    gear%layout_rot = rot
+  end subroutine set_layout
+
+  !> Number of struts (set_layout; the size of the per-strut arrays).
+  pure integer function strut_count(gear) result(n)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    n = gear%layout_struts
+  end function strut_count
+
+  !> Number of generalized coordinates (set_layout; the size of the per-coordinate arrays).
+  pure integer function coordinate_count(gear) result(n)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    n = gear%layout_coordinates
+  end function coordinate_count
+
+  !> Gear frame -> lander frame rotation (set_layout).
+  pure function rotation(gear) result(rot)
+    class(gear_base_t), intent(in) :: gear      !! gear
+    real(wp) :: rot(3, 3)                       !! [-]
+    rot = gear%layout_rot
+  end function rotation
+
   !> The gear's linear response to a footpad force along `dir` at the decisions of an evaluation:
   !! with the body's frame held (the same field), the changes of the generalized accelerations and of
   !! the load on the body per newton of footpad force, and whether the decisions (locks, sliding
@@ -394,12 +438,14 @@ contains
     end if
   end subroutine strut_modes
 
-  !> Axial buffer forces of the committed state. Default: 0 (a gear type that does not report them).
-  pure subroutine axial_forces(gear, v)
+  !> Default of the per-strut reports a gear type may not keep, 0 for every strut: axial_forces
+  !! (axial buffer forces of the committed state [N]) and crush_work (energy absorbed by each
+  !! buffer so far [J]).
+  pure subroutine not_reported(gear, v)
     class(gear_base_t), intent(in) :: gear      !! gear
-    real(wp), intent(out) :: v(:)               !! per strut [N]
+    real(wp), intent(out) :: v(:)               !! per strut [N or J]
     v(1:gear%strut_count()) = 0.0_wp
-  end subroutine axial_forces
+  end subroutine not_reported
 
   !> Most negative and most positive stroke reached by each strut. Default: what the present
   !! strokes show (min(0, s), max(0, s)), for a gear type that keeps no history.
@@ -414,13 +460,6 @@ contains
     s_min(1:ns) = min(0.0_wp, s(1:ns))
     s_max(1:ns) = max(0.0_wp, s(1:ns))
   end subroutine crush_history
-
-  !> Energy absorbed by each buffer so far. Default: 0 (a gear type that does not book it).
-  pure subroutine crush_work(gear, v)
-    class(gear_base_t), intent(in) :: gear      !! gear
-    real(wp), intent(out) :: v(:)               !! per strut [J]
-    v(1:gear%strut_count()) = 0.0_wp
-  end subroutine crush_work
 
   !> Stroke capacity of strut k's buffer in each direction. Default: unlimited toward +s, none
   !! toward -s (no stroke margin to report); 0 beyond the gear's struts.

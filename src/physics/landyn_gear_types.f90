@@ -12,6 +12,7 @@ module landyn_gear_types
   use landyn_errors, only: input_errors_t
   use landyn_status, only: STAT_OK
   use landyn_gear_base, only: gear_base_t
+  use landyn_law_checks, only: law_build_t
   use landyn_gear_build, only: gear_build_t
   implicit none
   private
@@ -30,11 +31,9 @@ contains
     integer, intent(out) :: stat                               !! STAT_OK on success
     character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
     type(gear_build_t) :: b
-    call b%start('gears', inp%gears%gear_type, '', var='gear_type', noun='gear types')
     b%inp = inp
     b%i = i
-    call walk(b)
-    call b%outcome(inp%gears%gear_type, gear_type_names(), stat, errmsg)
+    call b%make(walk, 'gears', inp%gears%gear_type, stat, errmsg, var='gear_type', noun='gear types')
     if (stat == STAT_OK) call move_alloc(b%gear, gear)
   end subroutine make_gear
 
@@ -46,10 +45,8 @@ contains
     character(len=*), intent(in) :: pre            !! message prefix [-]
     type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
     type(gear_build_t) :: b
-    call b%start('gears', inp%gears%gear_type, pre, check_only=.true., var='gear_type', noun='gear types')
     b%inp = inp
-    call walk(b)
-    if (b%found) call b%pass_on(errors)
+    call b%check(walk, 'gears', inp%gears%gear_type, pre, errors, var='gear_type', noun='gear types')
   end subroutine check_gear_type_input
 
   !> Names accepted in &gears gear_type, in the order of the registry, for messages and
@@ -57,16 +54,17 @@ contains
   function gear_type_names() result(names)
     character(len=:), allocatable :: names         !! the registered names, ', '-separated [-]
     type(gear_build_t) :: b
-    call b%start('gears', '', '', listing=.true., var='gear_type', noun='gear types')
-    call walk(b)
-    names = b%names
+    names = b%list(walk)
   end function gear_type_names
 
   !> The registry: every gear type, one line each, in the order of the documentation. A line
   !! offers its type's name; the type asked for is built, a listing collects the names.
-  subroutine walk(b)
-    type(gear_build_t), intent(inout) :: b         !! the build (or the listing)
+  subroutine walk(lb)
+    class(law_build_t), intent(inout) :: lb        !! the build (or the listing), a gear_build_t
+    select type (b => lb)
+    type is (gear_build_t)
     block; use landyn_gear_type_tripod, only: build; if (b%offered('tripod')) call build(b); end block
+    end select
   end subroutine walk
 
 end module landyn_gear_types

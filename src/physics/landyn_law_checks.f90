@@ -2,8 +2,12 @@
 !! interchangeable parts (contact laws, friction laws, buffer laws, gear types, integrators) is a
 !! subroutine `walk(b)` with one line per part,
 !!   block; use <module>, only: build; if (b%offered('<name>')) call build(b); end block
-!! and b extends law_build_t: the factory, the input checks and the list of names (messages,
-!! the input registry's choices, docs/input) walk the same lines. Every problem is one message
+!! and b extends law_build_t: the factory (b%make), the input checks (b%check) and the list of
+!! names (b%list: messages, the input registry's choices, docs/input) walk the same lines, and
+!! each registry's entry points only say which input its build carries. A walk takes the
+!! registry_walk interface (class(law_build_t)) and selects its own build type:
+!!   select type (b => lb); type is (contact_build_t); <the lines>; end select
+!! Every problem is one message
 !! in the format of the input validation,
 !!   pre//'&'//group//': '//var//' = '//value//' is invalid; valid: '//requirement
 !! appended to an error collector, so the factories and the input validation report alike.
@@ -16,7 +20,7 @@ module landyn_law_checks
   implicit none
   private
 
-  public :: law_build_t, positive
+  public :: law_build_t, registry_walk, positive
 
   !> What a builder works on besides the input and the part it builds (extended by each registry's
   !! build type: contact_build_t, friction_build_t, buffer_build_t, gear_build_t,
@@ -42,7 +46,18 @@ module landyn_law_checks
     procedure :: require_nonnegative => build_require_nonnegative  !! "var >= 0 unit" unless it holds
     procedure :: outcome => build_outcome           !! the factory's stat and errmsg
     procedure :: pass_on => build_pass_on           !! append the messages to another collector
+    procedure :: make => build_make                 !! the factory's walk: build the part asked for
+    procedure :: check => build_check               !! the input checks' walk: messages of the part asked for
+    procedure :: list => build_list                 !! the listing walk: the registered names
   end type law_build_t
+
+  abstract interface
+    !> A registry's walk, one line per part (module comment); lb is the registry's build type.
+    subroutine registry_walk(lb)
+      import :: law_build_t
+      class(law_build_t), intent(inout) :: lb       !! the build (or the listing)
+    end subroutine registry_walk
+  end interface
 
 contains
 
@@ -162,6 +177,57 @@ contains
       if (chosen) self%found = .true.
     end if
   end function build_offered
+
+  !> The factory's walk: build the part `name` (case-insensitive) of namelist group `group` into
+  !! the build (the registry's entry point takes it from there), stat and errmsg as outcome gives
+  !! them; the known names (a listing walk) only when none answered. `var` and `noun` as in start.
+  subroutine build_make(self, walk, group, name, stat, errmsg, var, noun)
+    class(law_build_t), intent(inout) :: self      !! the build, its input set
+    procedure(registry_walk) :: walk               !! the registry's walk
+    character(len=*), intent(in) :: group          !! namelist group without '&' [-]
+    character(len=*), intent(in) :: name           !! name of the part as given [-]
+    integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
+    character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
+    character(len=*), intent(in), optional :: var  !! the variable naming the choice (default 'law') [-]
+    character(len=*), intent(in), optional :: noun !! what the registry holds, plural (default 'laws') [-]
+    call self%start(group, name, '', var=var, noun=noun)
+    call walk(self)
+    if (self%found) then
+      call self%outcome(name, '', stat, errmsg)
+    else
+      call self%outcome(name, self%list(walk), stat, errmsg)
+    end if
+  end subroutine build_make
+
+  !> The input checks' walk: the checks of the part `name` of group `group` (nothing built), their
+  !! messages, prefixed by `pre`, appended to errors. Nothing for an unknown name (the input
+  !! validation checks the name against the registry's names).
+  subroutine build_check(self, walk, group, name, pre, errors, var, noun)
+    class(law_build_t), intent(inout) :: self      !! the build, its input set
+    procedure(registry_walk) :: walk               !! the registry's walk
+    character(len=*), intent(in) :: group          !! namelist group without '&' [-]
+    character(len=*), intent(in) :: name           !! name of the part as given [-]
+    character(len=*), intent(in) :: pre            !! message prefix (deck name or '') [-]
+    type(input_errors_t), intent(inout) :: errors  !! problems found are appended here
+    character(len=*), intent(in), optional :: var  !! the variable naming the choice (default 'law') [-]
+    character(len=*), intent(in), optional :: noun !! what the registry holds, plural (default 'laws') [-]
+    call self%start(group, name, pre, check_only=.true., var=var, noun=noun)
+    call walk(self)
+    if (self%found) call self%pass_on(errors)
+  end subroutine build_check
+
+  !> The names the registry's lines offer, in their order, ', '-separated: a listing walk with a
+  !! fresh build of self's type (self itself is not changed).
+  function build_list(self, walk) result(names)
+    class(law_build_t), intent(in) :: self         !! a build of the registry's type
+    procedure(registry_walk) :: walk               !! the registry's walk
+    character(len=:), allocatable :: names         !! the registered names [-]
+    class(law_build_t), allocatable :: listing
+    allocate (listing, mold=self)
+    call listing%start('', '', '', listing=.true.)
+    call walk(listing)
+    names = listing%names
+  end function build_list
 
   !> Append the build's messages to errors.
   subroutine build_pass_on(self, errors)

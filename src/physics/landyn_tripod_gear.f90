@@ -41,10 +41,10 @@ module landyn_tripod_gear
 
   public :: tripod_gear_t, tripod_init, gear_state_t, gear_eval_t, strut_mass_t, strut_t
   public :: gear_init, gear_footpad, gear_mass_matrix, gear_relative_kinetic_energy
-  public :: gear_strokes, gear_strut_lengths, gear_rotation, gear_rates, gear_set_rates
-  public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian, gear_mass_diagonal
+  public :: gear_strokes, gear_rates, gear_set_rates
+  public :: gear_locks, gear_strut_modes, strut_modes, gear_is_rigid, gear_cache_jacobian
   public :: gear_crush_history, gear_crush_work, gear_violations, gear_buffer_capacity, gear_set_buffer
-  public :: gear_save_state, gear_restore_state, gear_axial_forces, gear_body_load
+  public :: gear_axial_forces, gear_body_load
   public :: gear_coordinates, gear_accelerations, gear_set_coordinates, gear_set_locks, gear_slide_directions
   public :: gear_set_crush_history, gear_set_axial_forces, gear_set_rigid, gear_tube_bound, gear_geometry
   public :: gear_strut, gear_nominal_lengths
@@ -66,21 +66,16 @@ module landyn_tripod_gear
     class(buffer_law_t), allocatable :: law   !! the strut's buffer law (landyn_buffer)
   end type buffer_slot_t
 
-  !> Kinematics of one strut at a configuration: upper joint, axis and its partials.
-  type :: strut_kin_t
+  !> Kinematics of one strut at a configuration: its axis and the axis's partials (axis_derivs_t:
+  !! u, u1, u2, u11, u12, u22), upper joint and mass functions.
+  type, extends(axis_derivs_t) :: strut_kin_t
     real(wp) :: p(3) = 0.0_wp     !! upper joint, gear frame [m]
-    real(wp) :: u(3) = 0.0_wp     !! unit axis [-]
-    real(wp) :: u1(3) = 0.0_wp    !! du/dt1 [1/rad]
-    real(wp) :: u2(3) = 0.0_wp    !! du/dt2 [1/rad]
-    real(wp) :: u11(3) = 0.0_wp   !! d2u/dt1^2 [1/rad^2]
-    real(wp) :: u12(3) = 0.0_wp   !! d2u/dt1 dt2 [1/rad^2]
-    real(wp) :: u22(3) = 0.0_wp   !! d2u/dt2^2 [1/rad^2]
     type(strut_mass_functions_t) :: mf  !! mass functions at the strut's length [kg, kg m, kg m^2]
   end type strut_kin_t
 
   !> Everything of a gear that evolves in time (coordinates, rates, crush modes and history,
   !! accumulators) and the caches that depend on it: gear_t's component `st`. An opaque snapshot:
-  !! copying it out (gear_save_state) and back (gear_restore_state) restores the gear exactly, so
+  !! copying it out (tripod_save_state) and back (tripod_restore_state) restores the gear exactly, so
   !! that a step can be rejected or repeated (the geometry, masses and buffer laws are parameters
   !! and stay in gear_t).
   type :: gear_state_t
@@ -136,7 +131,6 @@ module landyn_tripod_gear
   type, extends(gear_base_t) :: tripod_gear_t
     private
     type(gear_geometry_t) :: geom                 !! hard points and nominal strut frames, gear frame
-    real(wp) :: rot(3, 3) = 0.0_wp                !! gear frame -> lander frame rotation [-]
     type(strut_t) :: strut(n_struts)              !! primary, left, right: mass models (landyn_strut)
     real(wp) :: leg_mass = 0.0_wp                 !! sum of the strut masses (set by gear_init) [kg]
     real(wp) :: row_bound = 0.0_wp                !! bound on |A_ij| of the correction rows [m]
@@ -147,9 +141,6 @@ module landyn_tripod_gear
     type(gear_state_t) :: st                      !! everything that evolves (a snapshot is a copy of it)
   contains
     ! ---- the dynamics (gear_base_t)
-    procedure :: strut_count => tripod_strut_count                     !! three struts [-]
-    procedure :: coordinate_count => tripod_coordinate_count           !! nine generalized coordinates [-]
-    procedure :: rotation => gear_rotation                             !! gear frame -> lander frame rotation [-]
     procedure :: footpad => gear_footpad                               !! footpad position and velocity [m, m/s]
     procedure :: evaluate => gear_evaluate                             !! crush logic and accelerations
     procedure :: commit => gear_commit                                 !! makes an evaluation the committed state
@@ -294,18 +285,6 @@ module landyn_tripod_gear
       real(wp), intent(out) :: sd(:)          !! stroke rates (n_struts) [m/s]
     end subroutine gear_strokes
 
-    !> Strut lengths at the gear's current state.
-    module pure function gear_strut_lengths(gear) result(len)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-      real(wp) :: len(n_struts)               !! strut lengths [m]
-    end function gear_strut_lengths
-
-
-    !> Gear frame -> lander frame rotation.
-    module pure function gear_rotation(gear) result(rot)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-      real(wp) :: rot(3, 3)                   !! [-]
-    end function gear_rotation
 
     !> Generalized velocities (the stored ones: half a step behind the coordinates in the leapfrog).
     module pure function gear_rates(gear) result(qd)
@@ -352,11 +331,6 @@ module landyn_tripod_gear
       real(wp), intent(in) :: phq(:, :)       !! Phi_q at gear%st%q, n_phi x n_q [-, m]
     end subroutine gear_cache_jacobian
 
-    !> Diagonal of the mass matrix at the current coordinates.
-    module pure function gear_mass_diagonal(gear) result(mdiag)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-      real(wp) :: mdiag(n_q)                  !! [kg, kg m^2]
-    end function gear_mass_diagonal
 
     !> Most negative and most positive stroke reached by each strut.
     module pure subroutine gear_crush_history(gear, s_min, s_max)
@@ -403,18 +377,6 @@ module landyn_tripod_gear
       class(buffer_law_t), intent(in) :: law  !! buffer law
     end subroutine gear_set_buffer
 
-    !> Copies the gear's evolving state out (a snapshot: restoring it repeats the gear bit for bit).
-    module pure subroutine gear_save_state(gear, st)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-      ! inout, not out: intent(out) would first reset the record to its defaults at every save
-      type(gear_state_t), intent(inout) :: st !! its state (previous contents replaced)
-    end subroutine gear_save_state
-
-    !> Puts a state from gear_save_state back.
-    module pure subroutine gear_restore_state(gear, st)
-      class(tripod_gear_t), intent(inout) :: gear     !! gear
-      type(gear_state_t), intent(in) :: st    !! saved state
-    end subroutine gear_restore_state
 
     !> Axial buffer forces of the committed state (compression positive for the primary, the
     !! Table-3 sense of each strut).
@@ -773,16 +735,6 @@ module landyn_tripod_gear
       type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
     end subroutine tripod_init
 
-    !> Three struts (the size of the per-strut arrays).
-    module pure integer function tripod_strut_count(gear) result(n)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-    end function tripod_strut_count
-
-    !> Nine generalized coordinates (the size of q).
-    module pure integer function tripod_coordinate_count(gear) result(n)
-      class(tripod_gear_t), intent(in) :: gear        !! gear
-    end function tripod_coordinate_count
-
     !> Primary, secondary left, secondary right (strut_names).
     module pure function tripod_strut_name(gear, k) result(name)
       class(tripod_gear_t), intent(in) :: gear        !! gear
@@ -808,13 +760,13 @@ module landyn_tripod_gear
       real(wp), intent(out) :: v(:)                   !! [m/s^2, rad/s^2]
     end subroutine tripod_accelerations
 
-    !> Diagonal of the mass matrix at the current coordinates (gear_mass_diagonal).
+    !> Diagonal of the mass matrix at the current coordinates.
     module pure subroutine tripod_mass_diagonal(gear, v)
       class(tripod_gear_t), intent(in) :: gear        !! gear
       real(wp), intent(out) :: v(:)                   !! [kg, kg m^2]
     end subroutine tripod_mass_diagonal
 
-    !> Strut lengths (gear_strut_lengths).
+    !> Strut lengths.
     module pure subroutine tripod_strut_lengths(gear, v)
       class(tripod_gear_t), intent(in) :: gear        !! gear
       real(wp), intent(out) :: v(:)                   !! [m]
@@ -859,13 +811,13 @@ module landyn_tripod_gear
       class(gear_snapshot_t), allocatable, intent(inout) :: snap  !! the record
     end subroutine tripod_new_snapshot
 
-    !> gear_save_state into a tripod_snapshot_t (another record is left unchanged).
+    !> Copies the evolving state into a tripod_snapshot_t (another record is left unchanged).
     module pure subroutine tripod_save_state(gear, snap)
       class(tripod_gear_t), intent(in) :: gear        !! gear
       class(gear_snapshot_t), intent(inout) :: snap   !! record from new_snapshot
     end subroutine tripod_save_state
 
-    !> gear_restore_state from a tripod_snapshot_t (another record is ignored).
+    !> Puts the evolving state back from a tripod_snapshot_t (another record is ignored).
     module pure subroutine tripod_restore_state(gear, snap)
       class(tripod_gear_t), intent(inout) :: gear     !! gear
       class(gear_snapshot_t), intent(in) :: snap      !! saved state

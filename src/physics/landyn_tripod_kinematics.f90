@@ -18,7 +18,7 @@ module landyn_tripod_kinematics
   use landyn_status, only: STAT_FAILED, STAT_OK
   use landyn_kinematics, only: gear_geometry_t, joint_trig_t, axis_derivs_t, n_gear_q, n_gear_phi, &
                                iq_d1, iq_th1, iq_th2, iq_db1, iq_thb1, iq_thb2, iq_dc1, iq_thc1, iq_thc2, &
-                               solve3, joint_trig, joint_rotation_derivs, strut_orientation, strut_orientation_trig, &
+                               solve3, joint_trig, joint_rotation_derivs, strut_orientation_trig, &
                                strut_axis_trig, strut_axis_derivs_trig, strut_angles_from_point
   implicit none
   private
@@ -206,7 +206,7 @@ contains
     character(len=*), intent(out) :: errmsg    !! error message ('' on success)
     real(wp) :: rp(3,3), e_pri(3), f_pri(3)
     call strut_angles_from_point(geom%a, geom%R0p, d, q(iq_d1), q(iq_th1), q(iq_th2))
-    rp = strut_orientation(geom%R0p, q(iq_th1), q(iq_th2))
+    rp = strut_orientation_trig(geom%R0p, joint_trig(q(iq_th1), q(iq_th2)))
     e_pri = geom%a + matmul(rp, geom%e_loc)
     f_pri = geom%a + matmul(rp, geom%f_loc)
     call strut_angles_from_point(geom%b, geom%R0b, e_pri, q(iq_db1), q(iq_thb1), q(iq_thb2))

@@ -12,12 +12,12 @@ contains
 
   module procedure gear_init
     integer :: k
-    stat = STAT_OK
+    call gear%set_layout(n_struts, n_q, rot, stat, errmsg)
+    if (stat /= STAT_OK) return
     gear%tube = tube_friction_t()
     if (present(tube)) gear%tube = tube
     gear%st%tube_bound = 0.0_wp
     gear%geom = geom
-    gear%rot = rot
     gear%leg_mass = 0.0_wp
     do k = 1, n_struts
       gear%strut(k) = strut_from_mass(mass(k))
@@ -113,7 +113,7 @@ contains
   module procedure secondary_axes_of
     integer :: k
     do k = 2, 3
-      axes(k - 1) = axis_derivs_t(sk(k)%u, sk(k)%u1, sk(k)%u2, sk(k)%u11, sk(k)%u12, sk(k)%u22)
+      axes(k - 1) = sk(k)%axis_derivs_t
     end do
   end procedure secondary_axes_of
 
@@ -195,14 +195,6 @@ contains
     call strokes(gear, gear%st%q, gear%st%qd, s, sd)
   end procedure gear_strokes
 
-  module procedure gear_strut_lengths
-    len = gear%st%q(idx_len)
-  end procedure gear_strut_lengths
-
-
-  module procedure gear_rotation
-    rot = gear%rot
-  end procedure gear_rotation
 
   module procedure gear_rates
     qd = gear%st%qd
@@ -234,10 +226,6 @@ contains
     gear%st%phq_ok = .true.
   end procedure gear_cache_jacobian
 
-  module procedure gear_mass_diagonal
-    mdiag = gear_mass_matrix(gear, gear%st%q)
-  end procedure gear_mass_diagonal
-
   module procedure gear_crush_history
     s_min(1:n_struts) = gear%st%s_hismin
     s_max(1:n_struts) = gear%st%s_hismax
@@ -260,14 +248,6 @@ contains
     if (allocated(gear%buffer(k)%law)) deallocate (gear%buffer(k)%law)
     allocate (gear%buffer(k)%law, source=law)
   end procedure gear_set_buffer
-
-  module procedure gear_save_state
-    st = gear%st
-  end procedure gear_save_state
-
-  module procedure gear_restore_state
-    gear%st = st
-  end procedure gear_restore_state
 
   module procedure gear_axial_forces
     axial = gear%st%axial
@@ -341,14 +321,6 @@ contains
     end do
     call gear_init(self, geom, rot, mass, stat, errmsg, tube)
   end procedure tripod_init
-
-  module procedure tripod_strut_count
-    n = size(gear%len0)
-  end procedure tripod_strut_count
-
-  module procedure tripod_coordinate_count
-    n = size(gear%st%q)
-  end procedure tripod_coordinate_count
 
   module procedure tripod_strut_name
     name = strut_names(max(1, min(k, size(gear%len0))))
