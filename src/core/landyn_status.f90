@@ -49,7 +49,7 @@ module landyn_status
     character(len=:), allocatable :: message       !! what failed, with its context (set by fail) [-]
   contains
     procedure :: ok => status_ok                   !! the status is STAT_OK
-    procedure :: fail => status_fail               !! sets the code and the message
+    procedure :: fail => status_fail               !! sets the code and the message (and its context)
     procedure :: add_context => status_add_context !! puts "<what> [i] at t = <t> s: " in front of the message
     procedure :: prefix => status_prefix           !! puts a text in front of the message
     procedure :: text => status_text               !! the message ('' when none)
@@ -63,13 +63,18 @@ contains
     yes = self%code == STAT_OK
   end function status_ok
 
-  !> Sets the status: its code and its message.
-  pure subroutine status_fail(self, code, message)
+  !> Sets the status: its code and its message, with where and when in front of it when `what`
+  !! and `t` are given (as add_context puts them: "gear 2 at t =  1.23450E-01 s: <message>").
+  pure subroutine status_fail(self, code, message, what, t, index)
     class(status_t), intent(inout) :: self     !! status [-]
     integer, intent(in) :: code                !! one of the STAT_* values [-]
     character(len=*), intent(in) :: message    !! what failed [-]
+    character(len=*), intent(in), optional :: what  !! where: e.g. 'gear' or 'velocity projection' [-]
+    real(wp), intent(in), optional :: t        !! time of the state (with what) [s]
+    integer, intent(in), optional :: index     !! number of the part (gear) (with what) [-]
     self%code = code
     self%message = message
+    if (present(what) .and. present(t)) call self%add_context(what, t, index)
   end subroutine status_fail
 
   !> Puts a text in front of the message (a message is made if there is none).

@@ -87,8 +87,7 @@ contains
         call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, ev%dt, &
                                 mtv3(rg, ev%alpha_field))
         if (stat /= STAT_OK) then
-          call st%fail(stat, trim(m2))
-          call st%add_context('imex: gear', ev%t, i)
+          call st%fail(stat, trim(m2), 'imex: gear', ev%t, i)
           return
         end if
         if (.not. ok) then

@@ -266,8 +266,7 @@ contains
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), loads)
         if (stat /= STAT_OK) then
-          call st%fail(stat, trim(m2))
-          call st%add_context('gear', t, i)
+          call st%fail(stat, trim(m2), 'gear', t, i)
           return
         end if
         ns = model%n_struts(i)
@@ -432,8 +431,8 @@ contains
 
       ! ---- divergence, tip-over and rest checks
       if (.not. body_is_finite(model%body)) then
-        call st%fail(STAT_NON_FINITE, 'the integration diverged (reduce &simulation dt or check the input)')
-        call st%add_context('the solution became non-finite', t)
+        call st%fail(STAT_NON_FINITE, 'the integration diverged (reduce &simulation dt or check the input)', &
+                     'the solution became non-finite', t)
         call finish(model, res, t)
         done = .true.
         return

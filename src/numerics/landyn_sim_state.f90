@@ -163,8 +163,7 @@ contains
       call sim%model%gear(i)%g%correct_positions(sim%par%constraint_tol, sim%par%max_correction_iter, &
                                                  sim%par%max_constraint_drift, stat, m2)
       if (stat /= STAT_OK) then
-        call st%fail(stat, trim(m2))
-        call st%add_context('gear', t, i)
+        call st%fail(stat, trim(m2), 'gear', t, i)
         return
       end if
     end do
@@ -183,8 +182,7 @@ contains
     call system_velocity_projection(sim%model%body, sim%model%gear, sim%model%n_gears, &
                                     sim%par%constraint_tol, e_imp, stat, m2)
     if (stat /= STAT_OK) then
-      call st%fail(stat, trim(m2))
-      call st%add_context('velocity projection', t)
+      call st%fail(stat, trim(m2), 'velocity projection', t)
       return
     end if
     sim%rec%w_impact = sim%rec%w_impact + e_imp
@@ -207,8 +205,7 @@ contains
       call sim%model%gear(i)%g%settle()
       call sim%model%gear(i)%g%prepare(stat, m2)
       if (stat /= STAT_OK) then
-        call st%fail(stat, trim(m2))
-        call st%add_context('gear', t, i)
+        call st%fail(stat, trim(m2), 'gear', t, i)
         return
       end if
     end do
