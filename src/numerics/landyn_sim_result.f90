@@ -13,6 +13,9 @@ module landyn_sim_result
 
   public :: sim_result_t, allocate_result, record, finish
 
+  integer, parameter :: level_name_len = 24   !! length of a crush level's name [-]
+  integer, parameter :: max_levels = 16       !! crush levels asked of one strut [-]
+
   !> Time series (columns = output samples) and summary of one run. Per-strut arrays have as many
   !! rows as the gear with the most struts (3 for tripods); a gear's rows beyond its own count stay 0.
   type :: sim_result_t
@@ -21,6 +24,11 @@ module landyn_sim_result
     character(len=strut_name_len), allocatable :: strut_names(:, :)  !! (struts, n_gears) their names [-]
     real(wp), allocatable :: stroke_capacity(:, :, :)     !! (2, struts, n_gears) buffer capacity toward +s, -s
                                                            !! (buffer_capacity; 0: none), for /model [m]
+    ! every strut's crush levels (crush_levels), one row per level in the order gear, strut, level
+    integer, allocatable :: level_gear(:)                  !! (levels) gear of the level, 0-based [-]
+    integer, allocatable :: level_strut(:)                 !! (levels) strut of the level, 0-based [-]
+    real(wp), allocatable :: level_force(:)                !! (levels) axial force, compression + [N]
+    character(len=level_name_len), allocatable :: level_name(:)  !! (levels) what the level is [-]
     integer :: n_out = 0                                   !! samples stored
     real(wp), allocatable :: t(:)                          !! [s]
     real(wp), allocatable :: position(:, :)                !! (3, n) lander origin O_L, global [m]
@@ -128,6 +136,7 @@ contains
         call model%gear(i)%g%buffer_capacity(k, res%stroke_capacity(1, k, i), res%stroke_capacity(2, k, i))
       end do
     end do
+    call keep_crush_levels(res, model)
     allocate (res%t(n_cap), res%position(3, n_cap), res%mc_position(3, n_cap), res%velocity(3, n_cap), &
               res%euler(3, n_cap), res%rate(3, n_cap), res%overload(3, n_cap))
     allocate (res%strut_length(n_struts, ng, n_cap), res%stroke(n_struts, ng, n_cap), res%strut_force(n_struts, ng, n_cap), &
@@ -279,5 +288,28 @@ contains
     res%final_euler = model%body%euler*rad2deg
     res%final_tilt = acos(max(-1.0_wp, min(1.0_wp, model%body%r(3, 3))))*rad2deg
   end subroutine finish
+
+  !> Keeps every strut's crush levels (the gear's crush_levels, from its buffer laws) in the result,
+  !! for /model/crush_levels: one row per level, in the order gear, strut, level.
+  subroutine keep_crush_levels(res, model)
+    type(sim_result_t), intent(inout) :: res  !! result (n_struts set) [-]
+    type(model_t), intent(in) :: model        !! model with its gears [-]
+    real(wp) :: force(max_levels)
+    character(len=level_name_len) :: name(max_levels)
+    integer :: i, k, n, m
+    allocate (res%level_gear(0), res%level_strut(0), res%level_force(0), res%level_name(0))
+    m = 0
+    do i = 1, res%n_gears
+      do k = 1, res%n_struts(i)
+        call model%gear(i)%g%crush_levels(k, force, name, n)
+        n = min(n, max_levels)
+        res%level_gear = [res%level_gear(1:m), spread(i - 1, 1, n)]
+        res%level_strut = [res%level_strut(1:m), spread(k - 1, 1, n)]
+        res%level_force = [res%level_force(1:m), force(1:n)]
+        res%level_name = [character(len=level_name_len) :: res%level_name(1:m), name(1:n)]
+        m = m + n
+      end do
+    end do
+  end subroutine keep_crush_levels
 
 end module landyn_sim_result

@@ -3,16 +3,15 @@
 !! counts and names, each gear's frame, every strut's joints and nominal frame (build_gear_geometry,
 !! as the model is assembled), the buffers' stroke capacities (buffer_capacity, kept in the result
 !! at allocation), the primary honeycomb's stage ends, every strut's crush levels (its buffer law's
-!! crush_levels, through the gear's binding: a new law reports its own), the mass centre, the mass,
-!! gravity, the friction coefficients, the terrain planes and the touchdown state.
+!! crush_levels, through the gear's binding, kept in the result at allocation as the capacities
+!! are: a new law reports its own), the mass centre, the mass, gravity, the friction coefficients,
+!! the terrain planes and the touchdown state.
 module landyn_output_model
   use landyn_kinds, only: wp, rad2deg, msg_len
   use landyn_status, only: STAT_OK
   use landyn_config, only: landyn_input_t
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t
   use landyn_simulation, only: sim_result_t
-  use landyn_gear_base, only: gear_base_t
-  use landyn_gear_types, only: make_gear
   use landyn_h5, only: h5_file_t
   use landyn_schema_write, only: schema_write
   implicit none
@@ -21,7 +20,6 @@ module landyn_output_model
   public :: write_model_group
 
   integer, parameter :: tripod_struts = 3     !! struts of the gear the input describes [-]
-  integer, parameter :: max_levels = 16       !! crush levels asked of one strut [-]
 
 contains
 
@@ -63,49 +61,22 @@ contains
     call schema_write(f, '/model/terrain/slope_direction', inp%terrain%slope_direction(1:ng)*rad2deg, &
 stat, errmsg)
     if (stat /= 0) return
-    call write_crush_levels(f, inp, ng, stat, errmsg); if (stat /= 0) return
+    call write_crush_levels(f, res, stat, errmsg); if (stat /= 0) return
     call write_conditions(f, inp, stat, errmsg)
   end subroutine write_model_group
 
-  !> /model/crush_levels: the table of every strut's crush levels (gear_base_t%crush_levels of
-  !! each gear as make_gear builds it, the simulation's factory), in the order gear, strut, level.
-  subroutine write_crush_levels(f, inp, ng, stat, errmsg)
+  !> /model/crush_levels: the table of every strut's crush levels, as the result keeps them
+  !! (gear_base_t%crush_levels of the run's own gears, at allocation), in the order gear, strut,
+  !! level.
+  subroutine write_crush_levels(f, res, stat, errmsg)
     type(h5_file_t), intent(inout) :: f            !! open file [-]
-    type(landyn_input_t), intent(in) :: inp        !! resolved input [-]
-    integer, intent(in) :: ng                      !! gears [-]
+    type(sim_result_t), intent(in) :: res          !! results (the crush levels) [-]
     integer, intent(out) :: stat                   !! 0 on success [-]
     character(len=*), intent(inout) :: errmsg      !! message on failure [-]
-    class(gear_base_t), allocatable :: gear
-    real(wp) :: force(max_levels)
-    character(len=24) :: name(max_levels)
-    integer :: i, k, n, m
-    integer, allocatable :: gear_of(:), strut_of(:)
-    real(wp), allocatable :: f_all(:)
-    character(len=24), allocatable :: n_all(:)
-    character(len=msg_len) :: m2
-
-    allocate (gear_of(0), strut_of(0), f_all(0), n_all(0))
-    m = 0
-    do i = 1, ng
-      call make_gear(inp, i, gear, stat, m2)
-      if (stat /= STAT_OK) then
-        write (errmsg, '(a,i0,a,a)') '/model/crush_levels: gear ', i, ': ', trim(m2)
-        return
-      end if
-      do k = 1, gear%strut_count()
-        call gear%crush_levels(k, force, name, n)
-        n = min(n, max_levels)
-        gear_of = [gear_of(1:m), spread(i - 1, 1, n)]
-        strut_of = [strut_of(1:m), spread(k - 1, 1, n)]
-        f_all = [f_all(1:m), force(1:n)]
-        n_all = [character(len=len(n_all)) :: n_all(1:m), name(1:n)]
-        m = m + n
-      end do
-    end do
-    call schema_write(f, '/model/crush_levels/gear', gear_of, stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/strut', strut_of, stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/force', f_all, stat, errmsg); if (stat /= 0) return
-    call schema_write(f, '/model/crush_levels/name', n_all, stat, errmsg)
+    call schema_write(f, '/model/crush_levels/gear', res%level_gear, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/strut', res%level_strut, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/force', res%level_force, stat, errmsg); if (stat /= 0) return
+    call schema_write(f, '/model/crush_levels/name', res%level_name, stat, errmsg)
   end subroutine write_crush_levels
 
   !> The run's conditions: mass, gravity, friction coefficients and the touchdown state.
