@@ -33,6 +33,7 @@ if(LANDYN_WITH_MPI)
   add_library(landyn_campaign_lib STATIC)
   set_target_properties(landyn_campaign_lib PROPERTIES OUTPUT_NAME landyn_campaign LINKER_LANGUAGE Fortran)
   target_link_libraries(landyn_campaign_lib PUBLIC landyn_layer_campaign landyn_lib MPI::MPI_Fortran)
+  landyn_forget_stale_modules(landyn_campaign_lib)
 
   add_executable(landyn_batch src/app/landyn_batch.f90)
   target_link_libraries(landyn_batch PRIVATE landyn_campaign_lib)
