@@ -289,9 +289,9 @@ contains
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust (computed with the footpad forces above)
       if (thrusting) then
-        moment = moment + cross3(sim%par%engine%point - model%body%mc, thrust_l)
+        moment = moment + sim%par%engine%moment_about(model%body%mc, thrust_l)
       end if
-      if (sim%ext_on) moment = moment + cross3(sim%par%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
+      if (sim%ext_on) moment = moment + sim%par%engine%moment_about(model%body%mc, sim%ext_force) + sim%ext_moment
       force = force + ev%thrust_g
       ! ---- Step 6: body accelerations
       call body_accelerations(body, force, moment)
