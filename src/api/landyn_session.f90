@@ -124,7 +124,7 @@ contains
     end if
     call allocate_result(s%now, s%sim%model, 1)
     s%slack = 1.0e-12_wp*max(1.0_wp, s%inp%simulation%t_end)
-    s%outputs = api_output_list(s%sim%model%n_gears, s%sim%model%n_struts)
+    s%outputs = api_output_list(s%sim%model%par%n_gears, s%sim%model%par%n_struts)
     allocate (s%values(size(s%outputs)), s%input_t(8), s%input_force(3, 8), s%input_moment(3, 8))
     call update_values(s, stat, msg)
   end subroutine session_create

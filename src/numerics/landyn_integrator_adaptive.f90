@@ -162,7 +162,7 @@ contains
       end if
       if (ok) then
         err = self%local_error(sim, h)
-        event = discrete_change(self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
+        event = discrete_change(self%evs(self%i_cur), self%evs(self%i_new), sim%model%par%n_gears, &
                                 sim%par%tipover_angle)
       end if
       if ((.not. ok .and. h > self%h_min) .or. &
@@ -259,7 +259,7 @@ contains
     if (.not. ok) then
       hn = 0.25_wp*h
     else if (event) then
-      hn = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%n_gears, &
+      hn = aim_before(self, h, self%evs(self%i_cur), self%evs(self%i_new), sim%model%par%n_gears, &
                       sim%par%tipover_angle)
     else
       hn = h*max(0.1_wp, step_factor(err, self%smooth))
@@ -303,7 +303,7 @@ contains
       self%bracket = .false.
       h = max(h, min(self%h_resume, self%h_max))
     else if (self%bracket) then
-      h = min(h, aim_after(self, t_new, self%evs(self%i_new), sim%model%n_gears, sim%par%tipover_angle))
+      h = min(h, aim_after(self, t_new, self%evs(self%i_new), sim%model%par%n_gears, sim%par%tipover_angle))
     end if
     h = clip(self, sim, t_new, h)
     ! the evaluation at t_new decided its locks for h_g: keep h_g when a lock changed in it
@@ -409,9 +409,9 @@ contains
     real(wp) :: err                                      !! error / tolerance [-]
     if (self%smooth) then
       err = error_norm2(self%evs(self%i_prev), self%evs(self%i_cur), self%evs(self%i_new), self%h_last, h, &
-                        sim%par%l_char, self%tol, sim%model%n_gears)
+                        sim%par%l_char, self%tol, sim%model%par%n_gears)
     else
-      err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%par%l_char, self%tol, sim%model%n_gears)
+      err = error_norm(self%evs(self%i_cur), self%evs(self%i_new), h, sim%par%l_char, self%tol, sim%model%par%n_gears)
     end if
   end function adaptive_local_error
 

@@ -74,7 +74,7 @@ contains
     real(wp) :: err                               !! error / tolerance [-]
     real(wp) :: d_acc(3), d_alpha(3), d_qdd(max_gear_q, max_gears), dfn, c0, c1
     integer :: i, ng, nq
-    ng = sim%model%n_gears
+    ng = sim%model%par%n_gears
     associate (ep => self%evs(self%i_prev), e0 => self%evs(self%i_cur), e1 => self%evs(self%i_new), r => self%rsp)
       if (self%smooth) then
         c1 = 1.0_wp/h
@@ -94,7 +94,7 @@ contains
         else
           dfn = e1%fn(i) - e0%fn(i)
         end if
-        nq = sim%model%n_q(i)
+        nq = sim%model%par%n_q(i)
         d_acc = d_acc - dfn*r%acc_u(:, i)
         d_alpha = d_alpha - dfn*r%alpha_u(:, i)
         d_qdd(1:nq, i) = d_qdd(1:nq, i) - dfn*r%qdd_u(1:nq, i)

@@ -40,13 +40,13 @@ contains
     integer :: i, ns
     mo%body_speed = norm2(model%body%v)
     mo%angular_rate = norm2(model%body%omega)
-    do i = 1, model%n_gears
+    do i = 1, model%par%n_gears
       call model%gear(i)%g%footpad(pos, vel)
-      vd = body_point_velocity(model%body, mv3(model%rot(:, :, i), pos)) + &
-           mv3(model%body%r, mv3(model%rot(:, :, i), vel))
+      vd = body_point_velocity(model%body, mv3(model%par%rot(:, :, i), pos)) + &
+           mv3(model%body%r, mv3(model%par%rot(:, :, i), vel))
       mo%footpad_speed = max(mo%footpad_speed, norm2(vd))
-      mo%slide_rate = max(mo%slide_rate, norm2(slip_velocity(model%plane(i), vd)))
-      ns = model%n_struts(i)
+      mo%slide_rate = max(mo%slide_rate, norm2(slip_velocity(model%par%plane(i), vd)))
+      ns = model%par%n_struts(i)
       call model%gear(i)%g%strokes(s(1:ns), sd(1:ns))
       mo%stroke_rate = max(mo%stroke_rate, maxval(abs(sd(1:ns))))
     end do

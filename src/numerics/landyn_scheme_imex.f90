@@ -74,15 +74,15 @@ contains
     body%acc = ev%acc_field
     body%alpha = ev%alpha_field
     r = body%r
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       rsp%on(i) = .false.
       if (ev%delta(i) <= 0.0_wp .or. ev%gear(i)%rigid) cycle
       associate (g => sim%model%gear(i)%g)
-        nq = sim%model%n_q(i)
-        rg = sim%model%rot(:, :, i)
-        field = mtv3(rg, mtv3(r, sim%model%g_vec) - body_point_acceleration(body, sim%model%point_a(:, i)))
+        nq = sim%model%par%n_q(i)
+        rg = sim%model%par%rot(:, :, i)
+        field = mtv3(rg, mtv3(r, sim%model%par%g_vec) - body_point_acceleration(body, sim%model%par%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
-        rsp%n(:, i) = surface_normal(sim%model%plane(i))
+        rsp%n(:, i) = surface_normal(sim%model%par%plane(i))
         dir = mtv3(rg, mtv3(r, rsp%n(:, i)))
         call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, ev%dt, &
                                 mtv3(rg, ev%alpha_field))
@@ -133,9 +133,9 @@ contains
     ! the accelerations the step was taken with are the corrected ones (the next velocity lead)
     sim%model%body%acc = a(1:3)
     sim%model%body%alpha = a(4:6)
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       if (.not. changed(i)) cycle
-      nq = sim%model%n_q(i)
+      nq = sim%model%par%n_q(i)
       ge = ev%gear(i)
       ge%qdd(1:nq) = a(first(i):first(i) + nq - 1)
       call sim%model%gear(i)%g%commit(ge)
@@ -161,18 +161,18 @@ contains
     integer :: i, nq, j1, j2
     df = 0.0_wp
     body = sim%model%body
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       if (.not. (rsp%on(i) .and. moving(i))) cycle
-      nq = sim%model%n_q(i)
+      nq = sim%model%par%n_q(i)
       j1 = first(i)
       j2 = first(i) + nq - 1
       body%v = v(1:3)
       body%omega = v(4:6)
       call sim%model%gear(i)%g%footpad(pos, vel, v(j1:j2))
-      vd = body_point_velocity(body, rsp%d_l(:, i)) + mv3(body%r, mv3(sim%model%rot(:, :, i), vel))
-      u_ex = penetration_rate(sim%model%plane(i), vd)
-      u_e = penetration_rate(sim%model%plane(i), ev%vd(:, i))
-      call sim%model%contact%tangent(ev%delta(i), u_e, k, c, ev%trial(i)%contact)
+      vd = body_point_velocity(body, rsp%d_l(:, i)) + mv3(body%r, mv3(sim%model%par%rot(:, :, i), vel))
+      u_ex = penetration_rate(sim%model%par%plane(i), vd)
+      u_e = penetration_rate(sim%model%par%plane(i), ev%vd(:, i))
+      call sim%model%par%contact%tangent(ev%delta(i), u_e, k, c, ev%trial(i)%contact)
       kw = kick*rsp%w(i)
       theta = min(1.0_wp, c_theta*h*h*max(k, 0.0_wp)*rsp%w(i))
       u_new = (u_ex + kw*c*u_e)/(1.0_wp + kw*(theta*h*k + c))

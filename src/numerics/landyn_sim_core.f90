@@ -172,7 +172,7 @@ contains
     end do
     ev%acc = body%acc
     ev%alpha = body%alpha
-    ev%ovl = mtv3(sim%model%body%r, body%acc - sim%model%g_vec)/g_earth
+    ev%ovl = mtv3(sim%model%body%r, body%acc - sim%model%par%g_vec)/g_earth
     ev%tilt = acos(max(-1.0_wp, min(1.0_wp, sim%model%body%r(3, 3))))
   end subroutine sim_evaluate
 
@@ -192,10 +192,10 @@ contains
 
     associate (model => sim%model)
       r = model%body%r
-      do i = 1, model%n_gears
-        rg = model%rot(:, :, i)
+      do i = 1, model%par%n_gears
+        rg = model%par%rot(:, :, i)
         if (present(v_lead)) then
-          nq = model%n_q(i)
+          nq = model%par%n_q(i)
           call model%gear(i)%g%rates(qd_led(1:nq))
           call model%gear(i)%g%accelerations(qdd_c(1:nq))
           call model%gear(i)%g%footpad(pos_g, vel_g, qd_led(1:nq) + v_lead*qdd_c(1:nq))
@@ -207,7 +207,7 @@ contains
         ev%vd(:, i) = body_point_velocity(body, d_l) + mv3(r, mv3(rg, vel_g))
         ! trial footpad state of this step: committed with the step (sim_commit_discrete)
         ev%trial(i) = model%footpad(i)
-        call footpad_ground_force(model%plane(i), model%contact, model%friction, ev%xd(:, i), ev%vd(:, i), &
+        call footpad_ground_force(model%par%plane(i), model%par%contact, model%par%friction, ev%xd(:, i), ev%vd(:, i), &
                                   sim%state%n > 0, sim%state%xd_stick(:, i), t - sim%state%t_stick, ev%trial(i), &
                                   ev%delta(i), ev%fn(i), ev%stick_margin(i), ev%fground(:, i))
       end do
@@ -252,25 +252,25 @@ contains
     real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), force(3), moment(3), fb_l(3), gf(3, max_gears), gm(3, max_gears)
     character(len=msg_len) :: m2
 
-    ng = sim%model%n_gears
+    ng = sim%model%par%n_gears
     associate (model => sim%model)
       r = model%body%r
-      force = model%body%mass*model%g_vec
+      force = model%body%mass*model%par%g_vec
       moment = 0.0_wp
       ev%locks_changed = .false.
       ev%acc_field = body%acc
       ev%alpha_field = body%alpha
       do i = 1, ng
-        rg = model%rot(:, :, i)
-        field = mtv3(rg, mtv3(r, model%g_vec) - body_point_acceleration(body, model%point_a(:, i)))
+        rg = model%par%rot(:, :, i)
+        field = mtv3(rg, mtv3(r, model%par%g_vec) - body_point_acceleration(body, model%par%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), loads)
         if (stat /= STAT_OK) then
           call st%fail(stat, trim(m2), 'gear', t, i)
           return
         end if
-        ns = model%n_struts(i)
-        nq = model%n_q(i)
+        ns = model%par%n_struts(i)
+        nq = model%par%n_q(i)
         associate (ge => ev%gear(i), g => model%gear(i)%g)
           call g%locks(locked(1:ns))
           if (any(locked(1:ns) .neqv. ge%locked(1:ns))) ev%locks_changed = .true.
@@ -282,16 +282,16 @@ contains
           call g%law_segments(ev%segment(1:ns, i))
         end associate
         ev%contact(i) = ev%delta(i) > 0.0_wp
-        ev%stuck(i) = model%friction%has_stiction .and. ev%trial(i)%friction%stuck
+        ev%stuck(i) = model%par%friction%has_stiction .and. ev%trial(i)%friction%stuck
       end do
       fb_l = symmetric_sum(gf, ng)
       force = force + mv3(r, fb_l)
       moment = symmetric_sum(gm, ng) - cross3(model%body%mc, fb_l)
       ! engine thrust (computed with the footpad forces above)
       if (thrusting) then
-        moment = moment + cross3(sim%par%engine%point - model%body%mc, thrust_l)
+        moment = moment + sim%par%engine%moment_about(model%body%mc, thrust_l)
       end if
-      if (sim%ext_on) moment = moment + cross3(sim%par%engine%point - model%body%mc, sim%ext_force) + sim%ext_moment
+      if (sim%ext_on) moment = moment + sim%par%engine%moment_about(model%body%mc, sim%ext_force) + sim%ext_moment
       force = force + ev%thrust_g
       ! ---- Step 6: body accelerations
       call body_accelerations(body, force, moment)
@@ -313,7 +313,7 @@ contains
     integer :: ng, i, ns
     real(wp) :: fnm, xt(3)
 
-    ng = sim%model%n_gears
+    ng = sim%model%par%n_gears
     associate (model => sim%model)
       if (any(ev%delta(1:ng) > 0.0_wp)) sim%state%touched = .true.
       if (sim%state%n > 0) then
@@ -324,7 +324,7 @@ contains
             - dot_product(0.5_wp*(sim%rec%fground_prev(:, i) + ev%fground(:, i)), ev%xd(:, i) - sim%rec%xd_prev(:, i)) &
             - fnm*(ev%delta(i) - sim%rec%delta_prev(i))
           if (sim%rec%fn_prev(i) > 0.0_wp) res%slide_distance(i) = res%slide_distance(i) &
-            + norm2(slip_velocity(model%plane(i), ev%xd(:, i) - sim%rec%xd_prev(:, i)))
+            + norm2(slip_velocity(model%par%plane(i), ev%xd(:, i) - sim%rec%xd_prev(:, i)))
         end do
         xt = body_point_position(model%body, sim%par%engine%point)
         sim%rec%w_thrust = sim%rec%w_thrust + dot_product(0.5_wp*(sim%rec%thrust_prev + ev%thrust_g), xt - sim%rec%xt_prev)
@@ -351,7 +351,7 @@ contains
       res%acc_overload = max(res%acc_overload, norm2(ev%ovl))
       if (sim%par%loads) call load_peaks_update(res%load_peaks, ev%t, eval_loads(model, ev), ng)
       do i = 1, ng
-        ns = model%n_struts(i)
+        ns = model%par%n_struts(i)
         res%acc_normal_force(i) = max(res%acc_normal_force(i), ev%fn(i))
         res%acc_strut_force(1:ns, i) = max(res%acc_strut_force(1:ns, i), abs(ev%gear(i)%axial(1:ns)))
         res%peak_strut_force(1:ns, i) = max(res%peak_strut_force(1:ns, i), abs(ev%gear(i)%axial(1:ns)))
@@ -379,8 +379,8 @@ contains
     call lead_velocities(sim%model, 0.5_wp*h_sync, ev, kept)
     ke_legs = leg_energy(sim%model, sim%par%gravity)
     e_el = 0.0_wp
-    do i = 1, sim%model%n_gears
-      if (ev%delta(i) > 0.0_wp) e_el = e_el + sim%model%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
+    do i = 1, sim%model%par%n_gears
+      if (ev%delta(i) > 0.0_wp) e_el = e_el + sim%model%par%contact%elastic_energy(ev%delta(i), ev%trial(i)%contact)
     end do
     call record(res, sim%model, ev, sim%rec%w_normal, &
                 sim%rec%w_friction, sim%rec%w_thrust, sim%rec%w_impact, sim%rec%ke0, sim%rec%pe0, ke_legs, e_el, &
@@ -407,11 +407,11 @@ contains
     real(wp) :: tilt
 
     done = .false.
-    ng = sim%model%n_gears
+    ng = sim%model%par%n_gears
     locked_now = .false.
     associate (model => sim%model)
       do i = 1, ng
-        ns = model%n_struts(i)
+        ns = model%par%n_struts(i)
         if (present(ev)) then
           m(1:ns) = ev%mode(1:ns, i)
         else
@@ -521,8 +521,8 @@ contains
     real(wp) :: v(n_load, max_gears)            !! [N, N m]
     integer :: i
     v = 0.0_wp
-    do i = 1, model%n_gears
-      v(:, i) = gear_load_vector(model%rot(:, :, i), ev%gear(i))
+    do i = 1, model%par%n_gears
+      v(:, i) = gear_load_vector(model%par%rot(:, :, i), ev%gear(i))
     end do
   end function eval_loads
 

@@ -1,5 +1,6 @@
-!> The simulation's model and state: the model assembled from the resolved input (body, gears,
-!! terrain, contact and friction laws) placed at t = 0, the run's parameters (sim_params_t, built
+!> The simulation's model and state: the model assembled from the resolved input (its parameters,
+!! model_params_t: terrain, contact and friction laws, gear counts, frames and joints; its state:
+!! body, gears, footpads) placed at t = 0, the run's parameters (sim_params_t, built
 !! once from the input), the simulation record with the integrator's state (step_state_t) and the
 !! recorder's accounts (sim_recorder_t), the evaluation record, snapshots (save/restore) and the
 !! legs' energy for the audit. The time integration that works on them is landyn_sim_core.
@@ -22,20 +23,15 @@ module landyn_sim_model
   implicit none
   private
 
-  public :: model_t, sim_params_t, step_state_t, sim_recorder_t, sim_t, sim_eval_t, velocities_t, sim_snapshot_t
+  public :: model_t, model_params_t, sim_params_t, step_state_t, sim_recorder_t, sim_t, sim_eval_t, velocities_t, sim_snapshot_t
   public :: sim_params, setup_model, leg_energy, sim_save, sim_restore, lead_velocities, restore_velocities, body_is_finite
   public :: max_primary_stroke
 
-  !> The model: the lander's parameters (fixed at assembly) and its evolving physical state. The
-  !! gears are held through gear_base_t (any gear type); their strut and coordinate counts are
-  !! cached at assembly.
-  !!
-  !! Parameters (set by setup_model, never changed during the run): n_gears, n_struts, n_q, plane,
-  !! contact, friction, point_a, rot, g_vec, first_moment0 (and each gear's own parameters).
-  !! State (what sim_save/sim_restore copy): body, footpad, and each gear's state (its
-  !! save_state/restore_state).
-  type :: model_t
-    ! ---- parameters
+  !> The model's parameters (the lander's; the run's settings are sim_params_t): what setup_model
+  !! builds once from the input and no procedure changes during the run (the procedures of a step
+  !! only read them). Not part of a snapshot: sim_save and sim_restore leave them alone. The gears'
+  !! own parameters live in their gear objects (model_t%gear).
+  type :: model_params_t
     integer :: n_gears = 0                      !! number of gears [-]
     integer :: n_struts(max_gears) = 0          !! struts of gear i (its strut_count()) [-]
     integer :: n_q(max_gears) = 0               !! generalized coordinates of gear i (its coordinate_count()) [-]
@@ -49,6 +45,16 @@ module landyn_sim_model
                                                 !! set at assembly) [-]
     real(wp) :: g_vec(3) = 0.0_wp               !! gravity, global [m/s^2]
     real(wp) :: first_moment0(3, max_gears) = 0.0_wp  !! leg first moments of mass at t = 0, gear frame [kg m]
+  end type model_params_t
+
+  !> The model: the lander's parameters `par` (fixed at assembly) and its evolving physical state.
+  !! The gears are held through gear_base_t (any gear type); their strut and coordinate counts are
+  !! cached in `par` at assembly.
+  !!
+  !! State (what sim_save/sim_restore copy): body, footpad, and each gear's state (its
+  !! save_state/restore_state; a gear object also holds its own parameters, which are not copied).
+  type :: model_t
+    type(model_params_t) :: par                 !! the parameters (set by setup_model, immutable during the run)
     ! ---- state
     type(body_t) :: body                        !! the lander body
     type(gear_slot_t) :: gear(max_gears)        !! the gears (their parameters and state)
@@ -193,14 +199,14 @@ contains
                                                 !! a law's or gear's failure, with its message [-]
     type(gear_slot_t), intent(in), optional :: gears(:)  !! gear i (where allocated) replaces the input's gear i [-]
 
-    model%n_gears = inp%gears%n_gears
-    model%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
+    model%par%n_gears = inp%gears%n_gears
+    model%par%g_vec = [0.0_wp, 0.0_wp, inp%simulation%gravity]
     call make_laws(inp, model, st)
     if (.not. st%ok()) return
     call build_gears(inp, model, st)
     if (.not. st%ok()) return
     if (present(gears)) call replace_gears(gears, model)
-    call check_gear_capacities(model, st)
+    call check_gear_capacities(model%par, st)
     if (.not. st%ok()) return
     call place_lander(inp, model, st)
   end subroutine setup_model
@@ -241,12 +247,12 @@ contains
     integer :: stat
     character(len=msg_len) :: m2
 
-    call make_contact_law(inp%contact, model%contact, stat, m2)
+    call make_contact_law(inp%contact, model%par%contact, stat, m2)
     if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
-    call make_friction_law(inp%friction, model%friction, stat, m2)
+    call make_friction_law(inp%friction, model%par%friction, stat, m2)
     if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     model%footpad = footpad_state_t()
-    call make_terrain_planes(inp%terrain, model%plane(1:model%n_gears), stat, m2)
+    call make_terrain_planes(inp%terrain, model%par%plane(1:model%par%n_gears), stat, m2)
     if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
   end subroutine make_laws
 
@@ -259,8 +265,8 @@ contains
     integer :: i, stat
     character(len=msg_len) :: m2
 
-    do i = 1, model%n_gears
-      model%point_a(:, i) = inp%gears%point_a(:, i)
+    do i = 1, model%par%n_gears
+      model%par%point_a(:, i) = inp%gears%point_a(:, i)
       call make_gear(inp, i, model%gear(i)%g, stat, m2)
       if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
       call gear_counts(model, i)
@@ -272,7 +278,7 @@ contains
     type(gear_slot_t), intent(in) :: gears(:)   !! replacing gears [-]
     type(model_t), intent(inout) :: model       !! model with its gears set [-]
     integer :: i
-    do i = 1, min(model%n_gears, size(gears))
+    do i = 1, min(model%par%n_gears, size(gears))
       if (.not. allocated(gears(i)%g)) cycle
       deallocate (model%gear(i)%g)
       allocate (model%gear(i)%g, source=gears(i)%g)
@@ -281,14 +287,14 @@ contains
   end subroutine replace_gears
 
   !> STAT_INPUT when a gear has more struts or coordinates than the evaluation records hold.
-  subroutine check_gear_capacities(model, st)
-    type(model_t), intent(in) :: model          !! model with its gears set [-]
+  subroutine check_gear_capacities(par, st)
+    type(model_params_t), intent(in) :: par     !! model parameters with the gears' counts set [-]
     type(status_t), intent(inout) :: st         !! STAT_OK when all fit, STAT_INPUT with a message otherwise [-]
     integer :: i
-    do i = 1, model%n_gears
-      if (model%n_struts(i) > max_struts .or. model%n_q(i) > max_gear_q) then
-        call st%fail(STAT_INPUT, 'gear '//int_text(i)//': '//int_text(model%n_struts(i))//' struts and ' &
-                     //int_text(model%n_q(i))//' coordinates exceed the capacities max_struts and max_gear_q (landyn_kinds)')
+    do i = 1, par%n_gears
+      if (par%n_struts(i) > max_struts .or. par%n_q(i) > max_gear_q) then
+        call st%fail(STAT_INPUT, 'gear '//int_text(i)//': '//int_text(par%n_struts(i))//' struts and ' &
+                     //int_text(par%n_q(i))//' coordinates exceed the capacities max_struts and max_gear_q (landyn_kinds)')
         return
       end if
     end do
@@ -315,11 +321,11 @@ contains
     if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     if (.not. all(is_set(inp%initial%position))) then
       dz = huge(1.0_wp)
-      do i = 1, model%n_gears
+      do i = 1, model%par%n_gears
         call model%gear(i)%g%footpad(pos, vel)
-        xd = body_point_position(model%body, matmul(model%rot(:, :, i), pos))
+        xd = body_point_position(model%body, matmul(model%par%rot(:, :, i), pos))
         ! moving the body down by dz raises the penetration by dz * (-n_z) = dz cos(slope)
-        dz = min(dz, (-inp%initial%clearance - penetration(model%plane(i), xd))/cos(inp%terrain%slope(i)))
+        dz = min(dz, (-inp%initial%clearance - penetration(model%par%plane(i), xd))/cos(inp%terrain%slope(i)))
       end do
       x_ol = [0.0_wp, 0.0_wp, dz]
       call body_init(model%body, inp%lander%mass, &
@@ -327,9 +333,9 @@ contains
         inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
       if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
     end if
-    model%body%acc = model%g_vec     ! free fall before touchdown
-    do i = 1, model%n_gears
-      call model%gear(i)%g%leg_momentum(pos, model%first_moment0(:, i), dz)
+    model%body%acc = model%par%g_vec     ! free fall before touchdown
+    do i = 1, model%par%n_gears
+      call model%gear(i)%g%leg_momentum(pos, model%par%first_moment0(:, i), dz)
     end do
   end subroutine place_lander
 
@@ -338,9 +344,9 @@ contains
   subroutine gear_counts(model, i)
     type(model_t), intent(inout) :: model       !! model with gear i allocated
     integer, intent(in) :: i                    !! gear [-]
-    model%rot(:, :, i) = model%gear(i)%g%rotation()
-    model%n_struts(i) = model%gear(i)%g%strut_count()
-    model%n_q(i) = model%gear(i)%g%coordinate_count()
+    model%par%rot(:, :, i) = model%gear(i)%g%rotation()
+    model%par%n_struts(i) = model%gear(i)%g%strut_count()
+    model%par%n_q(i) = model%gear(i)%g%coordinate_count()
   end subroutine gear_counts
 
   !> Energy of the legs' motion relative to the body: relative kinetic energy, the cross terms
@@ -354,15 +360,15 @@ contains
     integer :: i
     real(wp) :: p_rel(3), h_rel(3), t_rel, fm(3), mleg, rg(3, 3), rot(3, 3), pl(3), hl(3), p_dummy(3)
     e = 0.0_wp
-    do i = 1, model%n_gears
+    do i = 1, model%par%n_gears
       call model%gear(i)%g%relative_momenta(p_rel, h_rel, t_rel)
       call model%gear(i)%g%leg_momentum(p_dummy, fm, mleg)
-      rot = model%rot(:, :, i)
+      rot = model%par%rot(:, :, i)
       rg = matmul(model%body%r, rot)
       pl = mv3(rot, p_rel)
       hl = mv3(rot, h_rel) - cross3(model%body%mc, pl)
       e = e + t_rel + dot_product(model%body%v, mv3(model%body%r, pl)) + dot_product(model%body%omega, hl) &
-            - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%first_moment0(:, i)))
+            - gravity*dot_product([0.0_wp, 0.0_wp, 1.0_wp], matmul(rg, fm - model%par%first_moment0(:, i)))
     end do
   end function leg_energy
 
@@ -377,7 +383,7 @@ contains
     type(sim_snapshot_t), intent(inout) :: snap !! its evolving state (previous contents replaced)
     integer :: i
     snap%body = sim%model%body
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       associate (g => sim%model%gear(i)%g)
         if (.not. allocated(snap%gear(i)%s)) call g%new_snapshot(snap%gear(i)%s)
         call g%save_state(snap%gear(i)%s)
@@ -394,7 +400,7 @@ contains
     type(sim_snapshot_t), intent(in) :: snap    !! snapshot
     integer :: i
     sim%model%body = snap%body
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       call sim%model%gear(i)%g%restore_state(snap%gear(i)%s)
     end do
     sim%model%footpad = snap%footpad
@@ -416,8 +422,8 @@ contains
     kept%omega = model%body%omega
     model%body%v = kept%v + lead*ev%acc
     model%body%omega = kept%omega + lead*ev%alpha
-    do i = 1, model%n_gears
-      nq = model%n_q(i)
+    do i = 1, model%par%n_gears
+      nq = model%par%n_q(i)
       call model%gear(i)%g%rates(kept%qd(1:nq, i))
       call model%gear(i)%g%set_rates(kept%qd(1:nq, i) + lead*ev%gear(i)%qdd(1:nq))
     end do
@@ -430,8 +436,8 @@ contains
     integer :: i
     model%body%v = kept%v
     model%body%omega = kept%omega
-    do i = 1, model%n_gears
-      call model%gear(i)%g%set_rates(kept%qd(1:model%n_q(i), i))
+    do i = 1, model%par%n_gears
+      call model%gear(i)%g%set_rates(kept%qd(1:model%par%n_q(i), i))
     end do
   end subroutine restore_velocities
 
@@ -449,7 +455,7 @@ contains
     real(wp) :: s_min(max_struts), s_max(max_struts), v(ng)
     integer :: i
     do i = 1, ng
-      call model%gear(i)%g%crush_history(s_min(1:model%n_struts(i)), s_max(1:model%n_struts(i)))
+      call model%gear(i)%g%crush_history(s_min(1:model%par%n_struts(i)), s_max(1:model%par%n_struts(i)))
       v(i) = s_max(1)
     end do
     s = maxval(v)

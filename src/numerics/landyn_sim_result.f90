@@ -123,11 +123,11 @@ contains
     type(model_t), intent(in) :: model        !! model with its gears
     integer, intent(in) :: n_cap              !! capacity in samples
     integer :: ng, n_struts, i, k
-    ng = model%n_gears
-    n_struts = maxval(model%n_struts(1:ng))
+    ng = model%par%n_gears
+    n_struts = maxval(model%par%n_struts(1:ng))
     res%n_gears = ng
     allocate (res%n_struts(ng), res%strut_names(n_struts, ng), res%stroke_capacity(2, n_struts, ng))
-    res%n_struts = model%n_struts(1:ng)
+    res%n_struts = model%par%n_struts(1:ng)
     res%strut_names = ''
     res%stroke_capacity = 0.0_wp
     do i = 1, ng
@@ -173,7 +173,7 @@ contains
     res%crush_work = 0.0_wp
     res%bottomed = 0
     call load_peaks_init(res%load_peaks, ng)
-    res%gear_rot = model%rot(:, :, 1:ng)
+    res%gear_rot = model%par%rot(:, :, 1:ng)
     res%n_out = 0
   end subroutine allocate_result
 
@@ -206,9 +206,9 @@ contains
     res%overload(:, k) = ev%ovl
     crush = 0.0_wp
     do i = 1, res%n_gears
-      ns = model%n_struts(i)
+      ns = model%par%n_struts(i)
       associate (g => model%gear(i)%g)
-        rot = model%rot(:, :, i)
+        rot = model%par%rot(:, :, i)
         call g%strut_lengths(s(1:ns))
         res%strut_length(1:ns, i, k) = s(1:ns)
         call g%strokes(s(1:ns), sd(1:ns))
@@ -224,7 +224,7 @@ contains
       res%normal_force(i, k) = ev%fn(i)
       res%friction_force(i, k) = sqrt(max(0.0_wp, dot_product(ev%fground(:, i), ev%fground(:, i)) - ev%fn(i)**2))
       res%penetration(i, k) = ev%delta(i)
-      res%slip_speed(i, k) = norm2(slip_velocity(model%plane(i), ev%vd(:, i)))
+      res%slip_speed(i, k) = norm2(slip_velocity(model%par%plane(i), ev%vd(:, i)))
     end do
     res%overload_peak(k) = max(res%acc_overload, norm2(ev%ovl))
     res%normal_force_peak(:, k) = max(res%acc_normal_force, ev%fn(1:res%n_gears))
@@ -262,7 +262,7 @@ contains
     real(wp) :: s(max_struts), sd(max_struts), s_min(max_struts), s_max(max_struts), cap_pos, cap_neg, mpos, mneg, viol, drift
     res%t_final = t
     do i = 1, res%n_gears
-      ns = model%n_struts(i)
+      ns = model%par%n_struts(i)
       associate (g => model%gear(i)%g)
         call g%strokes(s(1:ns), sd(1:ns))
         call g%crush_history(s_min(1:ns), s_max(1:ns))

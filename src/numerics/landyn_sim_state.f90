@@ -40,9 +40,9 @@ contains
     integer :: i
     nv = 6
     first = nv + 1
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       first(i) = nv + 1
-      nv = nv + sim%model%n_q(i)
+      nv = nv + sim%model%par%n_q(i)
     end do
   end subroutine vel_layout
 
@@ -54,7 +54,7 @@ contains
     integer :: i
     sim%model%body%acc = ev%acc
     sim%model%body%alpha = ev%alpha
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       call sim%model%gear(i)%g%commit(ev%gear(i))
     end do
   end subroutine sim_commit_evaluation
@@ -66,8 +66,8 @@ contains
     logical :: locked(max_struts)
     integer :: i, ns
     moving = .false.
-    do i = 1, sim%model%n_gears
-      ns = sim%model%n_struts(i)
+    do i = 1, sim%model%par%n_gears
+      ns = sim%model%par%n_struts(i)
       call sim%model%gear(i)%g%locks(locked(1:ns))
       moving(i) = .not. (sim%model%gear(i)%g%is_rigid() .and. all(locked(1:ns)))
     end do
@@ -82,8 +82,8 @@ contains
     call vel_layout(sim, first, nv)
     v(1:3) = sim%model%body%v
     v(4:6) = sim%model%body%omega
-    do i = 1, sim%model%n_gears
-      call sim%model%gear(i)%g%rates(v(first(i):first(i) + sim%model%n_q(i) - 1))
+    do i = 1, sim%model%par%n_gears
+      call sim%model%gear(i)%g%rates(v(first(i):first(i) + sim%model%par%n_q(i) - 1))
     end do
   end subroutine sim_gather_velocities
 
@@ -97,8 +97,8 @@ contains
     call vel_layout(sim, first, nv)
     sim%model%body%v = v(1:3)
     sim%model%body%omega = v(4:6)
-    do i = 1, sim%model%n_gears
-      if (moving(i)) call sim%model%gear(i)%g%set_rates(v(first(i):first(i) + sim%model%n_q(i) - 1))
+    do i = 1, sim%model%par%n_gears
+      if (moving(i)) call sim%model%gear(i)%g%set_rates(v(first(i):first(i) + sim%model%par%n_q(i) - 1))
     end do
   end subroutine sim_scatter_velocities
 
@@ -112,8 +112,8 @@ contains
     call vel_layout(sim, first, nv)
     a(1:3) = ev%acc
     a(4:6) = ev%alpha
-    do i = 1, sim%model%n_gears
-      nq = sim%model%n_q(i)
+    do i = 1, sim%model%par%n_gears
+      nq = sim%model%par%n_q(i)
       if (moving(i)) then
         a(first(i):first(i) + nq - 1) = ev%gear(i)%qdd(1:nq)
       else
@@ -130,8 +130,8 @@ contains
     real(wp), intent(in) :: v_end(max_nv)       !! end-of-step velocities [m/s, rad/s]
     integer :: first(max_gears), nv, i
     call vel_layout(sim, first, nv)
-    do i = 1, sim%model%n_gears
-      if (moving(i)) call sim%model%gear(i)%g%arrest(v_end(first(i):first(i) + sim%model%n_q(i) - 1))
+    do i = 1, sim%model%par%n_gears
+      if (moving(i)) call sim%model%gear(i)%g%arrest(v_end(first(i):first(i) + sim%model%par%n_q(i) - 1))
     end do
   end subroutine sim_arrest
 
@@ -145,8 +145,8 @@ contains
     integer :: first(max_gears), nv, i
     call vel_layout(sim, first, nv)
     call body_increment(sim%model%body, v(1:3), v(4:6), h)
-    do i = 1, sim%model%n_gears
-      if (moving(i)) call sim%model%gear(i)%g%increment(v(first(i):first(i) + sim%model%n_q(i) - 1), h)
+    do i = 1, sim%model%par%n_gears
+      if (moving(i)) call sim%model%gear(i)%g%increment(v(first(i):first(i) + sim%model%par%n_q(i) - 1), h)
     end do
   end subroutine sim_increment_positions
 
@@ -158,7 +158,7 @@ contains
     type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
     integer :: i, stat
     character(len=msg_len) :: m2
-    do i = 1, sim%model%n_gears
+    do i = 1, sim%model%par%n_gears
       if (.not. moving(i)) cycle
       call sim%model%gear(i)%g%correct_positions(sim%par%constraint_tol, sim%par%max_correction_iter, &
                                                  sim%par%max_constraint_drift, stat, m2)
@@ -179,7 +179,7 @@ contains
     real(wp) :: e_imp
     integer :: stat
     character(len=msg_len) :: m2
-    call system_velocity_projection(sim%model%body, sim%model%gear, sim%model%n_gears, &
+    call system_velocity_projection(sim%model%body, sim%model%gear, sim%model%par%n_gears, &
                                     sim%par%constraint_tol, e_imp, stat, m2)
     if (stat /= STAT_OK) then
       call st%fail(stat, trim(m2), 'velocity projection', t)
@@ -197,7 +197,7 @@ contains
     type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
     integer :: i, ng, stat
     character(len=msg_len) :: m2
-    ng = sim%model%n_gears
+    ng = sim%model%par%n_gears
     sim%model%footpad(1:ng) = ev%trial(1:ng)
     sim%state%xd_stick(:, 1:ng) = ev%xd(:, 1:ng)   ! the positions those stick states belong to
     sim%state%t_stick = ev%t                       ! and their time

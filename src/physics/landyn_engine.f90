@@ -1,8 +1,10 @@
 !> The descent engine as the step sees it (&engine): a constant thrust along a fixed direction of
 !! the lander axes, applied at a fixed point, for 0 <= t < cutoff_time. Its parameters are set once
-!! from the input (make_engine); the evaluation asks for the thrust at its time (thrust_at).
+!! from the input (make_engine); the evaluation asks for the thrust at its time (thrust_at) and for
+!! the moment about the mass centre of a force at the engine's point (moment_about).
 module landyn_engine
   use landyn_kinds, only: wp
+  use landyn_kinematics, only: cross3
   use landyn_config, only: engine_cfg_t
   implicit none
   private
@@ -18,6 +20,7 @@ module landyn_engine
   contains
     procedure :: thrusting => engine_thrusting   !! the engine thrusts at t
     procedure :: thrust_at => engine_thrust_at   !! the thrust at t, lander axes (zero after cutoff)
+    procedure :: moment_about => engine_moment_about  !! moment about a point of a force at the engine point
   end type engine_t
 
 contains
@@ -47,5 +50,16 @@ contains
     f = 0.0_wp
     if (self%thrusting(t)) f = self%thrust*self%direction
   end function engine_thrust_at
+
+  !> The moment about the point c (the mass centre), lander axes, of a force f acting at the
+  !! engine's point of application: (point - c) x f. The step applies it to the deck's thrust and
+  !! to a caller's input force (landyn_session), both taken at this point.
+  pure function engine_moment_about(self, c, f) result(m)
+    class(engine_t), intent(in) :: self   !! engine [-]
+    real(wp), intent(in) :: c(3)          !! the point the moment is taken about (the mass centre), lander frame [m]
+    real(wp), intent(in) :: f(3)          !! force acting at the engine's point, lander axes [N]
+    real(wp) :: m(3)                      !! its moment about c, lander axes [N m]
+    m = cross3(self%point - c, f)
+  end function engine_moment_about
 
 end module landyn_engine
