@@ -4,12 +4,8 @@
 # fails or prints a warning. The CTest test api_docs (label docs) builds it, so CI checks it.
 # FORD is pinned in docs/api/requirements.txt (scripts/install_prereqs.sh installs it into .venv).
 
-set(_landyn_ford_hints "")
-if(Python3_EXECUTABLE)
-  get_filename_component(_landyn_py_dir "${Python3_EXECUTABLE}" DIRECTORY)
-  list(APPEND _landyn_ford_hints "${_landyn_py_dir}")
-endif()
-find_program(LANDYN_FORD ford HINTS ${_landyn_ford_hints} ${CMAKE_SOURCE_DIR}/.venv/bin)
+include(${CMAKE_CURRENT_LIST_DIR}/LandynVenvTools.cmake)
+landyn_find_venv_tool(LANDYN_FORD ford)
 
 if(LANDYN_FORD)
   add_custom_target(api_docs

@@ -30,12 +30,8 @@ if(CMAKE_SCRIPT_MODE_FILE)
   return()
 endif()
 
-set(_landyn_fypp_hints "")
-if(Python3_EXECUTABLE)
-  get_filename_component(_landyn_py_dir "${Python3_EXECUTABLE}" DIRECTORY)
-  list(APPEND _landyn_fypp_hints "${_landyn_py_dir}")
-endif()
-find_program(LANDYN_FYPP fypp HINTS ${_landyn_fypp_hints} ${CMAKE_SOURCE_DIR}/.venv/bin)
+include(${CMAKE_CURRENT_LIST_DIR}/LandynVenvTools.cmake)
+landyn_find_venv_tool(LANDYN_FYPP fypp)
 if(NOT LANDYN_FYPP)
   message(FATAL_ERROR "LANDYN: fypp not found. It generates the HDF5 wrappers from src/output/*.fypp. "
     "Install it with scripts/install_prereqs.sh (Debian: apt-get install fypp; or pip install fypp), "

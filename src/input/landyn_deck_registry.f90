@@ -33,7 +33,7 @@ module landyn_deck_registry
     procedure :: unit_text        !! ' [unit]' of an entry
     procedure :: group_list       !! "&a, &b, ..."
     procedure :: group_hint       !! " (did you mean '&x'?)"
-    procedure :: var_hint         !! "; did you mean 'x'?" or where the variable belongs
+    procedure :: var_hint         !! "; did you mean 'x'?", where the variable belongs, or the valid variables
   end type deck_registry_t
 
   !> Where a deck's values go: one implementation per kind of deck.
@@ -129,7 +129,8 @@ contains
     s = table_group_hint(this%groups, name)
   end function group_hint
 
-  !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else ''.
+  !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else the
+  !! group's valid variables ("; valid variables: a, b, ...").
   pure function var_hint(this, ig, name) result(s)
     class(deck_registry_t), intent(in) :: this  !! registry [-]
     integer, intent(in) :: ig                   !! group index [-]

@@ -578,7 +578,8 @@ contains
     s = table_group_hint(group_names, name)
   end function group_hint
 
-  !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else ''.
+  !> "; did you mean 'xxx'?" for a close name in the group, or where the variable belongs, else the
+  !! group's valid variables.
   pure function var_hint(ig, name) result(s)
     integer, intent(in) :: ig             !! group index [-]
     character(len=*), intent(in) :: name  !! unknown variable name [-]
@@ -596,7 +597,7 @@ contains
   end function table_group_hint
 
   !> "; did you mean 'xxx'?" for a close name in group ig of a table, or the group of the table the
-  !! variable belongs to, else ''.
+  !! variable belongs to, else "; valid variables: a, b, ..." (the group's variables, in table order).
   pure function table_var_hint(vars, groups, ig, name) result(s)
     type(input_var_t), intent(in) :: vars(:)   !! the table's entries [-]
     character(len=*), intent(in) :: groups(:)  !! the table's group names [-]
@@ -611,7 +612,25 @@ contains
       end if
     end do
     s = closest_name(name, pack(vars%name, vars%group == ig))
-    if (len(s) > 0) s = "; did you mean '"//s//"'?"
+    if (len(s) > 0) then
+      s = "; did you mean '"//s//"'?"
+    else if (any(vars%group == ig)) then
+      s = '; valid variables: '//var_list(vars, ig)
+    end if
   end function table_var_hint
+
+  !> "a, b, ..." of the variables of group ig of a table, in table order.
+  pure function var_list(vars, ig) result(s)
+    type(input_var_t), intent(in) :: vars(:)  !! the table's entries [-]
+    integer, intent(in) :: ig                 !! group index [-]
+    character(len=:), allocatable :: s        !! variable names [-]
+    integer :: iv
+    s = ''
+    do iv = 1, size(vars)
+      if (vars(iv)%group /= ig) cycle
+      if (len(s) > 0) s = s//', '
+      s = s//trim(vars(iv)%name)
+    end do
+  end function var_list
 
 end module landyn_input_registry

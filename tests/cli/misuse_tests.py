@@ -75,9 +75,17 @@ def t_landyn_input_reading(x, d):
     expect(rc, 2, "a read error (/proc/self/mem) is reported", err)
     check("cannot open or read the input deck" in err, "the message says the deck cannot be read")
 
+    write(d, "unk.nml", "&simulation foo = 1, t_endd = 2 /\n")
+    rc, out, err = run(L, ["--check", "unk.nml"], d)
+    expect(rc, 2, "unknown &simulation variables are input errors", err)
+    check("unk.nml:1: &simulation: unknown variable 'foo' (foo = 1); valid variables: title, integrator, dt, "
+          in err and "t_end, gravity," in err, "an unknown variable with no close name: the group's variables listed")
+    check("unk.nml:1: &simulation: unknown variable 't_endd' (t_endd = 2); did you mean 't_end'?\n" in err,
+          "a misspelt variable: the hint alone, no list")
+
     rc, out, err = run(L, [""], d)
     expect(rc, 1, "landyn '' is a usage error, not the default run", err)
-    check(files_in(d) == ["bare.nml"], "no file written by the refused runs")
+    check(files_in(d) == ["bare.nml", "unk.nml"], "no file written by the refused runs")
 
     write(d, "cr.nml", "&simulation t_end = 0.05 /\r&lander mass = 15000.0 /\r")
     rc, out, err = run(L, ["--check", "cr.nml"], d)
@@ -258,6 +266,8 @@ def t_study_misuse(x, d):
     rc, out, err = run(S, ["--check", "v2.nml"], d)
     expect(rc, 2, "bad &variant items are input errors", err)
     check("&variant 1" in err and "&variant 2" in err, "both bad variants are reported")
+    check("v2.nml:3: &variant 2: unknown variable 'foo' (foo = 1); valid variables: label, set" in err,
+          "an unknown &variant variable with no close name: the group's variables listed")
     check(": : " not in err and "amelist" not in err.replace("namelist", ""), "the message is not garbled")
 
     # a study deck is read by the run decks' reader (its own registry, landyn_study_deck): the same
@@ -331,6 +341,13 @@ def t_batch_misuse(x, d):
                       "&parameter name = 'simulation%t_end', values = 0.005 /\n")
     rc, out, err = run(B, ["-q", "n.nml"], d)
     expect(rc, 0, "a campaign on base deck /dev/null runs", err)
+
+    write(d, "u.nml", "&campaign base_deck = 'empty.nml', mode = 'grid', n_cases = 4 /\n"
+                      "&parameter name = 'simulation%t_end', values = 0.005 /\n")
+    rc, out, err = run(B, ["--check", "u.nml"], d)
+    expect(rc, 2, "an unknown &campaign variable is an input error", err)
+    check("u.nml:1: &campaign: unknown variable 'n_cases' (n_cases = 4); valid variables: title, base_deck, mode, "
+          "n_samples, " in err, "an unknown variable with no close name: the group's variables listed")
 
     bad = [
         "&campaign base_deck = 'empty.nml', mode = 'grid', checkpoint_interval = nan /",

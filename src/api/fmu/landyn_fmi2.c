@@ -416,112 +416,111 @@ static fmi2Status settable(landyn_fmu *c, const char *fn, fmi2ValueReference vr)
   return fmi2OK;
 }
 
-fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
+/* The value of Real variable vr: its own for parameters and inputs, the simulation's for outputs
+ * (created here when read during initialization). */
+static fmi2Status real_value(landyn_fmu *c, const char *fn, fmi2ValueReference vr, fmi2Real *value) {
+  if (landyn_fmu_vars[vr].role != LANDYN_FMU_OUTPUT) {
+    *value = c->reals[vr];
+    return fmi2OK;
+  }
+  if (c->sim == NULL && c->state == ST_INIT && create_sim(c) != fmi2OK) {
+    drop_sim(c);
+    return fmi2Error;
+  }
+  if (c->sim == NULL) return fail(c, "%s: %s: no simulation (initialization failed or not done)", fn,
+                                  landyn_fmu_vars[vr].name);
+  *value = c->out_index[vr] >= 0 ? c->out_values[c->out_index[vr]] : 0.0;
+  return fmi2OK;
+}
+
+/* fmi2Get<type> (fn): value is the caller's array of n fmi2Real, fmi2Integer, fmi2Boolean or fmi2String,
+ * as type (LANDYN_FMU_*) says. */
+static fmi2Status get_values(fmi2Component comp, const char *fn, const fmi2ValueReference vr[], size_t n, int type,
+                             void *value) {
   landyn_fmu *c = comp;
   size_t i;
   if (c == NULL) return fmi2Error;
   for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2GetReal", vr[i], LANDYN_FMU_REAL) != fmi2OK) return fmi2Error;
-    if (landyn_fmu_vars[vr[i]].role != LANDYN_FMU_OUTPUT) {
-      value[i] = c->reals[vr[i]];
-      continue;
+    fmi2ValueReference r = vr[i];
+    if (check_vr(c, fn, r, type) != fmi2OK) return fmi2Error;
+    switch (type) {
+      case LANDYN_FMU_REAL:
+        if (real_value(c, fn, r, &((fmi2Real *)value)[i]) != fmi2OK) return fmi2Error;
+        break;
+      case LANDYN_FMU_INTEGER: ((fmi2Integer *)value)[i] = c->ints[r]; break;
+      case LANDYN_FMU_BOOLEAN: ((fmi2Boolean *)value)[i] = c->ints[r] ? fmi2True : fmi2False; break;
+      default: ((fmi2String *)value)[i] = c->strings[r] ? c->strings[r] : ""; break;
     }
-    if (c->sim == NULL && c->state == ST_INIT && create_sim(c) != fmi2OK) {
-      drop_sim(c);
-      return fmi2Error;
-    }
-    if (c->sim == NULL) return fail(c, "fmi2GetReal: %s: no simulation (initialization failed or not done)",
-                                    landyn_fmu_vars[vr[i]].name);
-    value[i] = c->out_index[vr[i]] >= 0 ? c->out_values[c->out_index[vr[i]]] : 0.0;
   }
   return fmi2OK;
+}
+
+/* Sets variable vr of type (LANDYN_FMU_*) to value[i] of fmi2Set<type> (fn)'s array value. */
+static fmi2Status set_value(landyn_fmu *c, const char *fn, fmi2ValueReference vr, int type, const void *value,
+                            size_t i) {
+  double x;
+  char *s;
+  switch (type) {
+    case LANDYN_FMU_REAL:
+      x = ((const fmi2Real *)value)[i];
+      if (!isfinite(x)) return fail(c, "%s: %s = %g is invalid; valid: a finite number", fn, landyn_fmu_vars[vr].name, x);
+      c->reals[vr] = x;
+      break;
+    case LANDYN_FMU_INTEGER: c->ints[vr] = ((const fmi2Integer *)value)[i]; break;
+    case LANDYN_FMU_BOOLEAN: c->ints[vr] = ((const fmi2Boolean *)value)[i] ? 1 : 0; break;
+    default:
+      s = copy_text(((const fmi2String *)value)[i]);
+      if (s == NULL) return fail(c, "out of memory");
+      free(c->strings[vr]);
+      c->strings[vr] = s;
+  }
+  return fmi2OK;
+}
+
+/* fmi2Set<type> (fn): value is the caller's array of n values of that type (LANDYN_FMU_*). */
+static fmi2Status set_values(fmi2Component comp, const char *fn, const fmi2ValueReference vr[], size_t n, int type,
+                             const void *value) {
+  landyn_fmu *c = comp;
+  size_t i;
+  if (c == NULL) return fmi2Error;
+  for (i = 0; i < n; i++) {
+    if (check_vr(c, fn, vr[i], type) != fmi2OK) return fmi2Error;
+    if (settable(c, fn, vr[i]) != fmi2OK) return fmi2Error;
+    if (set_value(c, fn, vr[i], type, value, i) != fmi2OK) return fmi2Error;
+  }
+  return fmi2OK;
+}
+
+fmi2Status fmi2GetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
+  return get_values(comp, "fmi2GetReal", vr, n, LANDYN_FMU_REAL, value);
 }
 
 fmi2Status fmi2GetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2Integer value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2GetInteger", vr[i], LANDYN_FMU_INTEGER) != fmi2OK) return fmi2Error;
-    value[i] = c->ints[vr[i]];
-  }
-  return fmi2OK;
+  return get_values(comp, "fmi2GetInteger", vr, n, LANDYN_FMU_INTEGER, value);
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2Boolean value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2GetBoolean", vr[i], LANDYN_FMU_BOOLEAN) != fmi2OK) return fmi2Error;
-    value[i] = c->ints[vr[i]] ? fmi2True : fmi2False;
-  }
-  return fmi2OK;
+  return get_values(comp, "fmi2GetBoolean", vr, n, LANDYN_FMU_BOOLEAN, value);
 }
 
 fmi2Status fmi2GetString(fmi2Component comp, const fmi2ValueReference vr[], size_t n, fmi2String value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2GetString", vr[i], LANDYN_FMU_STRING) != fmi2OK) return fmi2Error;
-    value[i] = c->strings[vr[i]] ? c->strings[vr[i]] : "";
-  }
-  return fmi2OK;
+  return get_values(comp, "fmi2GetString", vr, n, LANDYN_FMU_STRING, value);
 }
 
 fmi2Status fmi2SetReal(fmi2Component comp, const fmi2ValueReference vr[], size_t n, const fmi2Real value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2SetReal", vr[i], LANDYN_FMU_REAL) != fmi2OK) return fmi2Error;
-    if (settable(c, "fmi2SetReal", vr[i]) != fmi2OK) return fmi2Error;
-    if (!isfinite(value[i]))
-      return fail(c, "fmi2SetReal: %s = %g is invalid; valid: a finite number", landyn_fmu_vars[vr[i]].name, value[i]);
-    c->reals[vr[i]] = value[i];
-  }
-  return fmi2OK;
+  return set_values(comp, "fmi2SetReal", vr, n, LANDYN_FMU_REAL, value);
 }
 
 fmi2Status fmi2SetInteger(fmi2Component comp, const fmi2ValueReference vr[], size_t n, const fmi2Integer value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2SetInteger", vr[i], LANDYN_FMU_INTEGER) != fmi2OK) return fmi2Error;
-    if (settable(c, "fmi2SetInteger", vr[i]) != fmi2OK) return fmi2Error;
-    c->ints[vr[i]] = value[i];
-  }
-  return fmi2OK;
+  return set_values(comp, "fmi2SetInteger", vr, n, LANDYN_FMU_INTEGER, value);
 }
 
 fmi2Status fmi2SetBoolean(fmi2Component comp, const fmi2ValueReference vr[], size_t n, const fmi2Boolean value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2SetBoolean", vr[i], LANDYN_FMU_BOOLEAN) != fmi2OK) return fmi2Error;
-    if (settable(c, "fmi2SetBoolean", vr[i]) != fmi2OK) return fmi2Error;
-    c->ints[vr[i]] = value[i] ? 1 : 0;
-  }
-  return fmi2OK;
+  return set_values(comp, "fmi2SetBoolean", vr, n, LANDYN_FMU_BOOLEAN, value);
 }
 
 fmi2Status fmi2SetString(fmi2Component comp, const fmi2ValueReference vr[], size_t n, const fmi2String value[]) {
-  landyn_fmu *c = comp;
-  size_t i;
-  char *s;
-  if (c == NULL) return fmi2Error;
-  for (i = 0; i < n; i++) {
-    if (check_vr(c, "fmi2SetString", vr[i], LANDYN_FMU_STRING) != fmi2OK) return fmi2Error;
-    if (settable(c, "fmi2SetString", vr[i]) != fmi2OK) return fmi2Error;
-    s = copy_text(value[i]);
-    if (s == NULL) return fail(c, "out of memory");
-    free(c->strings[vr[i]]);
-    c->strings[vr[i]] = s;
-  }
-  return fmi2OK;
+  return set_values(comp, "fmi2SetString", vr, n, LANDYN_FMU_STRING, value);
 }
 
 /* ---- co-simulation ---------------------------------------------------------------------------- */
