@@ -8,9 +8,9 @@
 !! angles advance with eq. 10's rate transform. Integration is semi-implicit Euler (velocities
 !! first, then positions with the new velocities), the "direct integration" of the paper.
 module landyn_body
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3, mv3, mtv3, det3, inv3
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_OK, STAT_FAILED, status_t
   implicit none
   private
 
@@ -57,7 +57,7 @@ contains
     integer, intent(out) :: stat               !! 0 on success
     character(len=*), intent(inout) :: errmsg  !! message
     real(wp) :: det, t(3, 3)
-    character(len=msg_len) :: m2
+    type(status_t) :: ist
     stat = STAT_OK
     body%mass = mass
     body%inertia = inertia
@@ -69,8 +69,8 @@ contains
       errmsg = 'body_init: inertia tensor is singular'
       return
     end if
-    call inv3(t, body%inv_inertia, stat, m2)
-    if (stat /= STAT_OK) then
+    call inv3(t, body%inv_inertia, ist)
+    if (.not. ist%ok()) then
       stat = STAT_FAILED
       errmsg = 'body_init: inertia tensor is singular'
       return

@@ -7,6 +7,7 @@
 module landyn_gear_type_tripod
   use landyn_kinds, only: wp, msg_len
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t
+  use landyn_status, only: status_t
   use landyn_strut, only: strut_mass_t
   use landyn_tripod_gear, only: tripod_gear_t, tripod_init
   use landyn_buffer, only: buffer_law_t
@@ -55,6 +56,7 @@ contains
     real(wp) :: pts(3, 6)
     integer :: stat
     character(len=msg_len) :: m2, msg
+    type(status_t) :: gst
 
     ok = .false.
     associate (pri => b%inp%primary, sec => b%inp%secondary, g => b%inp%gears, i => b%i)
@@ -74,9 +76,9 @@ contains
       pts = reshape([g%point_a(:, i), g%point_b(:, i), g%point_c(:, i), g%point_d(:, i), g%point_e(:, i), &
                      g%point_f(:, i)], [3, 6])
       pts = matmul(transpose(p%rot), pts)          ! lander frame -> gear frame
-      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), p%geom, stat, m2)
-      if (stat /= 0) then
-        write (msg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), p%geom, gst)
+      if (.not. gst%ok()) then
+        write (msg, '(a,i0,a,a)') '&gears: gear ', i, ': ', gst%text()
         call b%errors%add(trim(msg))
         return
       end if

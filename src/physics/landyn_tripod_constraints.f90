@@ -9,7 +9,7 @@ submodule (landyn_tripod_gear) landyn_tripod_constraints
   use landyn_tripod_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
-  use landyn_status, only: STAT_OK, STAT_DIVERGED
+  use landyn_status, only: STAT_OK, STAT_DIVERGED, status_t
   use landyn_tube_friction, only: add_tube_bound
   implicit none
 
@@ -97,6 +97,7 @@ contains
   module procedure gear_project_alone
     real(wp) :: a(max_rows, n_q), r(max_rows), mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
     integer :: nrow, i, j
+    type(status_t) :: fst
     stat = STAT_OK
     call build_rows(gear, gear%st%q, a, nrow)
     do i = 1, nrow
@@ -110,8 +111,8 @@ contains
         end do
       end do
       lam(1:nrow) = r(1:nrow)
-      call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
-      if (stat /= STAT_OK) return
+      call solve_spd_unblocked(nrow, w, max_rows, lam, fst, 'gear velocity projection')
+      if (.not. fst%ok()) then; stat = fst%code; errmsg = fst%text(); return; end if
       do i = 1, nrow
         gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
       end do

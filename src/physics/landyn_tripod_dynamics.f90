@@ -21,7 +21,7 @@ submodule (landyn_tripod_gear) landyn_tripod_dynamics
   use landyn_tripod_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, status_t
   use landyn_tube_friction, only: tube_friction_bound, add_tube_bound
   implicit none
 
@@ -400,6 +400,7 @@ contains
     character(len=*), intent(inout) :: errmsg    !! message [-]
     real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
     integer :: i, j
+    type(status_t) :: fst
     do j = 1, n_q
       aw(1:nrow, j) = a(1:nrow, j)/mdiag(j)
     end do
@@ -411,8 +412,9 @@ contains
     do i = 1, nrow
       r(i) = dot_product(aw(i, :), qf) - b(i)
     end do
-    call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
-    if (stat /= STAT_OK) return
+    call solve_spd_unblocked(nrow, s, max_rows, r, fst, 'gear DAE (A M^-1 A^T)')
+    if (.not. fst%ok()) then; stat = fst%code; errmsg = fst%text(); return; end if
+    stat = STAT_OK
     lam(1:nrow) = r(1:nrow)
     qdd = qf
     do i = 1, nrow
@@ -511,6 +513,7 @@ contains
     integer, intent(out) :: stat                 !! STAT_OK on success
     character(len=*), intent(inout) :: errmsg    !! message
     integer :: k, i, j, nrow
+    type(status_t) :: fst
     nrow = n_phi + 3
     ! afresh, not strut_kinematics: c may be gear%st, whose kinematics cache this must not read
     call kinematics_at(gear%geom, gear%strut, c%q, c%sk_c)
@@ -525,8 +528,9 @@ contains
         c%chol_c(i, j) = sum(c%a_c(i, :)*c%a_c(j, :)/c%mdiag_c)
       end do
     end do
-    call factor_spd(nrow, c%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
-    if (stat /= STAT_OK) return
+    call factor_spd(nrow, c%chol_c, max_rows, fst, 'gear DAE, rigid (A M^-1 A^T)')
+    if (.not. fst%ok()) then; stat = fst%code; errmsg = fst%text(); return; end if
+    stat = STAT_OK
     c%rigid_cache = .true.
   end subroutine rigid_cache
 
