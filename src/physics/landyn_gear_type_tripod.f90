@@ -54,19 +54,18 @@ contains
     type(tripod_parts_t), intent(out) :: p   !! the parts
     logical, intent(out) :: ok               !! all parts made [-]
     real(wp) :: pts(3, 6)
-    integer :: stat
-    character(len=msg_len) :: m2, msg
+    character(len=msg_len) :: msg
     type(status_t) :: gst
 
     ok = .false.
     associate (pri => b%inp%primary, sec => b%inp%secondary, g => b%inp%gears, i => b%i)
       call make_tube_friction(pri%tube_friction, pri%mu_tube, pri%tube_outer_length, pri%tube_inner_length, &
-                              pri%tube_leg_length, pri%tube_lever, p%tube, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
-      call make_buffer_law(pri, sec, .true., p%primary, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
-      call make_buffer_law(pri, sec, .false., p%secondary, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
+                              pri%tube_leg_length, pri%tube_lever, p%tube, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
+      call make_buffer_law(pri, sec, .true., p%primary, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
+      call make_buffer_law(pri, sec, .false., p%secondary, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
       p%sm(1) = strut_mass_t(pri%outer_mass, pri%outer_cm, pri%outer_inertia, pri%inner_mass, pri%inner_cm, &
                              pri%inner_inertia, pri%footpad_mass)
       p%sm(2) = strut_mass_t(sec%outer_mass, sec%outer_cm, sec%outer_inertia, sec%inner_mass, sec%inner_cm, &
