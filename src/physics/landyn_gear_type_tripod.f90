@@ -37,13 +37,12 @@ contains
     type(tripod_parts_t) :: p
     type(tripod_gear_t) :: tripod
     logical :: ok
-    integer :: stat
-    character(len=msg_len) :: m2
+    type(status_t) :: gst
     if (b%check_only) return
     call tripod_parts(b, p, ok)
     if (.not. ok) return
-    call tripod_init(tripod, p%geom, p%rot, p%sm, p%primary, p%secondary, stat, m2, p%tube)
-    if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
+    call tripod_init(tripod, p%geom, p%rot, p%sm, p%primary, p%secondary, gst, p%tube)
+    if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
     allocate (b%gear, source=tripod)
   end subroutine build
 
