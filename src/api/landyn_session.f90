@@ -85,7 +85,6 @@ contains
                                                          !! default '(deck text)' [-]
     type(input_errors_t) :: errors
     integer :: st, i
-    character(len=msg_len) :: m2
     type(status_t) :: ss
     msg = ''
     if (len_trim(deck_text) == 0) then
@@ -111,11 +110,7 @@ contains
       return
     end if
     call sim_init(s%inp, s%sim, s%res, ss)
-    if (ss%ok()) then
-      m2 = ''
-      call make_integrator(s%inp, s%integ, st, m2)
-      if (st /= 0) call ss%fail(st, trim(m2))
-    end if
+    if (ss%ok()) call make_integrator(s%inp, s%integ, ss)
     if (ss%ok()) call s%integ%start(s%sim, s%inp, s%res, ss)
     if (.not. ss%ok()) then
       msg = ss%text()

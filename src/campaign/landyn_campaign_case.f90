@@ -15,7 +15,7 @@ module landyn_campaign_case
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears, deg2rad
-  use landyn_status, only: STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
+  use landyn_status, only: status_t, STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t
@@ -282,13 +282,12 @@ contains
     real(wp) :: clear                        !! clearance [m]
     type(terrain_plane_t) :: planes(max_gears)
     real(wp) :: r(3, 3), x(3)
-    integer :: k, i, j, st, ng
-    character(len=msg_len) :: msg
+    integer :: k, i, j, ng
+    type(status_t) :: tst
     ng = inp%gears%n_gears
-    msg = ''
-    call make_terrain_planes(inp%terrain, planes(1:ng), st, msg)
+    call make_terrain_planes(inp%terrain, planes(1:ng), tst)
     clear = huge(1.0_wp)
-    if (st /= 0) return
+    if (.not. tst%ok()) return
     do k = 1, res%n_out
       r = rot_zyx(res%euler(1, k)*deg2rad, res%euler(2, k)*deg2rad, res%euler(3, k)*deg2rad)
       do j = 1, crit%n_body_points

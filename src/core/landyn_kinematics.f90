@@ -56,7 +56,7 @@
 !! Everything here is pure and allocation-free (fixed-size arrays) for use in the time-step loop.
 module landyn_kinematics
   use landyn_kinds, only: wp
-  use landyn_status, only: STAT_FAILED, STAT_OK
+  use landyn_status, only: STAT_FAILED, status_t
   implicit none
   private
 
@@ -203,11 +203,10 @@ contains
 
   !> Inverse of a 3x3 matrix in closed form (adjugate / determinant), with a scale-free
   !! singularity check (see `singular_tol`).
-  pure subroutine inv3(a, ainv, stat, errmsg)
+  pure subroutine inv3(a, ainv, status)
     real(wp), intent(in) :: a(3,3)           !! matrix [any unit]
     real(wp), intent(out) :: ainv(3,3)       !! inverse of a [1/unit(a)]; zero when singular
-    integer, intent(out) :: stat             !! 0 on success, 1 when a is singular
-    character(len=*), intent(out) :: errmsg  !! error message ('' on success)
+    type(status_t), intent(out) :: status    !! STAT_OK, or STAT_FAILED when a is singular [-]
     real(wp) :: adj(3,3), d
     adj(1,1) = a(2,2)*a(3,3) - a(2,3)*a(3,2)
     adj(1,2) = a(1,3)*a(3,2) - a(1,2)*a(3,3)
@@ -221,29 +220,24 @@ contains
     d = a(1,1)*adj(1,1) + a(1,2)*adj(2,1) + a(1,3)*adj(3,1)
     if (is_singular3(a, d)) then
       ainv = 0.0_wp
-      stat = STAT_FAILED
-      errmsg = 'inv3: singular 3x3 matrix'
+      call status%fail(STAT_FAILED, 'inv3: singular 3x3 matrix')
       return
     end if
     ainv = adj/d
-    stat = STAT_OK
-    errmsg = ''
   end subroutine inv3
 
   !> Solve a x = rhs for a 3x3 matrix by Cramer's rule, with the singularity check of `inv3`.
-  pure subroutine solve3(a, rhs, x, stat, errmsg)
+  pure subroutine solve3(a, rhs, x, status)
     real(wp), intent(in) :: a(3,3)           !! matrix [any unit]
     real(wp), intent(in) :: rhs(3)           !! right-hand side [any unit]
     real(wp), intent(out) :: x(3)            !! solution [unit(rhs)/unit(a)]; zero when singular
-    integer, intent(out) :: stat             !! 0 on success, 1 when a is singular
-    character(len=*), intent(out) :: errmsg  !! error message ('' on success)
+    type(status_t), intent(out) :: status    !! STAT_OK, or STAT_FAILED when a is singular [-]
     real(wp) :: d, m(3,3)
     integer :: k
     d = det3(a)
     if (is_singular3(a, d)) then
       x = 0.0_wp
-      stat = STAT_FAILED
-      errmsg = 'solve3: singular 3x3 matrix'
+      call status%fail(STAT_FAILED, 'solve3: singular 3x3 matrix')
       return
     end if
     do k = 1, 3
@@ -251,8 +245,6 @@ contains
       m(:,k) = rhs
       x(k) = det3(m)/d
     end do
-    stat = STAT_OK
-    errmsg = ''
   end subroutine solve3
 
   ! =====================================================================================
@@ -398,7 +390,7 @@ contains
   !> Build the geometry of one gear from its six hard points, given in the GEAR frame at the
   !! nominal (uncrushed) configuration. Rejects zero-length struts, coincident points and a
   !! gear whose footpad Jacobian is singular at the nominal configuration.
-  pure subroutine build_gear_geometry(a, b, c, d, e, f, geom, stat, errmsg)
+  pure subroutine build_gear_geometry(a, b, c, d, e, f, geom, status)
     real(wp), intent(in) :: a(3)                  !! primary upper universal joint [m]
     real(wp), intent(in) :: b(3)                  !! left secondary upper universal joint [m]
     real(wp), intent(in) :: c(3)                  !! right secondary upper universal joint [m]
@@ -406,8 +398,7 @@ contains
     real(wp), intent(in) :: e(3)                  !! left secondary lower joint on the primary [m]
     real(wp), intent(in) :: f(3)                  !! right secondary lower joint on the primary [m]
     type(gear_geometry_t), intent(out) :: geom    !! gear geometry
-    integer, intent(out) :: stat                  !! 0 on success, 1 on degenerate geometry
-    character(len=*), intent(out) :: errmsg       !! error message ('' on success)
+    type(status_t), intent(out) :: status         !! STAT_OK, or STAT_FAILED on degenerate geometry [-]
     character(len=1), parameter :: names(6) = ['a', 'b', 'c', 'd', 'e', 'f']
     real(wp) :: pts(3,6), scale, tol, j2(3,3), j3(3,3), jj(3,3)
     integer :: i, k
@@ -421,17 +412,15 @@ contains
       end do
     end do
     if (.not. (scale > 0.0_wp)) then
-      stat = STAT_FAILED
-      errmsg = 'build_gear_geometry: all hard points coincide'
+      call status%fail(STAT_FAILED, 'build_gear_geometry: all hard points coincide')
       return
     end if
     tol = coincident_tol*scale
     do i = 1, 5
       do k = i + 1, 6
         if (norm3(pts(:,k) - pts(:,i)) <= tol) then
-          stat = STAT_FAILED
-          errmsg = 'build_gear_geometry: hard points ' // names(i) // ' and ' // names(k) // &
-                   ' coincide (zero-length strut or degenerate gear)'
+          call status%fail(STAT_FAILED, 'build_gear_geometry: hard points ' // names(i) // ' and ' // names(k) // &
+                           ' coincide (zero-length strut or degenerate gear)')
           return
         end if
       end do
@@ -453,28 +442,25 @@ contains
     geom%q0(iq_db1) = geom%Lb0
     geom%q0(iq_dc1) = geom%Lc0
 
-    call footpad_jacobians(geom, geom%q0, j2, j3, jj, stat, errmsg)
-    if (stat /= 0) then
-      errmsg = 'build_gear_geometry: the gear is not a rigid structure at the nominal ' // &
-               'configuration (singular footpad Jacobian)'
+    call footpad_jacobians(geom, geom%q0, j2, j3, jj, status)
+    if (.not. status%ok()) then
+      call status%fail(status%code, 'build_gear_geometry: the gear is not a rigid structure at the nominal ' // &
+                       'configuration (singular footpad Jacobian)')
       return
     end if
-    stat = STAT_OK
-    errmsg = ''
   end subroutine build_gear_geometry
 
   !> Footpad Jacobians of eq. 7 at the primary coordinates (d1, th1, th2) of q (the secondary
   !! entries of q are not used): J2 = d(d)/d(d1,th1,th2), J3 = d(d1,db1,dc1)/d(d1,th1,th2) with
   !! db1 = |e_pri - b|, dc1 = |f_pri - c|, and J = J2 J3^{-1} (strut length rates -> footpad
-  !! velocity, gear frame). stat /= 0 when J3 or J2 is singular (J is then zero).
-  pure subroutine footpad_jacobians(geom, q, j2, j3, j, stat, errmsg)
+  !! velocity, gear frame). STAT_FAILED when J3 or J2 is singular (J is then zero).
+  pure subroutine footpad_jacobians(geom, q, j2, j3, j, status)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: q(n_gear_q)        !! generalized coordinates [m, rad]
     real(wp), intent(out) :: j2(3,3)           !! d(d)/d(d1,th1,th2) [-, m/rad]
     real(wp), intent(out) :: j3(3,3)           !! d(d1,db1,dc1)/d(d1,th1,th2) [-, m/rad]
     real(wp), intent(out) :: j(3,3)            !! J2 J3^{-1} [-]
-    integer, intent(out) :: stat               !! 0 on success, 1 when J2 or J3 is singular
-    character(len=*), intent(out) :: errmsg    !! error message ('' on success)
+    type(status_t), intent(out) :: status      !! STAT_OK, or STAT_FAILED when J2 or J3 is singular [-]
     real(wp) :: w(3,3), w1(3,3), w2(3,3), w11(3,3), w12(3,3), w22(3,3), rp(3,3)
     real(wp) :: u(3), u1(3), u2(3), u11(3), u12(3), u22(3)
     real(wp) :: r(3), lr, j3inv(3,3), d1
@@ -501,21 +487,18 @@ contains
     j3(3,2) = dot_product(r, matmul(geom%R0p, matmul(w1, geom%f_loc)))/lr
     j3(3,3) = dot_product(r, matmul(geom%R0p, matmul(w2, geom%f_loc)))/lr
 
-    call inv3(j3, j3inv, stat, errmsg)
-    if (stat /= 0) then
+    call inv3(j3, j3inv, status)
+    if (.not. status%ok()) then
       j = 0.0_wp
-      errmsg = 'footpad_jacobians: J3 is singular (secondary struts cannot fix the primary)'
+      call status%fail(status%code, 'footpad_jacobians: J3 is singular (secondary struts cannot fix the primary)')
       return
     end if
     if (is_singular3(j2, det3(j2))) then
       j = 0.0_wp
-      stat = STAT_FAILED
-      errmsg = 'footpad_jacobians: J2 is singular (zero primary length or th2 = +-pi/2)'
+      call status%fail(STAT_FAILED, 'footpad_jacobians: J2 is singular (zero primary length or th2 = +-pi/2)')
       return
     end if
     j = matmul(j2, j3inv)
-    stat = STAT_OK
-    errmsg = ''
   end subroutine footpad_jacobians
 
   ! =====================================================================================

@@ -1,12 +1,15 @@
 !> The one place where LANDYN calls LAPACK (and the small unblocked Cholesky of landyn_small_spd,
 !! which replaces LAPACK's dpotf2 and BLAS dtrsv bit for bit at the orders of the time loop).
-!! Each wrapper turns LAPACK's INFO into a status and a message. Arrays are overwritten as LAPACK
-!! does (factorisation in A, solution in B). The matrix is passed with an explicit leading
+!! Each wrapper turns LAPACK's INFO into a status_t (code INFO, a message naming the system; the
+!! status is left alone on success). Arrays are overwritten as LAPACK does (factorisation in A,
+!! solution in B). The matrix is passed with an explicit leading
 !! dimension so that callers hand over a whole (contiguous) work array and no temporary copy is
 !! made: no allocation in the time loop.
 module landyn_lapack
   use landyn_kinds, only: wp
   use landyn_small_spd, only: small_upper_factor, small_upper_solve
+  use landyn_status, only: status_t
+  use landyn_strings, only: int_text
   implicit none
   private
 
@@ -48,125 +51,123 @@ module landyn_lapack
 contains
 
   !> Solves A X = B for a general square A by LU with partial pivoting (LAPACK dgesv).
-  subroutine solve_general(n, a, lda, b, stat, errmsg, what)
+  subroutine solve_general(n, a, lda, b, status, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! matrix in a(1:n,1:n); overwritten by its LU factors [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: ipiv(n), info
     call dgesv(n, 1, a, lda, ipiv, b, n, info)
-    stat = info
     if (info > 0) then
-      write (errmsg, '(a,a,i0,a,i0,a)') trim(what), ': matrix is singular (LAPACK dgesv: U(', info, ',', &
-        info, ') = 0)'
+      call status%fail(info, trim(what)//': matrix is singular (LAPACK dgesv: U('//int_text(info)//','// &
+        int_text(info)//') = 0)')
     else if (info < 0) then
-      call illegal_argument(info, 'dgesv', what, errmsg)
+      call illegal_argument(info, 'dgesv', what, status)
     end if
   end subroutine solve_general
 
   !> Solves A X = B for a symmetric positive-definite A by Cholesky (LAPACK dposv, upper triangle used).
-  subroutine solve_spd(n, a, lda, b, stat, errmsg, what)
+  subroutine solve_spd(n, a, lda, b, status, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in a(1:n,1:n) (upper triangle used);
                                                    !! overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
     call dposv('U', n, 1, a, lda, b, n, info)
-    stat = info
-    call spd_info(info, 'LAPACK dposv', what, constraint_hint, errmsg)
+    if (info /= 0) call spd_info(info, 'LAPACK dposv', what, constraint_hint, status)
   end subroutine solve_spd
 
   !> Solves A x = b for a small symmetric positive-definite A with the unblocked Cholesky factor and
   !! triangular solves of landyn_small_spd: bit-identical to LAPACK's dpotf2 and BLAS dtrsv, without
   !! their argument handling, which dominates at the sizes of a gear's DAE (order 6 to 9).
-  subroutine solve_spd_unblocked(n, a, lda, b, stat, errmsg, what)
+  subroutine solve_spd_unblocked(n, a, lda, b, status, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix (upper triangle used); overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    integer, intent(out) :: stat                   !! 0 on success, the failing minor's order otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code the failing minor's order and
+                                                   !! message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky(.true., n, a, lda, stat, errmsg, what, constraint_hint)
-    if (stat /= 0) return
+    integer :: info
+    call cholesky(.true., n, a, lda, info, status, what, constraint_hint)
+    if (info /= 0) return
     call small_upper_solve(n, a, lda, b, .true.)
     call small_upper_solve(n, a, lda, b, .false.)
   end subroutine solve_spd_unblocked
 
   !> Cholesky factorisation of a symmetric positive-definite A (LAPACK dpotrf, upper triangle),
   !! for repeated solves with landyn_small_spd's small_upper_solve_multi.
-  subroutine factor_spd(n, a, lda, stat, errmsg, what)
+  subroutine factor_spd(n, a, lda, status, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, its Cholesky factor out [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky(.false., n, a, lda, stat, errmsg, what, constraint_hint)
+    integer :: info
+    call cholesky(.false., n, a, lda, info, status, what, constraint_hint)
   end subroutine factor_spd
 
   !> Cholesky factorisation A = R^T R of a small symmetric positive-definite A, unblocked (upper
   !! triangle; landyn_small_spd's small_upper_factor, bit-identical to LAPACK's dpotf2), for the
   !! triangular solves of landyn_small_spd.
-  subroutine factor_spd_unblocked(n, a, lda, stat, errmsg, what)
+  subroutine factor_spd_unblocked(n, a, lda, status, what)
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, its factor R out (upper triangle) [any]
-    integer, intent(out) :: stat                   !! 0 on success, the failing minor's order otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code the failing minor's order and
+                                                   !! message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
-    call cholesky(.true., n, a, lda, stat, errmsg, what, '')
+    integer :: info
+    call cholesky(.true., n, a, lda, info, status, what, '')
   end subroutine factor_spd_unblocked
 
   !> Upper Cholesky factor of A, unblocked (small_upper_factor, dpotf2's operations) or blocked
-  !! (LAPACK dpotrf); stat = INFO and its message (spd_info, `hint` after the minor's number).
-  subroutine cholesky(unblocked, n, a, lda, stat, errmsg, what, hint)
+  !! (LAPACK dpotrf); info = INFO, and on failure the status (spd_info, `hint` after the minor's number).
+  subroutine cholesky(unblocked, n, a, lda, info, status, what, hint)
     logical, intent(in) :: unblocked               !! small_upper_factor rather than dpotrf [-]
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, R out (upper triangle) [any]
-    integer, intent(out) :: stat                   !! 0 on success, LAPACK INFO otherwise [-]
-    character(len=*), intent(inout) :: errmsg      !! message on failure [-]
+    integer, intent(out) :: info                   !! 0 on success, LAPACK INFO otherwise [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; code INFO and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number in the message [-]
     if (unblocked) then
-      call small_upper_factor(n, a, lda, stat)
-      if (stat /= 0) call spd_info(stat, 'unblocked Cholesky', what, hint, errmsg)
+      call small_upper_factor(n, a, lda, info)
+      if (info /= 0) call spd_info(info, 'unblocked Cholesky', what, hint, status)
     else
-      call dpotrf('U', n, a, lda, stat)
-      if (stat /= 0) call spd_info(stat, 'LAPACK dpotrf', what, hint, errmsg)
+      call dpotrf('U', n, a, lda, info)
+      if (info /= 0) call spd_info(info, 'LAPACK dpotrf', what, hint, status)
     end if
   end subroutine cholesky
 
-  !> The message of a Cholesky routine's INFO (nothing for INFO = 0).
-  subroutine spd_info(info, routine, what, hint, errmsg)
-    integer, intent(in) :: info                    !! LAPACK INFO [-]
+  !> The status of a Cholesky routine's nonzero INFO: code INFO and its message.
+  subroutine spd_info(info, routine, what, hint, status)
+    integer, intent(in) :: info                    !! LAPACK INFO, /= 0 [-]
     character(len=*), intent(in) :: routine        !! factorisation, e.g. 'LAPACK dpotrf' [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number [-]
-    character(len=*), intent(inout) :: errmsg      !! message [-]
+    type(status_t), intent(inout) :: status        !! receives code and message [-]
     if (info > 0) then
-      write (errmsg, '(a,a,a,a,i0,a,a,a)') trim(what), ': matrix is not positive definite (', routine, &
-        ': leading minor ', info, ' is not positive', hint, ')'
+      call status%fail(info, trim(what)//': matrix is not positive definite ('//routine//': leading minor '// &
+        int_text(info)//' is not positive'//hint//')')
     else if (info < 0) then
-      call illegal_argument(info, routine, what, errmsg)
+      call illegal_argument(info, routine, what, status)
     end if
   end subroutine spd_info
 
-  !> The message of a negative LAPACK INFO.
-  subroutine illegal_argument(info, routine, what, errmsg)
+  !> The status of a negative LAPACK INFO: code INFO and its message.
+  subroutine illegal_argument(info, routine, what, status)
     integer, intent(in) :: info                    !! LAPACK INFO, < 0 [-]
     character(len=*), intent(in) :: routine        !! LAPACK routine [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
-    character(len=*), intent(inout) :: errmsg      !! message [-]
-    write (errmsg, '(a,a,i0,a,a)') trim(what), ': illegal argument ', -info, ' to LAPACK ', routine
+    type(status_t), intent(inout) :: status        !! receives code and message [-]
+    call status%fail(info, trim(what)//': illegal argument '//int_text(-info)//' to LAPACK '//routine)
   end subroutine illegal_argument
 
 end module landyn_lapack

@@ -11,7 +11,7 @@
 !! landyn_integrator_names) when CMake configures, again whenever this file changes; the unit test
 !! test_registries checks the copy against the walk.
 module landyn_integrators
-  use landyn_status, only: STAT_INPUT, STAT_OK
+  use landyn_status, only: STAT_INPUT, status_t
   use landyn_config, only: landyn_input_t
   use landyn_law_checks, only: law_build_t
   use landyn_integrator, only: integrator_t, integrator_build_t
@@ -22,19 +22,18 @@ module landyn_integrators
 
 contains
 
-  !> The integrator named by &simulation integrator (case-insensitive). stat = STAT_INPUT and
-  !! errmsg naming the known integrators for an unknown name.
-  subroutine make_integrator(inp, integ, stat, errmsg)
+  !> The integrator named by &simulation integrator (case-insensitive). STAT_INPUT with a
+  !! message naming the known integrators for an unknown name.
+  subroutine make_integrator(inp, integ, status)
     type(landyn_input_t), intent(in) :: inp                    !! resolved, validated input
     class(integrator_t), allocatable, intent(out) :: integ     !! the integrator
-    integer, intent(out) :: stat                               !! STAT_OK, STAT_INPUT for an unknown name
-    character(len=*), intent(inout) :: errmsg                  !! message on failure
+    type(status_t), intent(out) :: status                      !! STAT_OK, or STAT_INPUT for an unknown name [-]
     type(integrator_build_t) :: b
-    call b%make(walk, 'simulation', inp%simulation%integrator, stat, errmsg, var='integrator', noun='integrators')
-    if (stat == STAT_OK) then
+    call b%make(walk, 'simulation', inp%simulation%integrator, status, var='integrator', noun='integrators')
+    if (status%ok()) then
       call move_alloc(b%integ, integ)
     else
-      stat = STAT_INPUT
+      call status%fail(STAT_INPUT, status%text())
     end if
   end subroutine make_integrator
 

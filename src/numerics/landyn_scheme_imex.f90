@@ -25,7 +25,7 @@
 !! directions) would change under the unit force, or is rigid, gets no correction. The tangential
 !! friction force is left explicit.
 module landyn_scheme_imex
-  use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q
+  use landyn_kinds, only: wp, max_gears, max_gear_q
   use landyn_status, only: STAT_OK, status_t
   use landyn_kinematics, only: cross3, mv3, mtv3
   use landyn_body, only: body_t, body_point_velocity, body_point_acceleration
@@ -66,9 +66,8 @@ contains
     type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
     type(body_t) :: body
     real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), dir(3), fb_u(3), mb_u(3), fb_l(3), pos(3), vel(3), a_fp(3)
-    integer :: i, nq, stat
+    integer :: i, nq
     logical :: ok
-    character(len=msg_len) :: m2
     rsp%n_off = 0
     body = sim%model%body
     body%acc = ev%acc_field
@@ -84,10 +83,10 @@ contains
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
         rsp%n(:, i) = surface_normal(sim%model%par%plane(i))
         dir = mtv3(rg, mtv3(r, rsp%n(:, i)))
-        call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, stat, m2, ev%dt, &
+        call g%footpad_response(ev%gear(i), ffoot, field, dir, rsp%qdd_u(:, i), fb_u, mb_u, ok, st, ev%dt, &
                                 mtv3(rg, ev%alpha_field))
-        if (stat /= STAT_OK) then
-          call st%fail(stat, trim(m2), 'imex: gear', ev%t, i)
+        if (st%code /= STAT_OK) then
+          call st%add_context('imex: gear', ev%t, i)
           return
         end if
         if (.not. ok) then

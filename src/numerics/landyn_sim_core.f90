@@ -16,7 +16,7 @@
 !!   6. body accelerations from gravity, thrust and the gear forces, then the body step;
 !!   4. gear step with the direct constraint-violation correction.
 module landyn_sim_core
-  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q, g_earth, rad2deg
+  use landyn_kinds, only: wp, max_gears, max_struts, max_gear_q, g_earth, rad2deg
   use landyn_config, only: landyn_input_t
   use landyn_kinematics, only: cross3, mv3, mtv3
   use landyn_body, only: body_t, body_accelerations, body_point_position, body_point_velocity, &
@@ -247,10 +247,9 @@ contains
     type(body_t), intent(inout) :: body         !! the body: its accelerations, the field in, the new ones out [-]
     type(sim_eval_t), intent(inout) :: ev       !! the evaluation: the gears' part and the field set [-]
     type(status_t), intent(inout) :: st         !! STAT_OK on entry; a gear's failure with its context [-]
-    integer :: ng, i, ns, nq, stat
+    integer :: ng, i, ns, nq
     logical :: locked(max_struts)
     real(wp) :: r(3, 3), rg(3, 3), field(3), ffoot(3), force(3), moment(3), fb_l(3), gf(3, max_gears), gm(3, max_gears)
-    character(len=msg_len) :: m2
 
     ng = sim%model%par%n_gears
     associate (model => sim%model)
@@ -264,9 +263,9 @@ contains
         rg = model%par%rot(:, :, i)
         field = mtv3(rg, mtv3(r, model%par%g_vec) - body_point_acceleration(body, model%par%point_a(:, i)))
         ffoot = mtv3(rg, mtv3(r, ev%fground(:, i)))
-        call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, stat, m2, dt, mtv3(rg, body%alpha), loads)
-        if (stat /= STAT_OK) then
-          call st%fail(stat, trim(m2), 'gear', t, i)
+        call model%gear(i)%g%evaluate(ev%gear(i), ffoot, field, st, dt, mtv3(rg, body%alpha), loads)
+        if (st%code /= STAT_OK) then
+          call st%add_context('gear', t, i)
           return
         end if
         ns = model%par%n_struts(i)

@@ -6,7 +6,7 @@
 !! legs' energy for the audit. The time integration that works on them is landyn_sim_core.
 module landyn_sim_model
   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-  use landyn_kinds, only: wp, msg_len, max_gears, max_struts, max_gear_q
+  use landyn_kinds, only: wp, max_gears, max_struts, max_gear_q
   use landyn_strings, only: int_text
   use landyn_config, only: landyn_input_t, is_set
   use landyn_kinematics, only: cross3, mv3
@@ -244,16 +244,14 @@ contains
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its laws, planes, footpads are set [-]
     type(status_t), intent(inout) :: st         !! STAT_OK, or a law's failure with its message [-]
-    integer :: stat
-    character(len=msg_len) :: m2
 
-    call make_contact_law(inp%contact, model%par%contact, stat, m2)
-    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
-    call make_friction_law(inp%friction, model%par%friction, stat, m2)
-    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
+    call make_contact_law(inp%contact, model%par%contact, st)
+    if (.not. st%ok()) return
+    call make_friction_law(inp%friction, model%par%friction, st)
+    if (.not. st%ok()) return
     model%footpad = footpad_state_t()
-    call make_terrain_planes(inp%terrain, model%par%plane(1:model%par%n_gears), stat, m2)
-    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
+    call make_terrain_planes(inp%terrain, model%par%plane(1:model%par%n_gears), st)
+    if (.not. st%ok()) return
   end subroutine make_laws
 
   !> The input's gears, of the type &gears gear_type names (made by the gear-type registry,
@@ -262,13 +260,12 @@ contains
     type(landyn_input_t), intent(in) :: inp     !! resolved, validated input [-]
     type(model_t), intent(inout) :: model       !! model with n_gears set; its gears are set [-]
     type(status_t), intent(inout) :: st         !! STAT_OK, or the gear type's failure with its message [-]
-    integer :: i, stat
-    character(len=msg_len) :: m2
+    integer :: i
 
     do i = 1, model%par%n_gears
       model%par%point_a(:, i) = inp%gears%point_a(:, i)
-      call make_gear(inp, i, model%gear(i)%g, stat, m2)
-      if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
+      call make_gear(inp, i, model%gear(i)%g, st)
+      if (.not. st%ok()) return
       call gear_counts(model, i)
     end do
   end subroutine build_gears
@@ -307,8 +304,7 @@ contains
     type(model_t), intent(inout) :: model       !! model with its gears and planes set; its body is set [-]
     type(status_t), intent(inout) :: st         !! STAT_OK, or the body's failure with its message [-]
     real(wp) :: x_ol(3), dz, xd(3), pos(3), vel(3)
-    integer :: i, stat
-    character(len=msg_len) :: m2
+    integer :: i
 
     if (all(is_set(inp%initial%position))) then
       x_ol = inp%initial%position
@@ -317,8 +313,8 @@ contains
     end if
     call body_init(model%body, inp%lander%mass, &
       inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
-      inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-    if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
+      inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, st)
+    if (.not. st%ok()) return
     if (.not. all(is_set(inp%initial%position))) then
       dz = huge(1.0_wp)
       do i = 1, model%par%n_gears
@@ -330,8 +326,8 @@ contains
       x_ol = [0.0_wp, 0.0_wp, dz]
       call body_init(model%body, inp%lander%mass, &
         inertia_tensor(inp%lander%ixx, inp%lander%iyy, inp%lander%izz, inp%lander%ixy, inp%lander%ixz, inp%lander%iyz), &
-        inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, stat, m2)
-      if (stat /= 0) then; call st%fail(stat, trim(m2)); return; end if
+        inp%lander%mass_centre, x_ol, inp%initial%velocity, inp%initial%attitude, inp%initial%angular_rate, st)
+      if (.not. st%ok()) return
     end if
     model%body%acc = model%par%g_vec     ! free fall before touchdown
     do i = 1, model%par%n_gears

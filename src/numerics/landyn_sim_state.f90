@@ -15,7 +15,7 @@
 !! at rest (rigid) does not move: it has no entries to scatter and is skipped by the increments and
 !! projections (`moving`).
 module landyn_sim_state
-  use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q, max_struts
+  use landyn_kinds, only: wp, max_gears, max_gear_q, max_struts
   use landyn_status, only: STAT_OK, status_t
   use landyn_body, only: body_increment
   use landyn_impact, only: system_velocity_projection
@@ -156,14 +156,13 @@ contains
     logical, intent(in) :: moving(max_gears)    !! gear i moves [-]
     real(wp), intent(in) :: t                   !! time of the state (messages) [s]
     type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
-    integer :: i, stat
-    character(len=msg_len) :: m2
+    integer :: i
     do i = 1, sim%model%par%n_gears
       if (.not. moving(i)) cycle
       call sim%model%gear(i)%g%correct_positions(sim%par%constraint_tol, sim%par%max_correction_iter, &
-                                                 sim%par%max_constraint_drift, stat, m2)
-      if (stat /= STAT_OK) then
-        call st%fail(stat, trim(m2), 'gear', t, i)
+                                                 sim%par%max_constraint_drift, st)
+      if (st%code /= STAT_OK) then
+        call st%add_context('gear', t, i)
         return
       end if
     end do
@@ -177,12 +176,10 @@ contains
     real(wp), intent(in) :: t                   !! time of the state (messages) [s]
     type(status_t), intent(out) :: st           !! STAT_OK, or the projection's failure with its context [-]
     real(wp) :: e_imp
-    integer :: stat
-    character(len=msg_len) :: m2
     call system_velocity_projection(sim%model%body, sim%model%gear, sim%model%par%n_gears, &
-                                    sim%par%constraint_tol, e_imp, stat, m2)
-    if (stat /= STAT_OK) then
-      call st%fail(stat, trim(m2), 'velocity projection', t)
+                                    sim%par%constraint_tol, e_imp, st)
+    if (st%code /= STAT_OK) then
+      call st%add_context('velocity projection', t)
       return
     end if
     sim%rec%w_impact = sim%rec%w_impact + e_imp
@@ -195,17 +192,16 @@ contains
     type(sim_eval_t), intent(in) :: ev          !! the evaluation the step was taken with
     real(wp), intent(in) :: t                   !! time reached (messages) [s]
     type(status_t), intent(out) :: st           !! STAT_OK, or the gear's failure with its context [-]
-    integer :: i, ng, stat
-    character(len=msg_len) :: m2
+    integer :: i, ng
     ng = sim%model%par%n_gears
     sim%model%footpad(1:ng) = ev%trial(1:ng)
     sim%state%xd_stick(:, 1:ng) = ev%xd(:, 1:ng)   ! the positions those stick states belong to
     sim%state%t_stick = ev%t                       ! and their time
     do i = 1, ng
       call sim%model%gear(i)%g%settle()
-      call sim%model%gear(i)%g%prepare(stat, m2)
-      if (stat /= STAT_OK) then
-        call st%fail(stat, trim(m2), 'gear', t, i)
+      call sim%model%gear(i)%g%prepare(st)
+      if (st%code /= STAT_OK) then
+        call st%add_context('gear', t, i)
         return
       end if
     end do

@@ -5,7 +5,6 @@ module landyn_simulation
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_config, only: landyn_input_t
-  use landyn_kinds, only: msg_len
   use landyn_status, only: status_t
   use landyn_sim_core, only: sim_result_t, sim_t, sim_snapshot_t, sim_init, sim_step, &
                              sim_save, sim_restore, n_energy, energy_names
@@ -34,18 +33,13 @@ contains
     class(integrator_t), allocatable :: integ
     logical :: done
     integer(int64) :: c0, c1, crate
-    integer :: stat
-    character(len=msg_len) :: m2
 
     call system_clock(c0, crate)
     call sim_init(inp, sim, res, st)
     if (.not. st%ok()) return
     if (present(loads)) sim%par%loads = loads
-    call make_integrator(inp, integ, stat, m2)
-    if (stat /= 0) then
-      call st%fail(stat, trim(m2))
-      return
-    end if
+    call make_integrator(inp, integ, st)
+    if (.not. st%ok()) return
     call integ%start(sim, inp, res, st)
     if (.not. st%ok()) return
     do

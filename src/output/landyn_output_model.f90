@@ -7,8 +7,8 @@
 !! are: a new law reports its own), the mass centre, the mass, gravity, the friction coefficients,
 !! the terrain planes and the touchdown state.
 module landyn_output_model
-  use landyn_kinds, only: wp, rad2deg, msg_len
-  use landyn_status, only: STAT_OK
+  use landyn_kinds, only: wp, rad2deg
+  use landyn_status, only: STAT_OK, status_t
   use landyn_config, only: landyn_input_t
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t
   use landyn_simulation, only: sim_result_t
@@ -109,7 +109,7 @@ stat, errmsg)
     real(wp), allocatable :: upper(:, :, :), lower(:, :, :), frame(:, :, :, :)
     real(wp) :: rot(3, 3), pts(3, 6), r0(3, 3, 3)
     type(gear_geometry_t) :: geom
-    character(len=msg_len) :: m2
+    type(status_t) :: gst
     character(len=1), parameter :: axis_names(3) = ['x', 'y', 'z']
     integer :: i, k, n3
 
@@ -129,9 +129,10 @@ stat, errmsg)
       lower(:, 1:n3, i) = pts(:, 4:3 + n3)
       rot = rot_z(inp%gears%rotation(i))
       pts = matmul(transpose(rot), pts)            ! lander frame -> gear frame
-      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, stat, m2)
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), geom, gst)
+      stat = gst%code
       if (stat /= STAT_OK) then
-        write (errmsg, '(a,i0,a,a)') '/model: gear ', i, ': ', trim(m2)
+        write (errmsg, '(a,i0,a,a)') '/model: gear ', i, ': ', gst%text()
         return
       end if
       r0(:, :, 1) = matmul(rot, geom%R0p)          ! gear frame -> lander axes

@@ -8,9 +8,9 @@
 !! angles advance with eq. 10's rate transform. Integration is semi-implicit Euler (velocities
 !! first, then positions with the new velocities), the "direct integration" of the paper.
 module landyn_body
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_kinematics, only: rot_zyx, euler_rate_matrix, cross3, mv3, mtv3, det3, inv3
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_FAILED, status_t
   implicit none
   private
 
@@ -45,7 +45,7 @@ contains
 
   !> Initialises the body. x_ol is the lander-frame origin in the global frame; v is the
   !! mass-centre velocity.
-  subroutine body_init(body, mass, inertia, mc, x_ol, v, euler, omega, stat, errmsg)
+  subroutine body_init(body, mass, inertia, mc, x_ol, v, euler, omega, status)
     type(body_t), intent(out) :: body          !! body
     real(wp), intent(in) :: mass               !! mass [kg]
     real(wp), intent(in) :: inertia(3, 3)      !! inertia tensor about the mass centre [kg m^2]
@@ -54,25 +54,21 @@ contains
     real(wp), intent(in) :: v(3)               !! mass-centre velocity, global [m/s]
     real(wp), intent(in) :: euler(3)           !! Z-Y-X Euler angles [rad]
     real(wp), intent(in) :: omega(3)           !! body rates [rad/s]
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! message
+    type(status_t), intent(out) :: status      !! STAT_OK, or STAT_FAILED with the reason [-]
     real(wp) :: det, t(3, 3)
-    character(len=msg_len) :: m2
-    stat = STAT_OK
+    type(status_t) :: ist
     body%mass = mass
     body%inertia = inertia
     body%mc = mc
     t = inertia
     det = det3(t)
     if (det <= 0.0_wp) then
-      stat = STAT_FAILED
-      errmsg = 'body_init: inertia tensor is singular'
+      call status%fail(STAT_FAILED, 'body_init: inertia tensor is singular')
       return
     end if
-    call inv3(t, body%inv_inertia, stat, m2)
-    if (stat /= STAT_OK) then
-      stat = STAT_FAILED
-      errmsg = 'body_init: inertia tensor is singular'
+    call inv3(t, body%inv_inertia, ist)
+    if (.not. ist%ok()) then
+      call status%fail(STAT_FAILED, 'body_init: inertia tensor is singular')
       return
     end if
     body%euler = euler

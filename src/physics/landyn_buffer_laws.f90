@@ -11,7 +11,7 @@
 module landyn_buffer_laws
   use landyn_config, only: primary_cfg_t, secondary_cfg_t
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: status_t
   use landyn_buffer, only: buffer_law_t
   use landyn_buffer_build, only: buffer_build_t
   use landyn_law_checks, only: law_build_t
@@ -23,20 +23,19 @@ module landyn_buffer_laws
 contains
 
   !> Build the buffer law of the primary strut (primary) or of the secondary struts, named by
-  !! pri%buffer_law or sec%buffer_law (case-insensitive). stat = STAT_FAILED and errmsg set for an
+  !! pri%buffer_law or sec%buffer_law (case-insensitive). STAT_FAILED with its message for an
   !! unknown name or invalid parameters (the first problem found; law is then unallocated).
-  subroutine make_buffer_law(pri, sec, primary, law, stat, errmsg)
+  subroutine make_buffer_law(pri, sec, primary, law, status)
     type(primary_cfg_t), intent(in) :: pri                     !! resolved &primary_strut input
     type(secondary_cfg_t), intent(in) :: sec                   !! resolved &secondary_strut input
     logical, intent(in) :: primary                             !! the primary's law (else the secondaries') [-]
     class(buffer_law_t), allocatable, intent(out) :: law       !! the law
-    integer, intent(out) :: stat                               !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
+    type(status_t), intent(out) :: status                      !! STAT_OK, or STAT_FAILED with the reason [-]
     type(buffer_build_t) :: b
     call carry(b, pri, sec, primary)
-    call b%make(walk, strut_group(primary), chosen(pri, sec, primary), stat, errmsg, var='buffer_law', &
+    call b%make(walk, strut_group(primary), chosen(pri, sec, primary), status, var='buffer_law', &
                 noun='buffer laws')
-    if (stat == STAT_OK) call move_alloc(b%law, law)
+    if (status%ok()) call move_alloc(b%law, law)
   end subroutine make_buffer_law
 
   !> The law-dependent checks of &primary_strut and &secondary_strut, one message per problem in

@@ -10,7 +10,7 @@
 module landyn_contact
   use landyn_config, only: contact_cfg_t
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: status_t
   use landyn_law_checks, only: law_build_t
   use landyn_contact_law, only: contact_law_t, contact_build_t, contact_state_t, advance_contact_state
   use landyn_contact_base, only: base_contact_t, base_contact
@@ -26,17 +26,16 @@ module landyn_contact
 contains
 
   !> Build the law named by cfg%law (case-insensitive) from the &contact input.
-  !! stat = STAT_FAILED and errmsg set for an unknown name or invalid parameters (the first
-  !! problem found; law is then unallocated).
-  subroutine make_contact_law(cfg, law, stat, errmsg)
+  !! STAT_FAILED with its message for an unknown name or invalid parameters (the first problem
+  !! found; law is then unallocated).
+  subroutine make_contact_law(cfg, law, status)
     type(contact_cfg_t), intent(in) :: cfg                      !! resolved &contact input
     class(contact_law_t), allocatable, intent(out) :: law       !! the law
-    integer, intent(out) :: stat                                 !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
+    type(status_t), intent(out) :: status                        !! STAT_OK, or STAT_FAILED with the reason [-]
     type(contact_build_t) :: b
     b%cfg = cfg
-    call b%make(walk, 'contact', cfg%law, stat, errmsg)
-    if (stat == STAT_OK) then
+    call b%make(walk, 'contact', cfg%law, status)
+    if (status%ok()) then
       call move_alloc(b%law, law)
       law%name = b%key
     end if

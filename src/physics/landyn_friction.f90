@@ -9,7 +9,7 @@
 module landyn_friction
   use landyn_config, only: friction_cfg_t
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: status_t
   use landyn_law_checks, only: law_build_t
   use landyn_friction_law, only: friction_law_t, friction_build_t, friction_state_t, adams_step, opposing_force, &
                                  default_stribeck_speed
@@ -24,17 +24,16 @@ module landyn_friction
 contains
 
   !> Build the law named by cfg%law (case-insensitive) from the &friction input.
-  !! stat = STAT_FAILED and errmsg set for an unknown name or invalid parameters (the first
-  !! problem found; law is then unallocated).
-  subroutine make_friction_law(cfg, law, stat, errmsg)
+  !! STAT_FAILED with its message for an unknown name or invalid parameters (the first problem
+  !! found; law is then unallocated).
+  subroutine make_friction_law(cfg, law, status)
     type(friction_cfg_t), intent(in) :: cfg                      !! resolved &friction input
     class(friction_law_t), allocatable, intent(out) :: law       !! the law
-    integer, intent(out) :: stat                                 !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg                      !! reason of a failure, '' on success
+    type(status_t), intent(out) :: status                        !! STAT_OK, or STAT_FAILED with the reason [-]
     type(friction_build_t) :: b
     b%cfg = cfg
-    call b%make(walk, 'friction', cfg%law, stat, errmsg)
-    if (stat == STAT_OK) then
+    call b%make(walk, 'friction', cfg%law, status)
+    if (status%ok()) then
       call move_alloc(b%law, law)
       law%name = b%key
     end if

@@ -12,7 +12,7 @@
 !! max_struts and max_gear_q (landyn_kinds), the capacities the simulation's records are sized by.
 module landyn_gear_base
   use landyn_kinds, only: wp, max_struts, max_gear_q, max_gear_rows
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_OK, STAT_FAILED, status_t
   implicit none
   private
 
@@ -152,15 +152,15 @@ module landyn_gear_base
     !> Crush logic and accelerations of the committed state for a footpad force and the uniform
     !! field, into an evaluation record (every component set anew); the gear is not changed
     !! (commit makes it its state).
-    subroutine evaluate_iface(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
-      import :: gear_base_t, gear_eval_t, wp
+    subroutine evaluate_iface(gear, ge, f_foot, f_field, status, dt, alpha, loads)
+      import :: gear_base_t, gear_eval_t, wp, status_t
       class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
       ! inout, not out: the gear type resets the record itself (once, not once per layer)
       type(gear_eval_t), intent(inout) :: ge      !! the evaluation (previous contents replaced)
       real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
       real(wp), intent(in) :: f_field(3)          !! uniform field g - a_frame, gear frame [m/s^2]
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+      ! inout, not out: called per step; STAT_OK on entry, left alone on success
+      type(status_t), intent(inout) :: status     !! STAT_OK on entry; the failure's code and diagnosis [-]
       real(wp), intent(in), optional :: dt        !! coming time step (velocity-level locking) [s]
       real(wp), intent(in), optional :: alpha(3)  !! body angular acceleration, gear axes [rad/s^2]
       logical, intent(in), optional :: loads      !! compute the interface loads; default .true. [-]
@@ -193,14 +193,13 @@ module landyn_gear_base
 
     !> Projects the coordinates onto the position constraints (holonomic ones and locked strokes)
     !! and updates the crush history.
-    subroutine correct_iface(gear, tol, max_iter, max_drift, stat, errmsg)
-      import :: gear_base_t, wp
+    subroutine correct_iface(gear, tol, max_iter, max_drift, status)
+      import :: gear_base_t, wp, status_t
       class(gear_base_t), intent(inout) :: gear   !! gear
       real(wp), intent(in) :: tol                 !! correction tolerance [m]
       integer, intent(in) :: max_iter             !! iteration cap of the correction [-]
       real(wp), intent(in) :: max_drift           !! violation before correction that means the step is too large [m]
-      integer, intent(out) :: stat                !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+      type(status_t), intent(inout) :: status     !! STAT_OK on entry; the failure's code and diagnosis [-]
     end subroutine correct_iface
 
     !> After the system's velocity projection: a gear with all struts locked becomes rigid.
@@ -319,22 +318,19 @@ contains
 
   !> Sets the gear's strut and coordinate counts and its rotation, once, in the gear type's set-up
   !! (strut_count, coordinate_count and rotation return them; before it: no struts, no coordinates,
-  !! the identity). stat = STAT_FAILED, nothing set, for a count below 1 or beyond the capacities
-  !! the simulation's records are sized by (max_struts, max_gear_q).
-  pure subroutine set_layout(gear, n_struts, n_coordinates, rot, stat, errmsg)
+  !! the identity). STAT_FAILED, nothing set, for a count below 1 or beyond the capacities the
+  !! simulation's records are sized by (max_struts, max_gear_q).
+  pure subroutine set_layout(gear, n_struts, n_coordinates, rot, status)
     class(gear_base_t), intent(inout) :: gear   !! gear
     integer, intent(in) :: n_struts             !! number of struts, 1..max_struts [-]
     integer, intent(in) :: n_coordinates        !! number of generalized coordinates, 1..max_gear_q [-]
     real(wp), intent(in) :: rot(3, 3)           !! gear frame -> lander frame rotation [-]
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(out) :: status       !! STAT_OK, or STAT_FAILED with the diagnosis [-]
     character(len=160) :: text
-    stat = STAT_OK
     if (n_struts < 1 .or. n_struts > max_struts .or. n_coordinates < 1 .or. n_coordinates > max_gear_q) then
       write (text, '(a,i0,a,i0,a,i0,a,i0,a)') 'gear layout: ', n_struts, ' struts, ', n_coordinates, &
         ' coordinates; valid: 1..', max_struts, ', 1..', max_gear_q, ' (max_struts, max_gear_q)'
-      stat = STAT_FAILED
-      errmsg = trim(text)
+      call status%fail(STAT_FAILED, trim(text))
       return
     end if
     gear%layout_struts = n_struts
@@ -368,7 +364,7 @@ contains
   !! evaluation with the footpad force increased by df = max(1 N, 1e-4 |f_foot|) (the DAE is linear
   !! in the footpad force at fixed decisions; a gear type may override it with one more solve of its
   !! factorised system). ok = .false. (and the responses 0) when the decisions differ.
-  subroutine footpad_response(gear, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, stat, errmsg, dt, alpha)
+  subroutine footpad_response(gear, ge, f_foot, f_field, dir, qdd_u, f_body_u, m_body_u, ok, status, dt, alpha)
     class(gear_base_t), intent(in) :: gear      !! gear (unchanged)
     type(gear_eval_t), intent(in) :: ge         !! its evaluation at f_foot and f_field
     real(wp), intent(in) :: f_foot(3)           !! ground force on the footpad, gear frame [N]
@@ -378,20 +374,19 @@ contains
     real(wp), intent(out) :: f_body_u(3)        !! d f_body / dF, gear frame [-]
     real(wp), intent(out) :: m_body_u(3)        !! d m_body / dF, gear axes [m]
     logical, intent(out) :: ok                  !! the decisions did not change [-]
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(inout) :: status     !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp), intent(in), optional :: dt        !! the step of that evaluation (velocity-level locking) [s]
     real(wp), intent(in), optional :: alpha(3)  !! its body angular acceleration, gear axes [rad/s^2]
     type(gear_eval_t) :: g2
     real(wp) :: df
     integer :: ns
     df = max(1.0_wp, 1.0e-4_wp*norm2(f_foot))
-    call gear%evaluate(g2, f_foot + df*dir, f_field, stat, errmsg, dt, alpha, .false.)
+    call gear%evaluate(g2, f_foot + df*dir, f_field, status, dt, alpha, .false.)
     qdd_u = 0.0_wp
     f_body_u = 0.0_wp
     m_body_u = 0.0_wp
     ok = .false.
-    if (stat /= 0) return
+    if (status%code /= STAT_OK) return
     ns = gear%strut_count()
     ok = all(g2%locked(1:ns) .eqv. ge%locked(1:ns)) .and. all(g2%dir(1:ns) == ge%dir(1:ns)) &
          .and. (g2%rigid .eqv. ge%rigid)
@@ -505,20 +500,15 @@ contains
   !> Prepares what the next evaluation of a gear that has become rigid (settle) needs, its caches.
   !! Default, for a gear type without caches: checks that a rigid gear is at rest (the contract of
   !! settle and set_rates).
-  subroutine prepare(gear, stat, errmsg)
+  subroutine prepare(gear, status)
     class(gear_base_t), intent(inout) :: gear   !! gear
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg   !! diagnosis on failure
+    type(status_t), intent(inout) :: status     !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp) :: qd(max_gear_q)
     integer :: nq
-    stat = STAT_OK
     if (.not. gear%is_rigid()) return
     nq = gear%coordinate_count()
     call gear%rates(qd(1:nq))
-    if (any(abs(qd(1:nq)) > 0.0_wp)) then
-      stat = STAT_FAILED
-      errmsg = 'a rigid gear is not at rest'
-    end if
+    if (any(abs(qd(1:nq)) > 0.0_wp)) call status%fail(STAT_FAILED, 'a rigid gear is not at rest')
   end subroutine prepare
 
   !> The crush mode a strut has after the step of an evaluation (strut_mode of the mode it leaves the

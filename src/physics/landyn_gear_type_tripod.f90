@@ -7,6 +7,7 @@
 module landyn_gear_type_tripod
   use landyn_kinds, only: wp, msg_len
   use landyn_kinematics, only: rot_z, build_gear_geometry, gear_geometry_t
+  use landyn_status, only: status_t
   use landyn_strut, only: strut_mass_t
   use landyn_tripod_gear, only: tripod_gear_t, tripod_init
   use landyn_buffer, only: buffer_law_t
@@ -36,13 +37,12 @@ contains
     type(tripod_parts_t) :: p
     type(tripod_gear_t) :: tripod
     logical :: ok
-    integer :: stat
-    character(len=msg_len) :: m2
+    type(status_t) :: gst
     if (b%check_only) return
     call tripod_parts(b, p, ok)
     if (.not. ok) return
-    call tripod_init(tripod, p%geom, p%rot, p%sm, p%primary, p%secondary, stat, m2, p%tube)
-    if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
+    call tripod_init(tripod, p%geom, p%rot, p%sm, p%primary, p%secondary, gst, p%tube)
+    if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
     allocate (b%gear, source=tripod)
   end subroutine build
 
@@ -53,18 +53,18 @@ contains
     type(tripod_parts_t), intent(out) :: p   !! the parts
     logical, intent(out) :: ok               !! all parts made [-]
     real(wp) :: pts(3, 6)
-    integer :: stat
-    character(len=msg_len) :: m2, msg
+    character(len=msg_len) :: msg
+    type(status_t) :: gst
 
     ok = .false.
     associate (pri => b%inp%primary, sec => b%inp%secondary, g => b%inp%gears, i => b%i)
       call make_tube_friction(pri%tube_friction, pri%mu_tube, pri%tube_outer_length, pri%tube_inner_length, &
-                              pri%tube_leg_length, pri%tube_lever, p%tube, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
-      call make_buffer_law(pri, sec, .true., p%primary, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
-      call make_buffer_law(pri, sec, .false., p%secondary, stat, m2)
-      if (stat /= 0) then; call b%errors%add(trim(m2)); return; end if
+                              pri%tube_leg_length, pri%tube_lever, p%tube, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
+      call make_buffer_law(pri, sec, .true., p%primary, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
+      call make_buffer_law(pri, sec, .false., p%secondary, gst)
+      if (.not. gst%ok()) then; call b%errors%add(gst%text()); return; end if
       p%sm(1) = strut_mass_t(pri%outer_mass, pri%outer_cm, pri%outer_inertia, pri%inner_mass, pri%inner_cm, &
                              pri%inner_inertia, pri%footpad_mass)
       p%sm(2) = strut_mass_t(sec%outer_mass, sec%outer_cm, sec%outer_inertia, sec%inner_mass, sec%inner_cm, &
@@ -74,9 +74,9 @@ contains
       pts = reshape([g%point_a(:, i), g%point_b(:, i), g%point_c(:, i), g%point_d(:, i), g%point_e(:, i), &
                      g%point_f(:, i)], [3, 6])
       pts = matmul(transpose(p%rot), pts)          ! lander frame -> gear frame
-      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), p%geom, stat, m2)
-      if (stat /= 0) then
-        write (msg, '(a,i0,a,a)') '&gears: gear ', i, ': ', trim(m2)
+      call build_gear_geometry(pts(:, 1), pts(:, 2), pts(:, 3), pts(:, 4), pts(:, 5), pts(:, 6), p%geom, gst)
+      if (.not. gst%ok()) then
+        write (msg, '(a,i0,a,a)') '&gears: gear ', i, ': ', gst%text()
         call b%errors%add(trim(msg))
         return
       end if

@@ -10,7 +10,7 @@
 module landyn_gear_types
   use landyn_config, only: landyn_input_t
   use landyn_errors, only: input_errors_t
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: status_t
   use landyn_gear_base, only: gear_base_t
   use landyn_law_checks, only: law_build_t
   use landyn_gear_build, only: gear_build_t
@@ -22,19 +22,18 @@ module landyn_gear_types
 contains
 
   !> Build gear i of the input, of the type &gears gear_type names (case-insensitive), in its gear
-  !! frame. stat = STAT_FAILED and errmsg set for an unknown name or a gear that cannot be built
-  !! (the first problem found; gear is then unallocated).
-  subroutine make_gear(inp, i, gear, stat, errmsg)
+  !! frame. STAT_FAILED with its message for an unknown name or a gear that cannot be built (the
+  !! first problem found; gear is then unallocated).
+  subroutine make_gear(inp, i, gear, status)
     type(landyn_input_t), intent(in) :: inp                    !! resolved, validated input
     integer, intent(in) :: i                                   !! the gear, 1..n_gears [-]
     class(gear_base_t), allocatable, intent(out) :: gear       !! the gear
-    integer, intent(out) :: stat                               !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg                    !! reason of a failure, '' on success
+    type(status_t), intent(out) :: status                      !! STAT_OK, or STAT_FAILED with the reason [-]
     type(gear_build_t) :: b
     b%inp = inp
     b%i = i
-    call b%make(walk, 'gears', inp%gears%gear_type, stat, errmsg, var='gear_type', noun='gear types')
-    if (stat == STAT_OK) call move_alloc(b%gear, gear)
+    call b%make(walk, 'gears', inp%gears%gear_type, status, var='gear_type', noun='gear types')
+    if (status%ok()) call move_alloc(b%gear, gear)
   end subroutine make_gear
 
   !> The checks that depend on the gear type, one message per problem in the input validation's

@@ -36,11 +36,11 @@
 !! the compiler can use vector instructions (independent sums side by side), never by reordering a
 !! sum.
 module landyn_impact
-  use landyn_kinds, only: wp, msg_len, max_gears, max_gear_q, max_gear_rows
+  use landyn_kinds, only: wp, max_gears, max_gear_q, max_gear_rows
   use landyn_body, only: body_t
   use landyn_gear_base, only: gear_base_t, gear_slot_t
   use landyn_kinematics, only: mv3
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, status_t
   use landyn_lapack, only: factor_spd_unblocked
   use landyn_small_spd, only: small_upper_solve, small_upper_solve_rows, solve_rows_width
   implicit none
@@ -128,22 +128,19 @@ contains
   !> Projects the velocities of the body and all non-rigid gears onto the gears' velocity
   !! constraints in the kinetic metric of the whole system (a plastic impact, see the module
   !! header). Nothing is done when every residual |A_i qd_i| is within `tol`.
-  subroutine system_velocity_projection(body, gear, ng, tol, dissipated, stat, errmsg)
+  subroutine system_velocity_projection(body, gear, ng, tol, dissipated, status)
     type(body_t), intent(inout) :: body          !! body; v and omega are updated
     type(gear_slot_t), intent(inout) :: gear(:)  !! gears; qd of the non-rigid ones is updated
     integer, intent(in) :: ng                    !! number of gears [-]
     real(wp), intent(in) :: tol                  !! residual below which nothing is done [m/s, rad/s]
     real(wp), intent(out) :: dissipated          !! kinetic energy lost, >= 0 [J]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp) :: a(max_gear_rows, max_gear_q, max_gears), c(6, max_gear_q, max_gears), minv(max_gear_q, max_gears)
     real(wp) :: g(max_gear_rows, max_gears), ut(6, max_gear_rows, max_gears)
     real(wp) :: w(solve_rows_width, max_gear_rows, max_gears), d(max_gear_rows, max_gear_rows)
     real(wp) :: s(6, 6), kk(6, 6), rr(6), tk(6, 7), dq(max_gear_q), qd(max_gear_q), resid
     integer :: nrow(max_gears), nq(max_gears), act(max_gears), i, j, k, jj, n, n_act
-    character(len=msg_len) :: m2
 
-    stat = STAT_OK
     dissipated = 0.0_wp
     ! Active gears and their residuals g_i = A_i qd_i (the system's rows gear by gear).
     n_act = 0
@@ -185,9 +182,9 @@ contains
       minv(1:nq(j), j) = 1.0_wp/dq(1:nq(j))
       call coupling_block(body, gear(i)%g, nq(j), c(:, :, j))
       call gear_blocks(n, a(:, :, j), minv(:, j), c(:, :, j), s, ut(:, :, j), d)
-      call factor_spd_unblocked(n, d, max_gear_rows, stat, m2, 'system velocity projection (A M^-1 A^T)')
-      if (stat /= 0) then
-        errmsg = trim(m2)//': redundant velocity constraints or a singular configuration'
+      call factor_spd_unblocked(n, d, max_gear_rows, status, 'system velocity projection (A M^-1 A^T)')
+      if (status%code /= STAT_OK) then
+        call status%fail(status%code, status%text()//': redundant velocity constraints or a singular configuration')
         return
       end if
       ! [z_i, Z_i] = D_i^-1 [g_i, U_i], stored transposed (row 1 z_i^T, rows 2-7 Z_i^T, the rest zero)
@@ -210,13 +207,13 @@ contains
       end do
     end do
     kk = kk + s
-    call factor_spd_unblocked(6, s, 6, stat, m2, 'system velocity projection (body Schur complement)')
-    if (stat /= 0) then
-      errmsg = trim(m2)//': the legs are too heavy for the body (kinetic energy not positive definite)'
+    call factor_spd_unblocked(6, s, 6, status, 'system velocity projection (body Schur complement)')
+    if (status%code /= STAT_OK) then
+      call status%fail(status%code, status%text()//': the legs are too heavy for the body (kinetic energy not positive definite)')
       return
     end if
-    call factor_spd_unblocked(6, kk, 6, stat, m2, 'system velocity projection (Woodbury capacitance)')
-    if (stat /= 0) then; errmsg = m2; return; end if
+    call factor_spd_unblocked(6, kk, 6, status, 'system velocity projection (Woodbury capacitance)')
+    if (status%code /= STAT_OK) return
     ! t = K^-1 r
     call small_upper_solve(6, kk, 6, rr, .true.)
     call small_upper_solve(6, kk, 6, rr, .false.)

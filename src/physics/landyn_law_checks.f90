@@ -15,7 +15,7 @@ module landyn_law_checks
   use landyn_kinds, only: wp
   use landyn_errors, only: input_errors_t
   use landyn_real_text, only: fmt_real
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_FAILED, status_t
   use landyn_strings, only: lower_case
   implicit none
   private
@@ -44,7 +44,7 @@ module landyn_law_checks
     procedure :: require => build_require           !! append a message unless a requirement holds
     procedure :: require_positive => build_require_positive        !! "var > 0 unit" unless it holds
     procedure :: require_nonnegative => build_require_nonnegative  !! "var >= 0 unit" unless it holds
-    procedure :: outcome => build_outcome           !! the factory's stat and errmsg
+    procedure :: outcome => build_outcome           !! the factory's status
     procedure :: pass_on => build_pass_on           !! append the messages to another collector
     procedure :: make => build_make                 !! the factory's walk: build the part asked for
     procedure :: check => build_check               !! the input checks' walk: messages of the part asked for
@@ -117,20 +117,14 @@ contains
   !> The factory's result: STAT_OK, or STAT_FAILED with the first message (an unknown name first
   !! adds "&group var = 'name' is not known; known noun: names", e.g. "&contact law = 'x' is not
   !! known; known laws: base, ...").
-  subroutine build_outcome(self, law, names, stat, errmsg)
+  subroutine build_outcome(self, law, names, status)
     class(law_build_t), intent(inout) :: self      !! the build, after the registry walk
     character(len=*), intent(in) :: law           !! law name as given [-]
     character(len=*), intent(in) :: names          !! the registered names, for the message [-]
-    integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
-    character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
+    type(status_t), intent(out) :: status          !! STAT_OK, or STAT_FAILED with the first problem [-]
     if (.not. self%found) call self%errors%add('&'//trim(self%group)//' '//trim(self%var)//" = '"// &
                                                trim(adjustl(law))//"' is not known; known "//trim(self%noun)//': '//names)
-    stat = STAT_OK
-    errmsg = ''
-    if (self%errors%count() > 0) then
-      stat = STAT_FAILED
-      errmsg = self%errors%message(1)
-    end if
+    if (self%errors%count() > 0) call status%fail(STAT_FAILED, self%errors%message(1))
   end subroutine build_outcome
 
   !> Set up a walk of the registry: build (or, with check_only, only check) the part named `law`
@@ -179,23 +173,22 @@ contains
   end function build_offered
 
   !> The factory's walk: build the part `name` (case-insensitive) of namelist group `group` into
-  !! the build (the registry's entry point takes it from there), stat and errmsg as outcome gives
-  !! them; the known names (a listing walk) only when none answered. `var` and `noun` as in start.
-  subroutine build_make(self, walk, group, name, stat, errmsg, var, noun)
+  !! the build (the registry's entry point takes it from there), the status as outcome gives it;
+  !! the known names (a listing walk) only when none answered. `var` and `noun` as in start.
+  subroutine build_make(self, walk, group, name, status, var, noun)
     class(law_build_t), intent(inout) :: self      !! the build, its input set
     procedure(registry_walk) :: walk               !! the registry's walk
     character(len=*), intent(in) :: group          !! namelist group without '&' [-]
     character(len=*), intent(in) :: name           !! name of the part as given [-]
-    integer, intent(out) :: stat                   !! STAT_OK or STAT_FAILED [-]
-    character(len=*), intent(out) :: errmsg        !! first problem, '' on success [-]
+    type(status_t), intent(out) :: status          !! STAT_OK, or STAT_FAILED with the first problem [-]
     character(len=*), intent(in), optional :: var  !! the variable naming the choice (default 'law') [-]
     character(len=*), intent(in), optional :: noun !! what the registry holds, plural (default 'laws') [-]
     call self%start(group, name, '', var=var, noun=noun)
     call walk(self)
     if (self%found) then
-      call self%outcome(name, '', stat, errmsg)
+      call self%outcome(name, '', status)
     else
-      call self%outcome(name, self%list(walk), stat, errmsg)
+      call self%outcome(name, self%list(walk), status)
     end if
   end subroutine build_make
 

@@ -25,7 +25,7 @@ module landyn_terrain
   use landyn_kinds, only: wp, max_gears, pi
   use landyn_config, only: terrain_cfg_t
   use landyn_kinematics, only: cross3
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_FAILED, status_t
   implicit none
   private
 
@@ -77,34 +77,28 @@ contains
   end function terrain_plane
 
   !> Build planes(i) from entry i of the &terrain input, for i = 1..size(planes).
-  !! Fails (stat = STAT_FAILED) when size(planes) exceeds max_gears or a slope is not in (-90, 90) deg
+  !! Fails (STAT_FAILED with its message) when size(planes) exceeds max_gears or a slope is not in (-90, 90) deg
   !! or an entry is not finite.
-  pure subroutine make_terrain_planes(cfg, planes, stat, errmsg)
+  pure subroutine make_terrain_planes(cfg, planes, status)
     type(terrain_cfg_t), intent(in) :: cfg                 !! resolved &terrain input (angles in rad, heights in m)
     type(terrain_plane_t), intent(out) :: planes(:)        !! one plane per footpad
-    integer, intent(out) :: stat                           !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg                !! reason of a failure, '' on success
+    type(status_t), intent(out) :: status                  !! STAT_OK, or STAT_FAILED with the reason [-]
     integer :: i
     character(len=16) :: buf
 
-    stat = STAT_OK
-    errmsg = ''
     if (size(planes) > max_gears) then
-      stat = STAT_FAILED
       write (buf, '(i0)') max_gears
-      errmsg = '&terrain: more footpads than max_gears = '//trim(buf)
+      call status%fail(STAT_FAILED, '&terrain: more footpads than max_gears = '//trim(buf))
       return
     end if
     do i = 1, size(planes)
       write (buf, '(i0)') i
       if (.not. is_finite(cfg%height(i)) .or. .not. is_finite(cfg%slope_direction(i))) then
-        stat = STAT_FAILED
-        errmsg = '&terrain: height or slope_direction of footpad '//trim(buf)//' is not a finite number'
+        call status%fail(STAT_FAILED, '&terrain: height or slope_direction of footpad '//trim(buf)//' is not a finite number')
         return
       end if
       if (.not. (abs(cfg%slope(i)) < 0.5_wp*pi)) then
-        stat = STAT_FAILED
-        errmsg = '&terrain: slope of footpad '//trim(buf)//' must lie strictly between -90 and 90 deg'
+        call status%fail(STAT_FAILED, '&terrain: slope of footpad '//trim(buf)//' must lie strictly between -90 and 90 deg')
         return
       end if
       planes(i) = terrain_plane(cfg%height(i), cfg%slope(i), cfg%slope_direction(i))

@@ -9,7 +9,8 @@ submodule (landyn_tripod_gear) landyn_tripod_constraints
   use landyn_tripod_kinematics, only: gear_constraints, gear_constraint_jacobian, gear_trig
   use landyn_lapack, only: solve_spd_unblocked
   use landyn_small_spd, only: small_spd_solve
-  use landyn_status, only: STAT_OK, STAT_DIVERGED
+  use landyn_status, only: STAT_OK, STAT_DIVERGED, status_t
+  use landyn_strings, only: int_text
   use landyn_tube_friction, only: add_tube_bound
   implicit none
 
@@ -54,7 +55,6 @@ contains
     character(len=msg_len) :: buf
     type(joint_trig_t) :: tr(3)
 
-    stat = STAT_OK
     ! Phi(q) = 0 and locked strokes held, dq = -A^T (A A^T)^-1 r. The rows A are built only when a
     ! correction is needed (a locked gear at rest needs none).
     nrow = n_phi + count(gear%st%locked)
@@ -62,26 +62,24 @@ contains
     viol = maxval(abs(r(1:n_phi)))
     gear%st%max_drift = max(gear%st%max_drift, viol)
     if (viol > max_drift) then
-      stat = STAT_DIVERGED
       write (buf, '(a,es10.3,a,es10.3,a)') 'constraint drift ', viol, ' m in one step exceeds ', max_drift, &
         ' m: the time step is too large for this landing (reduce &simulation dt)'
-      errmsg = buf
+      call status%fail(STAT_DIVERGED, trim(buf))
       return
     end if
     do iter = 1, max_iter
       if (maxval(abs(r(1:nrow))) <= tol) exit
       call build_rows(gear, gear%st%q, a, nrow, tr)
-      call min_norm_correction(nrow, a, r, gear%st%q, stat, errmsg)
-      if (stat /= STAT_OK) return
+      call min_norm_correction(nrow, a, r, gear%st%q, status)
+      if (status%code /= STAT_OK) return
       call position_residual(gear, gear%st%q, nrow, r, tr)
       gear%st%n_correction_iter = max(gear%st%n_correction_iter, iter)
     end do
     viol = maxval(abs(r(1:nrow)))
     if (viol > tol) then
-      stat = STAT_DIVERGED
       write (buf, '(a,i0,a,es10.3,a,es10.3,a)') 'position constraint correction did not converge in ', max_iter, &
         ' iterations (violation ', viol, ' m, tolerance ', tol, ' m)'
-      errmsg = buf
+      call status%fail(STAT_DIVERGED, trim(buf))
       return
     end if
     gear%st%max_violation = max(gear%st%max_violation, viol)
@@ -97,7 +95,6 @@ contains
   module procedure gear_project_alone
     real(wp) :: a(max_rows, n_q), r(max_rows), mdiag(n_q), lam(max_rows), w(max_rows, max_rows)
     integer :: nrow, i, j
-    stat = STAT_OK
     call build_rows(gear, gear%st%q, a, nrow)
     do i = 1, nrow
       r(i) = dot_product(a(i, :), gear%st%qd)
@@ -110,8 +107,8 @@ contains
         end do
       end do
       lam(1:nrow) = r(1:nrow)
-      call solve_spd_unblocked(nrow, w, max_rows, lam, stat, errmsg, 'gear velocity projection')
-      if (stat /= STAT_OK) return
+      call solve_spd_unblocked(nrow, w, max_rows, lam, status, 'gear velocity projection')
+      if (.not. status%ok()) return
       do i = 1, nrow
         gear%st%qd = gear%st%qd - lam(i)*a(i, :)/mdiag
       end do
@@ -120,26 +117,24 @@ contains
   end procedure gear_project_alone
 
   !> x <- x - A^T (A A^T)^-1 r (minimum-norm correction, Step 4).
-  subroutine min_norm_correction(nrow, a, r, x, stat, errmsg)
+  subroutine min_norm_correction(nrow, a, r, x, status)
     integer, intent(in) :: nrow                  !! rows [-]
     real(wp), intent(in) :: a(:, :)              !! Jacobian rows [m/m, m/rad]
     real(wp), intent(in) :: r(:)                 !! residual [m]
     real(wp), intent(inout) :: x(n_q)            !! vector to correct [m, rad]
-    integer, intent(out) :: stat                 !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg    !! message
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; STAT_DIVERGED with the diagnosis [-]
     real(wp) :: s(max_rows, max_rows), y(max_rows)
-    integer :: i, j
+    integer :: i, j, minor
     do j = 1, nrow
       do i = 1, j
         s(i, j) = dot_product(a(i, 1:n_q), a(j, 1:n_q))
       end do
     end do
     y(1:nrow) = r(1:nrow)
-    call small_spd_solve(nrow, s, max_rows, y, stat)
-    if (stat /= STAT_OK) then
-      write (errmsg, '(a,i0,a)') 'constraint correction: Phi_q Phi_q^T is not positive definite (minor ', stat, &
-        '): redundant constraints or a singular configuration'
-      stat = STAT_DIVERGED
+    call small_spd_solve(nrow, s, max_rows, y, minor)
+    if (minor /= 0) then
+      call status%fail(STAT_DIVERGED, 'constraint correction: Phi_q Phi_q^T is not positive definite (minor '// &
+        int_text(minor)//'): redundant constraints or a singular configuration')
       return
     end if
     do i = 1, nrow

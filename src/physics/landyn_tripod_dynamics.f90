@@ -21,7 +21,7 @@ submodule (landyn_tripod_gear) landyn_tripod_dynamics
   use landyn_tripod_kinematics, only: gear_constraint_jacobian, gear_constraint_gamma
   use landyn_lapack, only: solve_spd_unblocked, factor_spd
   use landyn_small_spd, only: small_upper_solve_multi
-  use landyn_status, only: STAT_OK
+  use landyn_status, only: STAT_OK, status_t
   use landyn_tube_friction, only: tube_friction_bound, add_tube_bound
   implicit none
 
@@ -64,15 +64,14 @@ contains
     real(wp) :: demand0(3), f_rel(3), m_rel(3), f_strut(3, 3), h_strut(3, 3)
 
     ge = gear_eval_t()      ! every component anew (ge is inout: reset here, once)
-    stat = STAT_OK
     with_loads = .true.
     if (present(loads)) with_loads = loads
     call evaluation_start(gear, ge)
     w%q_alp = 0.0_wp
     w%stop_hit = .false.
     if (ge%rigid .and. all(ge%locked)) then
-      call rigid_dynamics(gear, ge, f_foot, f_field, with_loads, done, stat, errmsg, alpha)
-      if (stat /= STAT_OK .or. done) return
+      call rigid_dynamics(gear, ge, f_foot, f_field, with_loads, done, status, alpha)
+      if (status%code /= STAT_OK .or. done) return
     end if
     call system_terms(gear, f_foot, f_field, w, alpha)
     call strut_bounds(gear, ge, w)
@@ -81,15 +80,15 @@ contains
     w%m_entry = strut_mode(gear%st%locked, gear%st%axial, gear%st%dir)
     w%got_in = .false.
     call slide_against_motion(gear, ge, w)
-    call settle_modes(gear, ge, w, stat, errmsg, dt)
-    if (stat /= STAT_OK) return
+    call settle_modes(gear, ge, w, status, dt)
+    if (status%code /= STAT_OK) return
     ! A strut this step's lock row stops (a crushing strut locked for the step, not one on a rigid
     ! stop) leaves the step in the mode decided by the force that holds it once stopped.
     stopped = w%tried .and. ge%locked(1:3) .and. .not. w%stop_hit .and. .not. w%changed
     demand0 = 0.0_wp
     if (any(stopped)) then
-      call after_stop(gear, w, stopped, ge, demand0, stat, errmsg)
-      if (stat /= STAT_OK) return
+      call after_stop(gear, w, stopped, ge, demand0, status)
+      if (status%code /= STAT_OK) return
     end if
     call margins_out(gear, w, stopped, demand0, ge)
 
@@ -209,21 +208,19 @@ contains
   !> The crush logic's fixed point (eqs. 12-13): solve the augmented system with the current locks,
   !! then lock crushing struts that would reverse within the step, release locks whose force exceeds
   !! the bound, and repeat (at most 8 passes) until no mode changes (changed = .false.).
-  subroutine settle_modes(gear, ge, w, stat, errmsg, dt)
+  subroutine settle_modes(gear, ge, w, status, dt)
     type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: qdd, axial, locks, dir, margin_in [-]
     type(eval_work_t), intent(inout) :: w        !! work: the last pass's system, multipliers and flags [-]
-    integer, intent(out) :: stat                 !! STAT_OK on success [-]
-    character(len=*), intent(inout) :: errmsg    !! message [-]
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp), intent(in), optional :: dt         !! step the decisions are for [s]
     integer :: k, iter
-    stat = STAT_OK
     w%tried = .false.
     w%released = .false.
     do iter = 1, 8
       call assemble_system(gear, ge, w, dt)
-      call solve_reduced(w%nrow, w%a, w%b, w%mdiag, w%q_tot, ge%qdd, w%lam, stat, errmsg)
-      if (stat /= STAT_OK) return
+      call solve_reduced(w%nrow, w%a, w%b, w%mdiag, w%q_tot, ge%qdd, w%lam, status)
+      if (status%code /= STAT_OK) return
       if (iter == 1) then
         do k = 1, 3
           if (w%m_entry(k) /= 0) ge%margin_in(k) = mode_margin(w%m_entry(k), gear%st%dir(k), w%s(k), &
@@ -338,22 +335,21 @@ contains
   !! system with every lock row at acceleration level (b = 0). Within the bounds, -f_pos <=
   !! -demand0 and demand0 <= f_neg, the strut stays locked; beyond one it leaves the step sliding
   !! toward that side with the bound as its force (into its free crushed range where that bound is 0).
-  subroutine after_stop(gear, w, stopped, ge, demand0, stat, errmsg)
+  subroutine after_stop(gear, w, stopped, ge, demand0, status)
     type(tripod_gear_t), intent(in) :: gear             !! gear with its committed state [-]
     type(eval_work_t), intent(in) :: w           !! work: the step's system (nrow, a, b, row_of, mdiag, q_tot) and bounds [-]
     logical, intent(in) :: stopped(3)            !! strut stopped by its lock row in this step [-]
     type(gear_eval_t), intent(inout) :: ge       !! evaluation: dir_after, axial_after set [-]
     real(wp), intent(out) :: demand0(3)          !! holding force of each stopped strut's lock on s [N]
-    integer, intent(out) :: stat                 !! STAT_OK on success [-]
-    character(len=*), intent(inout) :: errmsg    !! message [-]
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp) :: b0(max_rows), lam0(max_rows), qdd0(n_q)
     integer :: j
     b0(1:w%nrow) = w%b(1:w%nrow)
     do j = 1, 3
       if (w%row_of(j) > 0) b0(w%row_of(j)) = 0.0_wp
     end do
-    call solve_reduced(w%nrow, w%a, b0, w%mdiag, w%q_tot, qdd0, lam0, stat, errmsg)
-    if (stat /= STAT_OK) return
+    call solve_reduced(w%nrow, w%a, b0, w%mdiag, w%q_tot, qdd0, lam0, status)
+    if (status%code /= STAT_OK) return
     demand0 = 0.0_wp
     do j = 1, 3
       if (.not. stopped(j)) cycle
@@ -388,7 +384,7 @@ contains
   end subroutine margins_out
 
   !> Solves M qdd + A^T lam = Q, A qdd = b by elimination: (A M^-1 A^T) lam = A M^-1 Q - b.
-  subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, stat, errmsg)
+  subroutine solve_reduced(nrow, a, b, mdiag, qf, qdd, lam, status)
     integer, intent(in) :: nrow                  !! number of constraint rows [-]
     real(wp), intent(in) :: a(:, :)              !! constraint rows (nrow x n_q) [-, m]
     real(wp), intent(in) :: b(:)                 !! constraint right-hand side [m/s^2, rad/s^2]
@@ -396,8 +392,7 @@ contains
     real(wp), intent(in) :: qf(n_q)              !! generalized force [N, N m]
     real(wp), intent(out) :: qdd(n_q)            !! accelerations [m/s^2, rad/s^2]
     real(wp), intent(out) :: lam(:)              !! multipliers [N, N m]
-    integer, intent(out) :: stat                 !! STAT_OK on success [-]
-    character(len=*), intent(inout) :: errmsg    !! message [-]
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the solver's failure [-]
     real(wp) :: s(max_rows, max_rows), aw(max_rows, n_q), r(max_rows)
     integer :: i, j
     do j = 1, n_q
@@ -411,8 +406,8 @@ contains
     do i = 1, nrow
       r(i) = dot_product(aw(i, :), qf) - b(i)
     end do
-    call solve_spd_unblocked(nrow, s, max_rows, r, stat, errmsg, 'gear DAE (A M^-1 A^T)')
-    if (stat /= STAT_OK) return
+    call solve_spd_unblocked(nrow, s, max_rows, r, status, 'gear DAE (A M^-1 A^T)')
+    if (status%code /= STAT_OK) return
     lam(1:nrow) = r(1:nrow)
     qdd = qf
     do i = 1, nrow
@@ -424,27 +419,25 @@ contains
   !> gear_dynamics for a rigid gear (all struts locked, at rest relative to the body): only the
   !! lock forces are solved for, with the cached factor. done = .false. when a strut's demand
   !! exceeds its bound: the gear leaves the rigid state and the caller takes the general path.
-  subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, stat, errmsg, alpha)
+  subroutine rigid_dynamics(gear, ge, f_foot, f_field, loads, done, status, alpha)
     type(tripod_gear_t), intent(in) :: gear             !! rigid gear (committed state) [-]
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation [-]
     real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
     logical, intent(in) :: loads                 !! compute the interface loads [-]
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! STAT_OK on success [-]
-    character(len=*), intent(inout) :: errmsg    !! message [-]
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     type(gear_state_t) :: c
-    stat = STAT_OK
     done = .false.
     if (gear%st%rigid_cache) then
-      call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, stat, alpha)
+      call rigid_solve(gear, gear%st, ge, f_foot, f_field, loads, done, alpha)
     else
       ! not prepared (gear_prepare): the cache of a copy, for this evaluation only
       c = gear%st
-      call rigid_cache(gear, c, stat, errmsg)
-      if (stat /= STAT_OK) return
-      call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
+      call rigid_cache(gear, c, status)
+      if (status%code /= STAT_OK) return
+      call rigid_solve(gear, c, ge, f_foot, f_field, loads, done, alpha)
     end if
   end subroutine rigid_dynamics
 
@@ -505,11 +498,10 @@ contains
 
   !> The rigid gear's caches (strut kinematics, mass matrix, constraint rows with the three lock rows
   !! and the Cholesky factor of A M^-1 A^T), computed from its coordinates.
-  subroutine rigid_cache(gear, c, stat, errmsg)
+  subroutine rigid_cache(gear, c, status)
     type(tripod_gear_t), intent(in) :: gear             !! gear (geometry, masses)
     type(gear_state_t), intent(inout) :: c       !! state whose caches are set
-    integer, intent(out) :: stat                 !! STAT_OK on success
-    character(len=*), intent(inout) :: errmsg    !! message
+    type(status_t), intent(inout) :: status      !! STAT_OK on entry; the factorisation's failure [-]
     integer :: k, i, j, nrow
     nrow = n_phi + 3
     ! afresh, not strut_kinematics: c may be gear%st, whose kinematics cache this must not read
@@ -525,13 +517,13 @@ contains
         c%chol_c(i, j) = sum(c%a_c(i, :)*c%a_c(j, :)/c%mdiag_c)
       end do
     end do
-    call factor_spd(nrow, c%chol_c, max_rows, stat, errmsg, 'gear DAE, rigid (A M^-1 A^T)')
-    if (stat /= STAT_OK) return
+    call factor_spd(nrow, c%chol_c, max_rows, status, 'gear DAE, rigid (A M^-1 A^T)')
+    if (status%code /= STAT_OK) return
     c%rigid_cache = .true.
   end subroutine rigid_cache
 
   !> The lock forces of a rigid gear with its cached factor (rigid_dynamics).
-  subroutine rigid_solve(gear, c, ge, f_foot, f_field, loads, done, stat, alpha)
+  subroutine rigid_solve(gear, c, ge, f_foot, f_field, loads, done, alpha)
     type(tripod_gear_t), intent(in) :: gear             !! rigid gear
     type(gear_state_t), intent(in) :: c          !! its state with valid caches
     type(gear_eval_t), intent(inout) :: ge       !! its evaluation
@@ -539,12 +531,10 @@ contains
     real(wp), intent(in) :: f_field(3)           !! uniform field, gear frame [m/s^2]
     logical, intent(in) :: loads                 !! compute the interface loads [-]
     logical, intent(out) :: done                 !! .true. when the gear stays rigid this step
-    integer, intent(out) :: stat                 !! STAT_OK (the cached factor is regular)
     real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     real(wp) :: q_ine(n_q), q_grv(n_q), q_ext(n_q), qf(n_q), lam(max_rows), zero(n_q), f_strut(3, 3)
     real(wp) :: s(3), sd(3), fpos, fneg, demand
     integer :: k, i, nrow
-    stat = STAT_OK
     done = .false.
     nrow = n_phi + 3
     zero = 0.0_wp
@@ -582,10 +572,10 @@ contains
 
   module procedure gear_dynamics
     type(gear_eval_t) :: ge
-    call gear_prepare(gear, stat, errmsg)
-    if (stat /= STAT_OK) return
-    call gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha)
-    if (stat /= STAT_OK) return
+    call gear_prepare(gear, status)
+    if (status%code /= STAT_OK) return
+    call gear_evaluate(gear, ge, f_foot, f_field, status, dt, alpha)
+    if (status%code /= STAT_OK) return
     call gear_commit(gear, ge)
   end procedure gear_dynamics
 
@@ -607,8 +597,7 @@ contains
   end procedure gear_commit
 
   module procedure gear_prepare
-    stat = STAT_OK
-    if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, stat, errmsg)
+    if (gear%st%rigid .and. .not. gear%st%rigid_cache) call rigid_cache(gear, gear%st, status)
   end procedure gear_prepare
 
 end submodule landyn_tripod_dynamics

@@ -36,6 +36,7 @@ module landyn_tripod_gear
   use landyn_kinematics, only: gear_geometry_t, n_gear_q, n_gear_phi, iq_d1, iq_db1, iq_dc1, joint_trig_t, axis_derivs_t
   use landyn_strut, only: strut_mass_t, strut_t, strut_mass_functions_t
   use landyn_tube_friction, only: tube_friction_t
+  use landyn_status, only: status_t
   implicit none
   private
 
@@ -186,13 +187,12 @@ module landyn_tripod_gear
     ! ---- set-up, footpad, strut kinematics, mass matrix, strokes and accessors (landyn_tripod_setup)
 
     !> Sets up a gear at its nominal configuration, all struts locked and at rest.
-    module subroutine gear_init(gear, geom, rot, mass, stat, errmsg, tube)
+    module subroutine gear_init(gear, geom, rot, mass, status, tube)
       class(tripod_gear_t), intent(inout) :: gear          !! gear to initialise (buffers must already be allocated)
       type(gear_geometry_t), intent(in) :: geom    !! geometry in the gear frame
       real(wp), intent(in) :: rot(3, 3)            !! gear frame -> lander frame [-]
       type(strut_mass_t), intent(in) :: mass(n_struts)    !! strut mass properties
-      integer, intent(out) :: stat                 !! STAT_OK, or STAT_FAILED (a buffer law or sliding mass missing)
-      character(len=*), intent(inout) :: errmsg    !! message on failure
+      type(status_t), intent(out) :: status        !! STAT_OK, or STAT_FAILED (a buffer law or sliding mass missing) [-]
       type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
     end subroutine gear_init
 
@@ -582,14 +582,13 @@ module landyn_tripod_gear
     !! work of the angular acceleration during an impact (an energy audit error of ~0.2 % in
     !! landings with rotation). The remaining frame terms (centrifugal variation over the leg,
     !! Coriolis) are two orders smaller at the body rates of a landing and are neglected.
-    module subroutine gear_evaluate(gear, ge, f_foot, f_field, stat, errmsg, dt, alpha, loads)
+    module subroutine gear_evaluate(gear, ge, f_foot, f_field, status, dt, alpha, loads)
       class(tripod_gear_t), intent(in) :: gear             !! gear with its committed state (unchanged)
       type(gear_eval_t), intent(inout) :: ge       !! accelerations, buffer forces, lock decisions, body load
                                                    !! (previous contents replaced)
       real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
       real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
-      integer, intent(out) :: stat                 !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
       real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
       real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
       logical, intent(in), optional :: loads       !! compute the interface loads (f_joint, m_joint,
@@ -598,12 +597,11 @@ module landyn_tripod_gear
 
     !> Evaluates the gear (gear_evaluate) and commits the result at once (gear_commit), preparing a
     !! rigid gear's caches first: the gear alone, as the unit tests drive it.
-    module subroutine gear_dynamics(gear, f_foot, f_field, stat, errmsg, dt, alpha)
+    module subroutine gear_dynamics(gear, f_foot, f_field, status, dt, alpha)
       class(tripod_gear_t), intent(inout) :: gear          !! gear; qdd, axial, locked, f_body are updated
       real(wp), intent(in) :: f_foot(3)            !! ground force on the footpad, gear frame [N]
       real(wp), intent(in) :: f_field(3)           !! uniform field g - a_frame, gear frame [m/s^2]
-      integer, intent(out) :: stat                 !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
       real(wp), intent(in), optional :: dt         !! coming time step: velocity-level locking [s]
       real(wp), intent(in), optional :: alpha(3)   !! body angular acceleration, gear axes [rad/s^2]
     end subroutine gear_dynamics
@@ -617,10 +615,9 @@ module landyn_tripod_gear
 
     !> Computes the caches of a gear that has become rigid (gear_settle), so that evaluating it needs
     !! only the cached factor. Nothing is done for a gear that is not rigid or already prepared.
-    module subroutine gear_prepare(gear, stat, errmsg)
+    module subroutine gear_prepare(gear, status)
       class(tripod_gear_t), intent(inout) :: gear          !! gear
-      integer, intent(out) :: stat                 !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     end subroutine gear_prepare
 
     ! ---- interface loads of the joints (landyn_tripod_joint_loads)
@@ -687,21 +684,19 @@ module landyn_tripod_gear
     !! holonomic constraints and the locked strokes, iterated to `tol`; then the crush history.
     !! The velocity half is a plastic impact of the whole system (landyn_impact), or, for a gear
     !! alone with the body held fixed, gear_project_alone.
-    module subroutine gear_correct_positions(gear, tol, max_iter, max_drift, stat, errmsg)
+    module subroutine gear_correct_positions(gear, tol, max_iter, max_drift, status)
       class(tripod_gear_t), intent(inout) :: gear          !! gear
       real(wp), intent(in) :: tol                  !! correction tolerance [m]
       integer, intent(in) :: max_iter              !! iteration cap of the position correction [-]
       real(wp), intent(in) :: max_drift            !! violation before correction that means the step is too large [m]
-      integer, intent(out) :: stat                 !! STAT_OK on success, STAT_DIVERGED on drift or no convergence
-      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      type(status_t), intent(inout) :: status      !! STAT_OK on entry; STAT_DIVERGED on drift or no convergence [-]
     end subroutine gear_correct_positions
 
     !> The velocity projection of a gear alone, the body held fixed: qd <- qd - M^-1 A^T (A M^-1 A^T)^-1 A qd
     !! in the gear's kinetic metric, then gear_settle (the unit tests of a free gear).
-    module subroutine gear_project_alone(gear, stat, errmsg)
+    module subroutine gear_project_alone(gear, status)
       class(tripod_gear_t), intent(inout) :: gear          !! gear
-      integer, intent(out) :: stat                 !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg    !! diagnosis on failure
+      type(status_t), intent(inout) :: status      !! STAT_OK on entry; the failure's code and diagnosis [-]
     end subroutine gear_project_alone
 
     !> After the velocity projection: a gear whose three struts are all locked has A (Phi_q and the
@@ -723,15 +718,14 @@ module landyn_tripod_gear
 
     !> Sets up a tripod at its nominal configuration, all struts locked and at rest (its buffer laws,
     !! then gear_init).
-    module subroutine tripod_init(self, geom, rot, mass, primary, secondary, stat, errmsg, tube)
+    module subroutine tripod_init(self, geom, rot, mass, primary, secondary, status, tube)
       type(tripod_gear_t), intent(inout) :: self      !! gear
       type(gear_geometry_t), intent(in) :: geom       !! geometry in the gear frame
       real(wp), intent(in) :: rot(3, 3)               !! gear frame -> lander frame [-]
       type(strut_mass_t), intent(in) :: mass(n_struts)  !! strut mass properties (primary, left, right)
       class(buffer_law_t), intent(in) :: primary      !! the primary's buffer law
       class(buffer_law_t), intent(in) :: secondary    !! both secondaries' buffer law
-      integer, intent(out) :: stat                    !! STAT_OK on success
-      character(len=*), intent(inout) :: errmsg       !! diagnosis on failure
+      type(status_t), intent(out) :: status           !! STAT_OK, or STAT_FAILED with the diagnosis [-]
       type(tube_friction_t), intent(in), optional :: tube  !! primary tube friction; absent: off
     end subroutine tripod_init
 

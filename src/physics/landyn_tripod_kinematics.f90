@@ -15,7 +15,7 @@
 !! Everything here is pure and allocation-free (fixed-size arrays) for use in the time-step loop.
 module landyn_tripod_kinematics
   use landyn_kinds, only: wp
-  use landyn_status, only: STAT_FAILED, STAT_OK
+  use landyn_status, only: STAT_FAILED, status_t
   use landyn_kinematics, only: gear_geometry_t, joint_trig_t, axis_derivs_t, n_gear_q, n_gear_phi, &
                                iq_d1, iq_th1, iq_th2, iq_db1, iq_thb1, iq_thb2, iq_dc1, iq_thc1, iq_thc2, &
                                solve3, joint_trig, joint_rotation_derivs, strut_orientation_trig, &
@@ -184,26 +184,24 @@ contains
   end function strut_forces_from_footpad
 
   !> Footpad force equivalent to strut forces: F = J^{-T} N (solves J^T F = N by Cramer's rule).
-  pure subroutine footpad_force_from_struts(j, n, f, stat, errmsg)
+  pure subroutine footpad_force_from_struts(j, n, f, status)
     real(wp), intent(in) :: j(3,3)           !! footpad Jacobian J = J2 J3^{-1} [-]
     real(wp), intent(in) :: n(3)             !! strut forces, positive tending to lengthen [N]
     real(wp), intent(out) :: f(3)            !! equivalent force on the footpad, gear frame [N]
-    integer, intent(out) :: stat             !! 0 on success, 1 when J is singular
-    character(len=*), intent(out) :: errmsg  !! error message ('' on success)
+    type(status_t), intent(out) :: status    !! STAT_OK, or STAT_FAILED when J is singular [-]
     real(wp) :: jt(3,3)
     jt = transpose(j)
-    call solve3(jt, n, f, stat, errmsg)
-    if (stat /= 0) errmsg = 'footpad_force_from_struts: singular footpad Jacobian'
+    call solve3(jt, n, f, status)
+    if (.not. status%ok()) call status%fail(status%code, 'footpad_force_from_struts: singular footpad Jacobian')
   end subroutine footpad_force_from_struts
 
   !> Consistent generalized coordinates for a footpad position: the primary from d, the lugs
   !! e_pri, f_pri from (th1, th2), the secondaries from the lugs. The result satisfies Phi = 0.
-  pure subroutine gear_coords_from_footpad(geom, d, q, stat, errmsg)
+  pure subroutine gear_coords_from_footpad(geom, d, q, status)
     type(gear_geometry_t), intent(in) :: geom  !! gear geometry
     real(wp), intent(in) :: d(3)               !! footpad joint position, gear frame [m]
     real(wp), intent(out) :: q(n_gear_q)       !! generalized coordinates [m, rad]
-    integer, intent(out) :: stat               !! 0 on success, 1 on a zero-length strut
-    character(len=*), intent(out) :: errmsg    !! error message ('' on success)
+    type(status_t), intent(out) :: status      !! STAT_OK, or STAT_FAILED on a zero-length strut [-]
     real(wp) :: rp(3,3), e_pri(3), f_pri(3)
     call strut_angles_from_point(geom%a, geom%R0p, d, q(iq_d1), q(iq_th1), q(iq_th2))
     rp = strut_orientation_trig(geom%R0p, joint_trig(q(iq_th1), q(iq_th2)))
@@ -212,12 +210,9 @@ contains
     call strut_angles_from_point(geom%b, geom%R0b, e_pri, q(iq_db1), q(iq_thb1), q(iq_thb2))
     call strut_angles_from_point(geom%c, geom%R0c, f_pri, q(iq_dc1), q(iq_thc1), q(iq_thc2))
     if (.not. (q(iq_d1) > 0.0_wp .and. q(iq_db1) > 0.0_wp .and. q(iq_dc1) > 0.0_wp)) then
-      stat = STAT_FAILED
-      errmsg = 'gear_coords_from_footpad: zero-length strut'
+      call status%fail(STAT_FAILED, 'gear_coords_from_footpad: zero-length strut')
       return
     end if
-    stat = STAT_OK
-    errmsg = ''
   end subroutine gear_coords_from_footpad
 
 end module landyn_tripod_kinematics

@@ -12,8 +12,8 @@ contains
 
   module procedure gear_init
     integer :: k
-    call gear%set_layout(n_struts, n_q, rot, stat, errmsg)
-    if (stat /= STAT_OK) return
+    call gear%set_layout(n_struts, n_q, rot, status)
+    if (.not. status%ok()) return
     gear%tube = tube_friction_t()
     if (present(tube)) gear%tube = tube
     gear%st%tube_bound = 0.0_wp
@@ -49,13 +49,11 @@ contains
     gear%st%n_correction_iter = 0
     do k = 1, n_struts
       if (.not. allocated(gear%buffer(k)%law)) then
-        stat = STAT_FAILED
-        errmsg = 'gear_init: buffer law not set'
+        call status%fail(STAT_FAILED, 'gear_init: buffer law not set')
         return
       end if
       if (mass(k)%m_i + mass(k)%m_end <= 0.0_wp) then
-        stat = STAT_FAILED
-        errmsg = 'gear_init: a strut has no sliding mass'
+        call status%fail(STAT_FAILED, 'gear_init: a strut has no sliding mass')
         return
       end if
     end do
@@ -319,7 +317,7 @@ contains
     do k = 2, n_struts
       call gear_set_buffer(self, k, secondary)
     end do
-    call gear_init(self, geom, rot, mass, stat, errmsg, tube)
+    call gear_init(self, geom, rot, mass, status, tube)
   end procedure tripod_init
 
   module procedure tripod_strut_name

@@ -22,7 +22,7 @@
 module landyn_tube_friction
   use landyn_kinds, only: wp, pi
   use landyn_buffer, only: rigid_force
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: STAT_FAILED, status_t
   implicit none
   private
 
@@ -40,8 +40,8 @@ module landyn_tube_friction
 
 contains
 
-  !> Tube friction from the input lengths. stat = STAT_FAILED when the tubes do not overlap or a value is invalid.
-  pure subroutine make_tube_friction(on, mu, l_outer, l_inner, l_leg, l_lever, tf, stat, errmsg)
+  !> Tube friction from the input lengths. STAT_FAILED when the tubes do not overlap or a value is invalid.
+  pure subroutine make_tube_friction(on, mu, l_outer, l_inner, l_leg, l_lever, tf, status)
     logical, intent(in) :: on                   !! apply tube friction [-]
     real(wp), intent(in) :: mu                  !! u_1 [-]
     real(wp), intent(in) :: l_outer             !! L_O, outer tube length [m]
@@ -49,21 +49,16 @@ contains
     real(wp), intent(in) :: l_leg               !! L_L, primary length (upper joint to footpad joint) [m]
     real(wp), intent(in) :: l_lever             !! L_O1, lever arm of the lateral load [m]
     type(tube_friction_t), intent(out) :: tf    !! tube friction
-    integer, intent(out) :: stat                !! STAT_OK on success
-    character(len=*), intent(out) :: errmsg     !! reason of a failure, '' on success
-    stat = STAT_OK
-    errmsg = ''
+    type(status_t), intent(out) :: status       !! STAT_OK, or STAT_FAILED with the reason [-]
     tf%on = on
     if (.not. on) return
     if (.not. (mu >= 0.0_wp .and. mu <= huge(1.0_wp))) then
-      stat = STAT_FAILED
-      errmsg = '&primary_strut mu_tube must be a finite number >= 0'
+      call status%fail(STAT_FAILED, '&primary_strut mu_tube must be a finite number >= 0')
     else if (.not. (l_outer > 0.0_wp .and. l_inner > 0.0_wp .and. l_leg > 0.0_wp .and. l_lever >= 0.0_wp)) then
-      stat = STAT_FAILED
-      errmsg = '&primary_strut tube lengths must be > 0 (tube_lever >= 0)'
+      call status%fail(STAT_FAILED, '&primary_strut tube lengths must be > 0 (tube_lever >= 0)')
     else if (.not. (l_inner + l_outer - l_leg > 0.0_wp)) then
-      stat = STAT_FAILED
-      errmsg = '&primary_strut the tubes do not overlap: tube_outer_length + tube_inner_length <= tube_leg_length'
+      call status%fail(STAT_FAILED, &
+                       '&primary_strut the tubes do not overlap: tube_outer_length + tube_inner_length <= tube_leg_length')
     else
       tf%mu = mu
       tf%eta1 = tube_eta1(l_outer, l_inner, l_leg, l_lever)
