@@ -15,7 +15,7 @@ module landyn_campaign_case
   use, intrinsic :: iso_fortran_env, only: int64
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears, deg2rad
-  use landyn_status, only: STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
+  use landyn_status, only: status_t, STAT_FAILED, STAT_OK, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, EXIT_NO_TOUCHDOWN
   use landyn_config, only: landyn_input_t
   use landyn_input, only: input_errors_t
   use landyn_simulation, only: sim_result_t
@@ -150,6 +150,7 @@ contains
     real(wp) :: values(camp%n_par)
     character(len=:), allocatable :: m1, path
     character(len=msg_len) :: msg
+    type(status_t) :: wst
     integer :: st
     logical :: ran
     integer(int64) :: c0, crate, c_in, c_sim
@@ -198,11 +199,11 @@ contains
     if (save_history) then
       path = history_file_name(camp, id)
       inp%output%file = path
-      call write_result_file(path, inp, res, command_line, st, msg, health)
-      if (st == 0) then
+      call write_result_file(path, inp, res, command_line, wst, health)
+      if (wst%ok()) then
         row%history_file = path
       else
-        row%message = 'time-history file not written: '//trim(msg)
+        row%message = 'time-history file not written: '//wst%text()
       end if
     end if
     call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
