@@ -13,7 +13,7 @@
 !! Prints one line per measurement; files go to the current directory (checkpoint) or DIR.
 program bench_campaign_store
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_status, only: status_t
   use landyn_h5, only: delete_file
   use landyn_campaign_case, only: case_row_t, new_row, status_ok
@@ -23,13 +23,12 @@ program bench_campaign_store
 
   integer, parameter :: n_par = 8, n_gears = 4
   character(len=4096) :: arg, dir
-  character(len=msg_len) :: msg
   type(status_t) :: ss
   type(summary_meta_t) :: meta
   type(case_row_t), allocatable :: rows(:), back(:)
   type(summary_meta_t) :: meta_back
   integer, allocatable :: counts(:)
-  integer :: i, k, st, n, nfiles, nrows, ju, n_journal
+  integer :: i, k, n, nfiles, nrows, ju, n_journal
   real(wp) :: t0, t1, t2, t3, t4, t_write, t_read
 
   if (command_argument_count() < 2) call usage()
@@ -42,7 +41,6 @@ program bench_campaign_store
       n = counts(i)
       meta = synthetic_meta(n)
       rows = synthetic_rows(1, n)
-      msg = ''
       t0 = now()
       call write_summary('bench_checkpoint.h5', meta, rows, 'bench_campaign_store', ss)
       t1 = now()
@@ -58,16 +56,16 @@ program bench_campaign_store
       ! journal lines: unflushed (batched flushes) and flushed one by one
       n_journal = min(n, 20000)
       call delete_file('bench_checkpoint.journal')
-      call journal_open('bench_checkpoint.journal', meta, ju, st, msg)
-      if (st /= 0) call fail(msg)
+      call journal_open('bench_checkpoint.journal', meta, ju, ss)
+      if (.not. ss%ok()) call fail(ss%text())
       t2 = now()
       do k = 1, n_journal
-        call journal_append(ju, rows(k), st, msg, flush_now=.false.)
+        call journal_append(ju, rows(k), ss, flush_now=.false.)
       end do
-      call journal_flush(ju, st, msg)
+      call journal_flush(ju, ss)
       t3 = now()
       do k = 1, n_journal
-        call journal_append(ju, rows(k), st, msg)
+        call journal_append(ju, rows(k), ss)
       end do
       t4 = now()
       close (ju, status='delete')

@@ -148,7 +148,7 @@ contains
     type(sim_result_t) :: res
     type(health_t) :: health
     real(wp) :: values(camp%n_par)
-    character(len=:), allocatable :: m1, path
+    character(len=:), allocatable :: path
     character(len=msg_len) :: msg
     type(status_t) :: wst
     integer :: st
@@ -159,10 +159,10 @@ contains
     c_in = -1
     c_sim = -1
     row = new_row(id, camp%n_par, camp%n_gears)
-    call case_values(camp, id, values, st, m1)
-    if (st /= 0) then
+    call case_values(camp, id, values, wst)
+    if (.not. wst%ok()) then
       row%status = status_invalid_input
-      row%message = m1
+      row%message = wst%text()
       row%end_reason = 'invalid input'
       call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
       return

@@ -38,7 +38,7 @@ module landyn_campaign_parallel
                      MPI_Irecv, MPI_Test, MPI_Wait, MPI_Iprobe, MPI_Get_count, MPI_Abort, MPI_Wtime, MPI_Gather, &
                      MPI_Status, MPI_Request, MPI_REQUEST_NULL, MPI_STATUS_IGNORE, MPI_COMM_WORLD, MPI_INTEGER, &
                      MPI_DOUBLE_PRECISION, MPI_CHARACTER, MPI_ANY_SOURCE
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
   use landyn_h5, only: delete_file
   use landyn_campaign_text, only: int_text, real_text_short
@@ -338,15 +338,13 @@ contains
     integer, intent(out) :: ju                    !! journal unit [-]
     integer, intent(in) :: err_u                  !! unit for messages [-]
     integer, intent(out) :: code                  !! exit code [-]
-    character(len=msg_len) :: msg
     logical :: ex_s, ex_j
-    integer :: st
+    type(status_t) :: jst
     code = EXIT_OK
     ju = -1
     call results_init(table, camp%n_cases)
     inquire (file=summary, exist=ex_s)
     inquire (file=journal, exist=ex_j)
-    msg = ''
     if (.not. opts%resume) then
       if ((ex_s .or. ex_j) .and. .not. opts%force) then
         if (ex_s) then
@@ -365,9 +363,9 @@ contains
       call resume_rows(camp, meta, opts, summary, journal, ex_s, ex_j, table, err_u, code)
       if (code /= EXIT_OK) return
     end if
-    call journal_open(journal, meta, ju, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: '//trim(msg)
+    call journal_open(journal, meta, ju, jst)
+    if (.not. jst%ok()) then
+      write (err_u, '(a)') 'landyn_batch: '//jst%text()
       code = EXIT_FILE
     end if
   end subroutine prepare_output
@@ -387,11 +385,9 @@ contains
     integer, intent(out) :: code                  !! exit code [-]
     type(summary_meta_t) :: m
     type(case_row_t), allocatable :: rows(:)
-    character(len=msg_len) :: msg
     type(status_t) :: rs
-    integer :: st, n_s, n_j, n_bad, n_out
+    integer :: n_s, n_j, n_bad, n_out
     code = EXIT_OK
-    msg = ''
     n_s = 0
     n_j = 0
     n_bad = 0
@@ -412,9 +408,9 @@ contains
       call add_rows(table, rows, n_s, n_out)
     end if
     if (ex_j) then
-      call journal_read(journal, meta, rows, n_bad, st, msg)
-      if (st /= 0) then
-        write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
+      call journal_read(journal, meta, rows, n_bad, rs)
+      if (.not. rs%ok()) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//rs%text()
         code = EXIT_INPUT
         return
       end if
@@ -643,28 +639,25 @@ contains
     type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
     logical, intent(in) :: now                    !! flush whatever the time [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: t
     if (ms%n_unflushed == 0) return
     t = MPI_Wtime()
     if (.not. now .and. t - ms%t_flush < flush_interval) return
-    msg = ''
-    call journal_flush(sink%ju, st, msg)
-    call journal_problem(ms, sink, st, msg)
+    call journal_flush(sink%ju, st)
+    call journal_problem(ms, sink, st)
     ms%n_unflushed = 0
     ms%t_flush = MPI_Wtime()
     prof(p_record) = prof(p_record) + (ms%t_flush - t)
   end subroutine flush_journal
 
   !> Report the first journal operation that failed (the rows are then kept in memory only).
-  subroutine journal_problem(ms, sink, st, msg)
+  subroutine journal_problem(ms, sink, st)
     type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: journal_ok [-]
     type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
-    integer, intent(in) :: st                     !! status of the journal operation [-]
-    character(len=*), intent(in) :: msg           !! its message [-]
-    if (st /= 0 .and. ms%journal_ok) then
-      write (sink%err_u, '(a)') 'landyn_batch: warning: '//trim(msg)// &
+    type(status_t), intent(in) :: st              !! status of the journal operation, with its message [-]
+    if (.not. st%ok() .and. ms%journal_ok) then
+      write (sink%err_u, '(a)') 'landyn_batch: warning: '//st%text()// &
         ' (rows are kept in memory and written at the end)'
       ms%journal_ok = .false.
     end if
@@ -682,15 +675,13 @@ contains
     type(results_t), intent(inout) :: table       !! rows [-]
     type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: t, t2, c0, c1
     call cpu_time(c0)
     t = MPI_Wtime()
     call results_add(table, r)
-    msg = ''
-    call journal_append(sink%ju, r, st, msg, flush_now=.false.)
-    call journal_problem(ms, sink, st, msg)
+    call journal_append(sink%ju, r, st, flush_now=.false.)
+    call journal_problem(ms, sink, st)
     ms%n_unflushed = ms%n_unflushed + 1
     ms%n_session = ms%n_session + 1
     prof(p_rows) = prof(p_rows) + 1.0_wp

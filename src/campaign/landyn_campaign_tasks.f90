@@ -67,8 +67,9 @@ contains
     integer, intent(out) :: code          !! exit code [-]
     type(campaign_t) :: camp
     real(wp), allocatable :: v(:)
-    character(len=:), allocatable :: line, msg
-    integer :: id, j, st
+    character(len=:), allocatable :: line
+    type(status_t) :: vst
+    integer :: id, j
     character(len=32) :: buf
     call load_or_report(deck, camp, err_u, code)
     if (code /= EXIT_OK) return
@@ -79,10 +80,10 @@ contains
     write (out_u, '(a)') line
     allocate (v(camp%n_par))
     do id = 1, camp%n_cases
-      call case_values(camp, id, v, st, msg)
+      call case_values(camp, id, v, vst)
       line = int_text(id)
       do j = 1, camp%n_par
-        if (st /= 0) then
+        if (.not. vst%ok()) then
           line = line//',nan'
         else
           write (buf, '(es24.16e3)') v(j)
