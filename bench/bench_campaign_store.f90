@@ -13,7 +13,8 @@
 !! Prints one line per measurement; files go to the current directory (checkpoint) or DIR.
 program bench_campaign_store
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
+  use landyn_status, only: status_t
   use landyn_h5, only: delete_file
   use landyn_campaign_case, only: case_row_t, new_row, status_ok
   use landyn_campaign_store, only: summary_meta_t, write_summary, read_summary
@@ -22,12 +23,12 @@ program bench_campaign_store
 
   integer, parameter :: n_par = 8, n_gears = 4
   character(len=4096) :: arg, dir
-  character(len=msg_len) :: msg
+  type(status_t) :: ss
   type(summary_meta_t) :: meta
   type(case_row_t), allocatable :: rows(:), back(:)
   type(summary_meta_t) :: meta_back
   integer, allocatable :: counts(:)
-  integer :: i, k, st, n, nfiles, nrows, ju, n_journal
+  integer :: i, k, n, nfiles, nrows, ju, n_journal
   real(wp) :: t0, t1, t2, t3, t4, t_write, t_read
 
   if (command_argument_count() < 2) call usage()
@@ -40,32 +41,31 @@ program bench_campaign_store
       n = counts(i)
       meta = synthetic_meta(n)
       rows = synthetic_rows(1, n)
-      msg = ''
       t0 = now()
-      call write_summary('bench_checkpoint.h5', meta, rows, 'bench_campaign_store', st, msg)
+      call write_summary('bench_checkpoint.h5', meta, rows, 'bench_campaign_store', ss)
       t1 = now()
-      if (st /= 0) call fail(msg)
-      call read_summary('bench_checkpoint.h5', meta_back, back, st, msg)
+      if (.not. ss%ok()) call fail(ss%text())
+      call read_summary('bench_checkpoint.h5', meta_back, back, ss)
       t2 = now()
-      if (st /= 0) call fail(msg)
+      if (.not. ss%ok()) call fail(ss%text())
       if (size(back) /= n) call fail('read_summary gave a different number of rows')
       t_write = t1 - t0
       t_read = t2 - t1
       deallocate (back)
-      call delete_file('bench_checkpoint.h5', st, msg)
+      call delete_file('bench_checkpoint.h5')
       ! journal lines: unflushed (batched flushes) and flushed one by one
       n_journal = min(n, 20000)
-      call delete_file('bench_checkpoint.journal', st, msg)
-      call journal_open('bench_checkpoint.journal', meta, ju, st, msg)
-      if (st /= 0) call fail(msg)
+      call delete_file('bench_checkpoint.journal')
+      call journal_open('bench_checkpoint.journal', meta, ju, ss)
+      if (.not. ss%ok()) call fail(ss%text())
       t2 = now()
       do k = 1, n_journal
-        call journal_append(ju, rows(k), st, msg, flush_now=.false.)
+        call journal_append(ju, rows(k), ss, flush_now=.false.)
       end do
-      call journal_flush(ju, st, msg)
+      call journal_flush(ju, ss)
       t3 = now()
       do k = 1, n_journal
-        call journal_append(ju, rows(k), st, msg)
+        call journal_append(ju, rows(k), ss)
       end do
       t4 = now()
       close (ju, status='delete')
@@ -86,8 +86,8 @@ program bench_campaign_store
     do i = 1, nfiles
       rows = synthetic_rows((i - 1)*nrows + 1, nrows)
       write (arg, '(a,a,i6.6,a)') trim(dir), '/part_', i, '.h5'
-      call write_summary(trim(arg), meta, rows, 'bench_campaign_store parts', st, msg)
-      if (st /= 0) call fail(msg)
+      call write_summary(trim(arg), meta, rows, 'bench_campaign_store parts', ss)
+      if (.not. ss%ok()) call fail(ss%text())
     end do
     t1 = now()
     write (output_unit, '(a,i0,a,i0,a,f10.3)') 'parts files=', nfiles, ' rows_each=', nrows, ' write_s=', t1 - t0

@@ -81,7 +81,8 @@ class DatasetSpec:
     /api/inputs, ``k`` primary honeycomb stages, ``l`` crush levels, integers for fixed lengths.
     kind is ``real``, ``int``, ``bool`` (int 0/1 with attribute type=logical) or ``text``.
     components labels the last axis (vectors) where it has a meaning; STRUTS for strut axes.
-    written is ``always``, ``with health`` or ``api inputs`` (only in C API files with inputs).
+    written is ``always``, ``with health``, ``api inputs`` (only in C API files with inputs) or ``summaries``
+    (only in campaign summaries, never in a result file).
     """
     key: str
     path: str
@@ -129,7 +130,7 @@ LOAD_NAMES = tuple(f"F{j}_{c}" for j in "abcd" for c in "xyz") + tuple(f"M{j}_{c
 PEAK_JOINTS = ("a", "b", "c", "d")
 PEAK_QUANTITIES = ("x", "y", "z", "magnitude")
 #: /meta: provenance strings (all scalar text, units '-'), (key, meaning)
-META = tuple((d.key, d.meaning) for d in DATASETS if d.path.startswith("/meta/"))
+META = tuple((d.key, d.meaning) for d in DATASETS if d.path.startswith("/meta/") and d.written != "summaries")
 
 #: root attributes of the file
 ROOT_ATTRIBUTES = (
@@ -553,7 +554,7 @@ def load(path: str | os.PathLike) -> Result:
         data: dict[str, object] = {}
         minor = _minor(ver)
         for d in DATASETS:
-            if d.path not in f and (minor < _minor(d.since) or d.written == "api inputs"):
+            if d.path not in f and (minor < _minor(d.since) or d.written in ("api inputs", "summaries")):
                 data[d.key] = None       # added after the file's schema version, or not written by this producer
                 continue
             if d.path not in f:

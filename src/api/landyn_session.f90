@@ -431,8 +431,8 @@ contains
     type(sim_result_t) :: out
     type(health_t) :: health
     logical :: has_health
-    integer :: st, n
-    character(len=msg_len) :: m2
+    integer :: n
+    type(status_t) :: st
     character(len=*), parameter :: cmd = 'landyn_write_result (LANDYN C API)'
     stat = api_ok
     msg = output_file_problem(path, 'result file', [' '], .true.)
@@ -442,21 +442,20 @@ contains
     end if
     call session_result(s, out, health, has_health)
     n = s%n_inputs
-    m2 = ''
     if (has_health .and. n > 0) then
-      call write_result_file(path, s%inp, out, cmd, st, m2, health, 'C API', s%input_t(1:n), &
+      call write_result_file(path, s%inp, out, cmd, st, health, 'C API', s%input_t(1:n), &
                              s%input_force(:, 1:n), s%input_moment(:, 1:n))
     else if (has_health) then
-      call write_result_file(path, s%inp, out, cmd, st, m2, health, 'C API')
+      call write_result_file(path, s%inp, out, cmd, st, health, 'C API')
     else if (n > 0) then
-      call write_result_file(path, s%inp, out, cmd, st, m2, program='C API', input_time=s%input_t(1:n), &
+      call write_result_file(path, s%inp, out, cmd, st, program='C API', input_time=s%input_t(1:n), &
                              input_force=s%input_force(:, 1:n), input_moment=s%input_moment(:, 1:n))
     else
-      call write_result_file(path, s%inp, out, cmd, st, m2, program='C API')
+      call write_result_file(path, s%inp, out, cmd, st, program='C API')
     end if
-    if (st /= 0) then
+    if (.not. st%ok()) then
       stat = api_err_file
-      msg = 'cannot write the result file: '//trim(m2)
+      msg = 'cannot write the result file: '//st%text()
     end if
   end subroutine session_write
 

@@ -21,7 +21,7 @@ program landyn
   use landyn_health, only: health_t, write_health
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
-  use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH
   use landyn_cli, only: command_line, write_input_errors
   use landyn_app_support, only: app_t
   implicit none
@@ -56,6 +56,7 @@ program landyn
   integer :: stat, status, progress
   logical :: ran
   character(len=msg_len) :: msg
+  type(status_t) :: write_status
 
   call app%start('landyn', trim(help_text(1)), help_text)
   deck = ''
@@ -124,9 +125,9 @@ program landyn
 
   ! ---- result file
   cmd = command_line()
-  call write_result_file(out_file, inp, res, cmd, stat, msg, health)
-  if (stat /= 0) then
-    write (error_unit, '(a)') 'landyn: cannot write the result file: '//trim(msg)
+  call write_result_file(out_file, inp, res, cmd, write_status, health)
+  if (.not. write_status%ok()) then
+    write (error_unit, '(a)') 'landyn: cannot write the result file: '//write_status%text()
     call terminate(EXIT_FILE)
   end if
   call write_summary_table(output_unit, inp, res)

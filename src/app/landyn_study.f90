@@ -12,7 +12,7 @@
 program landyn_study_main
   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
   use landyn_study, only: study_t, read_study, prepare_study, run_study, status_ok, status_failed, status_unhealthy, &
                           status_no_touchdown, strut_names
@@ -20,7 +20,7 @@ program landyn_study_main
   use landyn_outcome, only: outcome_name
   use landyn_files, only: output_file_problem, file_kind, kind_regular
   use landyn_process, only: terminate
-  use landyn_status, only: STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH, &
+  use landyn_status, only: status_t, STAT_INPUT, STAT_OK, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_FILE, EXIT_HEALTH, &
                           EXIT_NO_TOUCHDOWN
   use landyn_cli, only: command_line, write_input_errors
   use landyn_app_support, only: app_t
@@ -53,7 +53,7 @@ program landyn_study_main
   character(len=:), allocatable :: deck, h5_file, csv_file, arg, cmd, problem
   logical :: check_only
   integer :: i, stat, run_stat, c, v, progress
-  character(len=msg_len) :: msg
+  type(status_t) :: file_status
   character(len=4096), allocatable :: inputs(:)
 
   call app%start('landyn_study', 'usage: landyn_study STUDY.nml [-o FILE.h5] [--csv FILE.csv] [--check] [--quiet]', &
@@ -132,22 +132,21 @@ program landyn_study_main
   progress = error_unit
   if (app%quiet) progress = -1
   cmd = command_line()
-  msg = ''
-  call run_study(study, progress, cmd, run_stat, stat, msg)
-  if (stat == STAT_FILE) then
-    write (error_unit, '(a)') 'landyn_study: '//trim(msg)
+  call run_study(study, progress, cmd, run_stat, file_status)
+  if (file_status%code == STAT_FILE) then
+    write (error_unit, '(a)') 'landyn_study: '//file_status%text()
     call terminate(EXIT_FILE)
   end if
 
   ! ---- files
-  call write_study_h5(study, h5_file, cmd, stat, msg)
-  if (stat /= STAT_OK) then
-    write (error_unit, '(a)') 'landyn_study: cannot write the result file: '//trim(msg)
+  call write_study_h5(study, h5_file, cmd, file_status)
+  if (.not. file_status%ok()) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the result file: '//file_status%text()
     call terminate(EXIT_FILE)
   end if
-  call write_study_csv(study, csv_file, stat, msg)
-  if (stat /= STAT_OK) then
-    write (error_unit, '(a)') 'landyn_study: cannot write the table: '//trim(msg)
+  call write_study_csv(study, csv_file, file_status)
+  if (.not. file_status%ok()) then
+    write (error_unit, '(a)') 'landyn_study: cannot write the table: '//file_status%text()
     call terminate(EXIT_FILE)
   end if
   call write_table(output_unit)

@@ -148,8 +148,9 @@ contains
     type(sim_result_t) :: res
     type(health_t) :: health
     real(wp) :: values(camp%n_par)
-    character(len=:), allocatable :: m1, path
+    character(len=:), allocatable :: path
     character(len=msg_len) :: msg
+    type(status_t) :: wst
     integer :: st
     logical :: ran
     integer(int64) :: c0, crate, c_in, c_sim
@@ -158,10 +159,10 @@ contains
     c_in = -1
     c_sim = -1
     row = new_row(id, camp%n_par, camp%n_gears)
-    call case_values(camp, id, values, st, m1)
-    if (st /= 0) then
+    call case_values(camp, id, values, wst)
+    if (.not. wst%ok()) then
       row%status = status_invalid_input
-      row%message = m1
+      row%message = wst%text()
       row%end_reason = 'invalid input'
       call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)
       return
@@ -198,11 +199,11 @@ contains
     if (save_history) then
       path = history_file_name(camp, id)
       inp%output%file = path
-      call write_result_file(path, inp, res, command_line, st, msg, health)
-      if (st == 0) then
+      call write_result_file(path, inp, res, command_line, wst, health)
+      if (wst%ok()) then
         row%history_file = path
       else
-        row%message = 'time-history file not written: '//trim(msg)
+        row%message = 'time-history file not written: '//wst%text()
       end if
     end if
     call finish_row(row, camp%crit, c0, c_in, c_sim, crate, timing)

@@ -7,7 +7,7 @@
 module landyn_campaign_case_deck
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED
   use landyn_config, only: landyn_input_t, is_set
   use landyn_input, only: input_errors_t, read_input_text, resolve_input, validate_input
   use landyn_campaign_text, only: lower_case, int_text, real_text, real_text_short
@@ -68,18 +68,15 @@ contains
     write (hex, '(z16.16)') h
   end function text_fingerprint
 
-  !> The values of the varied inputs of case `id` (deck units). stat = 1 (with errmsg) when a
-  !! truncated normal could not be sampled.
-  subroutine case_values(camp, id, values, stat, errmsg)
+  !> The values of the varied inputs of case `id` (deck units). STAT_FAILED (with its message)
+  !! when a truncated normal could not be sampled.
+  subroutine case_values(camp, id, values, status)
     type(campaign_t), intent(in) :: camp               !! campaign [-]
     integer, intent(in) :: id                          !! case id, 1..n_cases [-]
     real(wp), intent(out) :: values(:)                 !! (n_par) values [deck unit]
-    integer, intent(out) :: stat                       !! 0 ok [-]
-    character(len=:), allocatable, intent(out) :: errmsg  !! problem [-]
-    integer :: j, r, i
+    type(status_t), intent(out) :: status              !! STAT_OK, or STAT_FAILED with its message [-]
+    integer :: j, r, i, st
     real(wp) :: u, a, b
-    stat = STAT_OK
-    errmsg = ''
     select case (camp%mode)
     case ('grid')
       r = id - 1
@@ -100,9 +97,10 @@ contains
             b = huge(1.0_wp)
             if (is_set(p%lo)) a = p%lo
             if (is_set(p%hi)) b = p%hi
-            call case_truncated_normal(camp%seed, id, j, p%mean, p%sd, a, b, max_normal_tries, values(j), stat)
-            if (stat /= STAT_OK) then
-              errmsg = 'no normal sample of '//p%name//' fell inside lo .. hi in '//int_text(max_normal_tries)//' tries'
+            call case_truncated_normal(camp%seed, id, j, p%mean, p%sd, a, b, max_normal_tries, values(j), st)
+            if (st /= STAT_OK) then
+              call status%fail(STAT_FAILED, 'no normal sample of '//p%name//' fell inside lo .. hi in '// &
+                               int_text(max_normal_tries)//' tries')
               return
             end if
           case default   ! discrete

@@ -12,7 +12,7 @@ module landyn_campaign_journal
   use, intrinsic :: iso_fortran_env, only: int64
   use landyn_kinds, only: wp
   use landyn_strings, only: int_text
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: status_t, STAT_FAILED
   use landyn_campaign_case, only: case_row_t, row_int_count, row_real_count, pack_row, unpack_row
   use landyn_campaign_store, only: summary_meta_t
   implicit none
@@ -25,46 +25,46 @@ module landyn_campaign_journal
 contains
 
   !> Open the journal for appending: create it with its header, or check the header of an
-  !! existing one against `meta`. stat = 1 on a different campaign or an unwritable file.
-  subroutine journal_open(path, meta, unit, stat, errmsg)
+  !! existing one against `meta`. STAT_FAILED on a different campaign or an unwritable file.
+  subroutine journal_open(path, meta, unit, status)
     character(len=*), intent(in) :: path        !! journal file [-]
     type(summary_meta_t), intent(in) :: meta    !! campaign meta data [-]
     integer, intent(out) :: unit                !! open unit [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(out) :: status       !! STAT_OK, or STAT_FAILED with its message [-]
     logical :: exists
     character(len=256) :: iomsg
+    integer :: ios
     iomsg = ''
     inquire (file=path, exist=exists)
     if (exists) then
-      call end_with_newline(path, stat, iomsg)
-      if (stat == 0) open (newunit=unit, file=path, status='old', action='write', position='append', &
-                           form='formatted', iostat=stat, iomsg=iomsg)
+      call end_with_newline(path, ios, iomsg)
+      if (ios == 0) open (newunit=unit, file=path, status='old', action='write', position='append', &
+                          form='formatted', iostat=ios, iomsg=iomsg)
     else
-      open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=stat, iomsg=iomsg)
-      if (stat == 0) then
-        write (unit, '(a)', iostat=stat, iomsg=iomsg) journal_header(meta)
-        if (stat == 0) flush (unit)
+      open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios, iomsg=iomsg)
+      if (ios == 0) then
+        write (unit, '(a)', iostat=ios, iomsg=iomsg) journal_header(meta)
+        if (ios == 0) flush (unit)
       end if
     end if
-    if (stat /= 0) errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
+    if (ios /= 0) call status%fail(STAT_FAILED, 'cannot open the journal '//path//': '//trim(iomsg))
   end subroutine journal_open
 
   !> Append a line end to a file whose last line is unterminated (a torn journal line), so
   !! that new lines start on a line of their own.
-  subroutine end_with_newline(path, stat, iomsg)
+  subroutine end_with_newline(path, ios, iomsg)
     character(len=*), intent(in) :: path        !! file [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
+    integer, intent(out) :: ios                 !! iostat: 0 ok [-]
     character(len=*), intent(inout) :: iomsg    !! message on failure [-]
     integer :: u, nbytes
     character(len=1) :: last
     open (newunit=u, file=path, access='stream', form='unformatted', action='readwrite', status='old', &
-          iostat=stat, iomsg=iomsg)
-    if (stat /= 0) return
+          iostat=ios, iomsg=iomsg)
+    if (ios /= 0) return
     inquire (unit=u, size=nbytes)
     if (nbytes > 0) then
-      read (u, pos=nbytes, iostat=stat, iomsg=iomsg) last
-      if (stat == 0 .and. last /= new_line('a')) write (u, pos=nbytes + 1, iostat=stat, iomsg=iomsg) new_line('a')
+      read (u, pos=nbytes, iostat=ios, iomsg=iomsg) last
+      if (ios == 0 .and. last /= new_line('a')) write (u, pos=nbytes + 1, iostat=ios, iomsg=iomsg) new_line('a')
     end if
     close (u)
   end subroutine end_with_newline
@@ -80,25 +80,24 @@ contains
   !> Append one row to the journal and flush it (unless `flush_now` is .false.: the caller then
   !! flushes with journal_flush before it waits or computes, so that a kill loses only rows
   !! received in the last moments).
-  subroutine journal_append(unit, row, stat, errmsg, flush_now)
+  subroutine journal_append(unit, row, status, flush_now)
     integer, intent(in) :: unit                 !! journal unit [-]
     type(case_row_t), intent(in) :: row         !! row [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(out) :: status       !! STAT_OK, or STAT_FAILED with its message [-]
     logical, intent(in), optional :: flush_now  !! flush at once (default .true.) [-]
-    integer :: ibuf(row_int_count)
+    integer :: ibuf(row_int_count), ios
     real(wp), allocatable :: rbuf(:)
     character(len=:), allocatable :: text
     character(len=256) :: iomsg
     iomsg = ''
     call pack_row(row, ibuf, rbuf, text)
-    write (unit, '(a)', iostat=stat, iomsg=iomsg) journal_line(ibuf, rbuf, text)
+    write (unit, '(a)', iostat=ios, iomsg=iomsg) journal_line(ibuf, rbuf, text)
     if (present(flush_now)) then
-      if (stat == 0 .and. flush_now) flush (unit, iostat=stat, iomsg=iomsg)
+      if (ios == 0 .and. flush_now) flush (unit, iostat=ios, iomsg=iomsg)
     else
-      if (stat == 0) flush (unit, iostat=stat, iomsg=iomsg)
+      if (ios == 0) flush (unit, iostat=ios, iomsg=iomsg)
     end if
-    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
+    if (ios /= 0) call status%fail(STAT_FAILED, 'cannot write to the journal: '//trim(iomsg))
   end subroutine journal_append
 
   !> The journal line of a packed row: 'R', the integers as (1x,i11), the reals' bit patterns
@@ -142,25 +141,24 @@ contains
   end function journal_line
 
   !> Flush the journal's lines to the operating system.
-  subroutine journal_flush(unit, stat, errmsg)
+  subroutine journal_flush(unit, status)
     integer, intent(in) :: unit                 !! journal unit [-]
-    integer, intent(out) :: stat                !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg   !! message on failure [-]
+    type(status_t), intent(out) :: status       !! STAT_OK, or STAT_FAILED with its message [-]
     character(len=256) :: iomsg
+    integer :: ios
     iomsg = ''
-    flush (unit, iostat=stat, iomsg=iomsg)
-    if (stat /= 0) errmsg = 'cannot write to the journal: '//trim(iomsg)
+    flush (unit, iostat=ios, iomsg=iomsg)
+    if (ios /= 0) call status%fail(STAT_FAILED, 'cannot write to the journal: '//trim(iomsg))
   end subroutine journal_flush
 
-  !> Rows of a journal (in file order). stat = 1 when the file is not a journal of the campaign
-  !! `meta` describes; n_bad counts lines that did not parse (a torn last line).
-  subroutine journal_read(path, meta, rows, n_bad, stat, errmsg)
+  !> Rows of a journal (in file order). STAT_FAILED when the file cannot be opened or is not a
+  !! journal of the campaign `meta` describes; n_bad counts lines that did not parse (a torn last line).
+  subroutine journal_read(path, meta, rows, n_bad, status)
     character(len=*), intent(in) :: path                   !! journal file [-]
     type(summary_meta_t), intent(in) :: meta               !! campaign meta data [-]
     type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
     integer, intent(out) :: n_bad                          !! unparsable lines [-]
-    integer, intent(out) :: stat                           !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg              !! message on failure [-]
+    type(status_t), intent(out) :: status                  !! STAT_OK, or STAT_FAILED with its message [-]
     integer :: u, ios, nr, nfix, k, k2, st, n
     character(len=:), allocatable :: line
     character(len=32) :: fmt
@@ -175,19 +173,18 @@ contains
     n_bad = 0
     allocate (rows(0))
     iomsg = ''
-    open (newunit=u, file=path, status='old', action='read', form='formatted', iostat=stat, iomsg=iomsg)
-    if (stat /= 0) then
-      errmsg = 'cannot open the journal '//path//': '//trim(iomsg)
+    open (newunit=u, file=path, status='old', action='read', form='formatted', iostat=ios, iomsg=iomsg)
+    if (ios /= 0) then
+      call status%fail(STAT_FAILED, 'cannot open the journal '//path//': '//trim(iomsg))
       return
     end if
     call read_line(u, line, ios)
     if (ios /= 0 .or. line /= journal_header(meta)) then
-      stat = STAT_FAILED
       if (ios == 0 .and. index(line, journal_magic) == 1) then
-        errmsg = path//' is the journal of a different campaign ('//trim(line(len(journal_magic) + 2:))// &
-                 '; this campaign has fingerprint='//meta%fingerprint//')'
+        call status%fail(STAT_FAILED, path//' is the journal of a different campaign ('// &
+                         trim(line(len(journal_magic) + 2:))//'; this campaign has fingerprint='//meta%fingerprint//')')
       else
-        errmsg = path//' is not a LANDYN campaign journal'
+        call status%fail(STAT_FAILED, path//' is not a LANDYN campaign journal')
       end if
       close (u)
       return
@@ -227,7 +224,6 @@ contains
     end do
     close (u)
     rows = rows(1:n)
-    stat = STAT_OK
   end subroutine journal_read
 
   !> One whole line of a formatted sequential file, any length.

@@ -38,7 +38,7 @@ module landyn_campaign_parallel
                      MPI_Irecv, MPI_Test, MPI_Wait, MPI_Iprobe, MPI_Get_count, MPI_Abort, MPI_Wtime, MPI_Gather, &
                      MPI_Status, MPI_Request, MPI_REQUEST_NULL, MPI_STATUS_IGNORE, MPI_COMM_WORLD, MPI_INTEGER, &
                      MPI_DOUBLE_PRECISION, MPI_CHARACTER, MPI_ANY_SOURCE
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
   use landyn_h5, only: delete_file
   use landyn_campaign_text, only: int_text, real_text_short
@@ -50,7 +50,7 @@ module landyn_campaign_parallel
                                    results_take_rows
   use landyn_campaign_journal, only: journal_open, journal_append, journal_flush, journal_read
   use landyn_files, only: lock_file, unlock_file
-  use landyn_status, only: STAT_OK, STAT_FAILED, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_status, only: status_t, STAT_FAILED, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_tasks, only: load_or_report, report_probability, report_row
   implicit none
   private
@@ -231,8 +231,7 @@ contains
     integer, intent(inout) :: ju                  !! journal unit [-]
     integer, intent(inout) :: lock                !! lock of the campaign (lock_file) [-]
     integer, intent(out) :: code                  !! exit code [-]
-    character(len=:), allocatable :: lock_why
-    integer :: st
+    type(status_t) :: lock_st
     call load_or_report(deck, camp, err_u, code)
     if (code /= EXIT_OK) return
     summary = opts%summary_file
@@ -241,10 +240,10 @@ contains
     meta = meta_from_campaign(camp)
     ! one process per campaign: two resumes of one journal would both append to it and
     ! both write the summary file (the kernel releases the lock when the process ends)
-    call lock_file(summary//'.lock', lock, st, lock_why)
-    if (st /= STAT_OK) then
+    call lock_file(summary//'.lock', lock, lock_st)
+    if (.not. lock_st%ok()) then
       write (err_u, '(a)') 'landyn_batch: the campaign of '//summary//' is in use: '//summary//'.lock: '// &
-        lock_why//'; wait for that run to end (a killed run leaves no lock held)'
+        lock_st%text()//'; wait for that run to end (a killed run leaves no lock held)'
       code = EXIT_FILE
     else
       call prepare_output(camp, meta, opts, summary, journal, table, ju, err_u, code)
@@ -296,8 +295,7 @@ contains
     integer, intent(in) :: err_u                  !! unit for messages [-]
     integer, intent(out) :: code                  !! exit code [-]
     type(case_row_t), allocatable :: rows(:)
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: dt
     code = EXIT_OK
     if (ses%stopped) then
@@ -308,15 +306,14 @@ contains
       return
     end if
     call results_take_rows(table, rows)
-    msg = ''
-    call write_summary(summary, meta, rows, opts%command_line, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: cannot write the summary file: '//trim(msg)
+    call write_summary(summary, meta, rows, opts%command_line, st)
+    if (.not. st%ok()) then
+      write (err_u, '(a)') 'landyn_batch: cannot write the summary file: '//st%text()
       write (err_u, '(a)') 'landyn_batch: the rows are kept in '//journal//'; fix the problem and run with --resume'
       code = EXIT_FILE
       return
     end if
-    call delete_file(journal, st, msg)
+    call delete_file(journal)
     ! speed and (--verbose) the time account are diagnostics: on the message unit, before the
     ! result on out_u, whose final line counts the failures per criterion
     dt = ses%t1 - ses%t0
@@ -341,15 +338,13 @@ contains
     integer, intent(out) :: ju                    !! journal unit [-]
     integer, intent(in) :: err_u                  !! unit for messages [-]
     integer, intent(out) :: code                  !! exit code [-]
-    character(len=msg_len) :: msg
     logical :: ex_s, ex_j
-    integer :: st
+    type(status_t) :: jst
     code = EXIT_OK
     ju = -1
     call results_init(table, camp%n_cases)
     inquire (file=summary, exist=ex_s)
     inquire (file=journal, exist=ex_j)
-    msg = ''
     if (.not. opts%resume) then
       if ((ex_s .or. ex_j) .and. .not. opts%force) then
         if (ex_s) then
@@ -362,15 +357,15 @@ contains
         code = EXIT_USAGE
         return
       end if
-      call delete_file(summary, st, msg)
-      call delete_file(journal, st, msg)
+      call delete_file(summary)
+      call delete_file(journal)
     else
       call resume_rows(camp, meta, opts, summary, journal, ex_s, ex_j, table, err_u, code)
       if (code /= EXIT_OK) return
     end if
-    call journal_open(journal, meta, ju, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: '//trim(msg)
+    call journal_open(journal, meta, ju, jst)
+    if (.not. jst%ok()) then
+      write (err_u, '(a)') 'landyn_batch: '//jst%text()
       code = EXIT_FILE
     end if
   end subroutine prepare_output
@@ -390,18 +385,17 @@ contains
     integer, intent(out) :: code                  !! exit code [-]
     type(summary_meta_t) :: m
     type(case_row_t), allocatable :: rows(:)
-    character(len=msg_len) :: msg
-    integer :: st, n_s, n_j, n_bad, n_out
+    type(status_t) :: rs
+    integer :: n_s, n_j, n_bad, n_out
     code = EXIT_OK
-    msg = ''
     n_s = 0
     n_j = 0
     n_bad = 0
     n_out = 0
     if (ex_s) then
-      call read_summary(summary, m, rows, st, msg)
-      if (st /= 0) then
-        write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
+      call read_summary(summary, m, rows, rs)
+      if (.not. rs%ok()) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//rs%text()
         code = EXIT_INPUT
         return
       end if
@@ -414,9 +408,9 @@ contains
       call add_rows(table, rows, n_s, n_out)
     end if
     if (ex_j) then
-      call journal_read(journal, meta, rows, n_bad, st, msg)
-      if (st /= 0) then
-        write (err_u, '(a)') 'landyn_batch: --resume: '//trim(msg)
+      call journal_read(journal, meta, rows, n_bad, rs)
+      if (.not. rs%ok()) then
+        write (err_u, '(a)') 'landyn_batch: --resume: '//rs%text()
         code = EXIT_INPUT
         return
       end if
@@ -645,28 +639,25 @@ contains
     type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
     logical, intent(in) :: now                    !! flush whatever the time [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: t
     if (ms%n_unflushed == 0) return
     t = MPI_Wtime()
     if (.not. now .and. t - ms%t_flush < flush_interval) return
-    msg = ''
-    call journal_flush(sink%ju, st, msg)
-    call journal_problem(ms, sink, st, msg)
+    call journal_flush(sink%ju, st)
+    call journal_problem(ms, sink, st)
     ms%n_unflushed = 0
     ms%t_flush = MPI_Wtime()
     prof(p_record) = prof(p_record) + (ms%t_flush - t)
   end subroutine flush_journal
 
   !> Report the first journal operation that failed (the rows are then kept in memory only).
-  subroutine journal_problem(ms, sink, st, msg)
+  subroutine journal_problem(ms, sink, st)
     type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: journal_ok [-]
     type(master_sink_t), intent(in) :: sink       !! rank 0's units [-]
-    integer, intent(in) :: st                     !! status of the journal operation [-]
-    character(len=*), intent(in) :: msg           !! its message [-]
-    if (st /= 0 .and. ms%journal_ok) then
-      write (sink%err_u, '(a)') 'landyn_batch: warning: '//trim(msg)// &
+    type(status_t), intent(in) :: st              !! status of the journal operation, with its message [-]
+    if (.not. st%ok() .and. ms%journal_ok) then
+      write (sink%err_u, '(a)') 'landyn_batch: warning: '//st%text()// &
         ' (rows are kept in memory and written at the end)'
       ms%journal_ok = .false.
     end if
@@ -684,15 +675,13 @@ contains
     type(results_t), intent(inout) :: table       !! rows [-]
     type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: t, t2, c0, c1
     call cpu_time(c0)
     t = MPI_Wtime()
     call results_add(table, r)
-    msg = ''
-    call journal_append(sink%ju, r, st, msg, flush_now=.false.)
-    call journal_problem(ms, sink, st, msg)
+    call journal_append(sink%ju, r, st, flush_now=.false.)
+    call journal_problem(ms, sink, st)
     ms%n_unflushed = ms%n_unflushed + 1
     ms%n_session = ms%n_session + 1
     prof(p_rows) = prof(p_rows) + 1.0_wp
@@ -725,13 +714,11 @@ contains
     type(results_t), intent(in) :: table          !! rows [-]
     type(master_t), intent(inout), asynchronous :: ms  !! rank 0's state: t_next_ckpt [-]
     real(wp), intent(inout) :: prof(n_prof)       !! time account of rank 0 (slots p_*) [s, -]
-    character(len=msg_len) :: msg
-    integer :: st
+    type(status_t) :: st
     real(wp) :: t, t2
     t = MPI_Wtime()
-    msg = ''
-    call write_summary(summary, meta, results_rows(table), opts%command_line, st, msg)
-    if (st /= 0) write (sink%err_u, '(a)') 'landyn_batch: warning: checkpoint not written: '//trim(msg)
+    call write_summary(summary, meta, results_rows(table), opts%command_line, st)
+    if (.not. st%ok()) write (sink%err_u, '(a)') 'landyn_batch: warning: checkpoint not written: '//st%text()
     t2 = MPI_Wtime()
     prof(p_ckpt) = prof(p_ckpt) + (t2 - t)
     prof(p_nckpt) = prof(p_nckpt) + 1.0_wp

@@ -9,10 +9,10 @@
 !!
 !! Library code: nothing here stops or prints.
 module landyn_campaign_store
-  use landyn_kinds, only: wp, ip, msg_len
+  use landyn_kinds, only: wp, ip
   use landyn_version, only: landyn_git_revision
   use landyn_strings, only: nonempty, int_text
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED
   use landyn_provenance, only: write_meta
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_open_read, h5_close, h5_write, &
                        h5_write_attr, h5_read, h5_read_attr, h5_exists
@@ -229,28 +229,26 @@ contains
   ! ================================================================ summary file
 
   !> Write the summary file `path` (via `path`.partial and a rename) with `rows` (sorted by case id).
-  subroutine write_summary(path, meta, rows, command_line, stat, errmsg)
+  subroutine write_summary(path, meta, rows, command_line, status)
     character(len=*), intent(in) :: path          !! summary file [-]
     type(summary_meta_t), intent(in) :: meta      !! campaign meta data [-]
     type(case_row_t), intent(in) :: rows(:)       !! rows in case-id order [-]
     character(len=*), intent(in) :: command_line  !! command that wrote the file [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message on failure [-]
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
     type(h5_file_t) :: f
-    call h5_create_partial(f, path, stat, errmsg)
-    if (stat /= 0) return
-    call write_contents(f, meta, rows, command_line, stat, errmsg)
-    call h5_commit_partial(f, path, stat, errmsg)
+    call h5_create_partial(f, path, status)
+    if (.not. status%ok()) return
+    call write_contents(f, meta, rows, command_line, status)
+    call h5_commit_partial(f, path, status)
   end subroutine write_summary
 
   !> The contents of a summary file: attributes, /meta, /campaign, /parameters, /criteria, /cases, /probability.
-  subroutine write_contents(f, meta, rows, command_line, stat, errmsg)
+  subroutine write_contents(f, meta, rows, command_line, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
     type(case_row_t), intent(in) :: rows(:)       !! rows [-]
     character(len=*), intent(in) :: command_line  !! command line [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
     integer :: n, n_eval, n_succ, n_excl, n_inc, complete
     real(wp) :: p, lo, hi
 
@@ -266,134 +264,130 @@ contains
     call success_probability(rows, meta%crit%failed_runs, n_eval, n_succ, n_excl, p, lo, hi, n_inc)
 
     ! ---- root attributes
-    call h5_write_attr(f, '/', 'schema_version', schema_version, stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'title', nonempty(meta%title), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'mode', meta%mode, stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'fingerprint', meta%fingerprint, stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'n_cases', int(meta%n_cases, ip), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'n_rows', int(n, ip), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'complete', int(complete, ip), stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'p_success', p, stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'p_success_ci95_low', lo, stat, errmsg); if (stat /= 0) return
-    call h5_write_attr(f, '/', 'p_success_ci95_high', hi, stat, errmsg); if (stat /= 0) return
+    call h5_write_attr(f, '/', 'schema_version', schema_version, status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'title', nonempty(meta%title), status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'mode', meta%mode, status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'fingerprint', meta%fingerprint, status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'n_cases', int(meta%n_cases, ip), status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'n_rows', int(n, ip), status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'complete', int(complete, ip), status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'p_success', p, status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'p_success_ci95_low', lo, status); if (.not. status%ok()) return
+    call h5_write_attr(f, '/', 'p_success_ci95_high', hi, status); if (.not. status%ok()) return
 
     ! ---- root attribute producer, /meta
-    call write_meta(f, 'landyn_batch', command_line, stat, errmsg, run_git_revision=meta%git_revision)
-    if (stat /= 0) return
+    call write_meta(f, 'landyn_batch', command_line, status, run_git_revision=meta%git_revision)
+    if (.not. status%ok()) return
 
-    call write_campaign_group(f, meta, stat, errmsg); if (stat /= 0) return
-    call write_criteria_group(f, meta%crit, stat, errmsg); if (stat /= 0) return
-    call write_case_inputs(f, meta, rows, stat, errmsg); if (stat /= 0) return
-    call write_case_results(f, meta, rows, stat, errmsg); if (stat /= 0) return
-    call write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, stat, errmsg)
+    call write_campaign_group(f, meta, status); if (.not. status%ok()) return
+    call write_criteria_group(f, meta%crit, status); if (.not. status%ok()) return
+    call write_case_inputs(f, meta, rows, status); if (.not. status%ok()) return
+    call write_case_results(f, meta, rows, status); if (.not. status%ok()) return
+    call write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, status)
   end subroutine write_contents
 
   !> /campaign (the decks and how the cases are made) and /parameters (the varied inputs) of a summary file.
-  subroutine write_campaign_group(f, meta, stat, errmsg)
+  subroutine write_campaign_group(f, meta, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
     ! ---- /campaign
-    call h5_write(f, '/campaign/deck_name', nonempty(meta%deck_name), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/deck_text', nonempty(meta%deck_text), '-', stat, errmsg, &
-                  description='the campaign deck as given'); if (stat /= 0) return
-    call h5_write(f, '/campaign/base_deck_name', nonempty(meta%base_name), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/base_deck_text', nonempty(meta%base_text), '-', stat, errmsg, &
-                  description='the base run deck every case starts from'); if (stat /= 0) return
-    call h5_write(f, '/campaign/list_file_name', nonempty(meta%list_name), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/list_file_text', nonempty(meta%list_text), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/mode', meta%mode, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/seed', meta%seed, '-', stat, errmsg, &
-                  description='Monte Carlo seed (64-bit integer as text)'); if (stat /= 0) return
-    call h5_write(f, '/campaign/n_cases', int(meta%n_cases, ip), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/n_gears', int(meta%n_gears, ip), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/campaign/fingerprint', meta%fingerprint, '-', stat, errmsg, &
-                  description='64-bit hash of everything that defines the cases and their success'); if (stat /= 0) return
+    call h5_write(f, '/campaign/deck_name', nonempty(meta%deck_name), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/deck_text', nonempty(meta%deck_text), '-', status, &
+                  description='the campaign deck as given'); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/base_deck_name', nonempty(meta%base_name), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/base_deck_text', nonempty(meta%base_text), '-', status, &
+                  description='the base run deck every case starts from'); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/list_file_name', nonempty(meta%list_name), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/list_file_text', nonempty(meta%list_text), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/mode', meta%mode, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/seed', meta%seed, '-', status, &
+                  description='Monte Carlo seed (64-bit integer as text)'); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/n_cases', int(meta%n_cases, ip), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/n_gears', int(meta%n_gears, ip), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/campaign/fingerprint', meta%fingerprint, '-', status, &
+                  description='64-bit hash of everything that defines the cases and their success'); if (.not. status%ok()) return
 
     ! ---- /parameters
-    call h5_write(f, '/parameters/name', meta%par_name, '-', stat, errmsg, &
-                  description='varied inputs as group%variable(subscript)'); if (stat /= 0) return
-    call h5_write(f, '/parameters/label', meta%par_label, '-', stat, errmsg, &
-                  description='dataset name of each input under /cases/inputs'); if (stat /= 0) return
-    call h5_write(f, '/parameters/units', meta%par_units, '-', stat, errmsg, &
-                  description='deck units (angles in degrees)'); if (stat /= 0) return
-    call h5_write(f, '/parameters/description', meta%par_desc, '-', stat, errmsg); if (stat /= 0) return
+    call h5_write(f, '/parameters/name', meta%par_name, '-', status, &
+                  description='varied inputs as group%variable(subscript)'); if (.not. status%ok()) return
+    call h5_write(f, '/parameters/label', meta%par_label, '-', status, &
+                  description='dataset name of each input under /cases/inputs'); if (.not. status%ok()) return
+    call h5_write(f, '/parameters/units', meta%par_units, '-', status, &
+                  description='deck units (angles in degrees)'); if (.not. status%ok()) return
+    call h5_write(f, '/parameters/description', meta%par_desc, '-', status); if (.not. status%ok()) return
 
   end subroutine write_campaign_group
 
   !> /criteria of a summary file: the success criteria and whether each is applied.
-  subroutine write_criteria_group(f, c, stat, errmsg)
+  subroutine write_criteria_group(f, c, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(criteria_t), intent(in) :: c             !! success criteria [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
-    call h5_write(f, '/criteria/min_stroke_margin', c%min_stroke_margin, 'm', stat, errmsg, &
-                  description='every stroke margin must be >= this'); if (stat /= 0) return
-    call h5_write(f, '/criteria/max_overload_applied', merge(1_ip, 0_ip, c%overload_applied), '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', stat, errmsg, &
-                  description='peak overload must be <= this (when applied)'); if (stat /= 0) return
-    call h5_write(f, '/criteria/min_tipover_margin_applied', merge(1_ip, 0_ip, c%tipover_applied), '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/criteria/min_tipover_margin', c%min_tipover_margin, 'deg', stat, errmsg, &
-                  description='final tip-over margin must be >= this (when applied)'); if (stat /= 0) return
-    call h5_write(f, '/criteria/max_friction_ratio_applied', merge(1_ip, 0_ip, c%friction_applied), '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/criteria/max_friction_ratio', c%max_friction_ratio, '-', stat, errmsg, &
-                  description='every final |F_t|/(mu_s F_n) must be <= this (when applied)'); if (stat /= 0) return
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
+    call h5_write(f, '/criteria/min_stroke_margin', c%min_stroke_margin, 'm', status, &
+                  description='every stroke margin must be >= this'); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/max_overload_applied', merge(1_ip, 0_ip, c%overload_applied), '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/criteria/max_overload', c%max_overload, 'g', status, &
+                  description='peak overload must be <= this (when applied)'); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/min_tipover_margin_applied', merge(1_ip, 0_ip, c%tipover_applied), '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/criteria/min_tipover_margin', c%min_tipover_margin, 'deg', status, &
+                  description='final tip-over margin must be >= this (when applied)'); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/max_friction_ratio_applied', merge(1_ip, 0_ip, c%friction_applied), '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/criteria/max_friction_ratio', c%max_friction_ratio, '-', status, &
+                  description='every final |F_t|/(mu_s F_n) must be <= this (when applied)'); if (.not. status%ok()) return
     call h5_write(f, '/criteria/min_body_clearance_applied', merge(1_ip, 0_ip, c%clearance_applied), '-', &
-                  stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', stat, errmsg, &
-                  description='body-point clearance must stay >= this (when applied)'); if (stat /= 0) return
-    call h5_write(f, '/criteria/body_points', c%body_point(:, 1:c%n_body_points), 'm', stat, errmsg, &
-                  description='lander-frame points whose clearance is reported, shape (n, 3)'); if (stat /= 0) return
-    call h5_write(f, '/criteria/require_at_rest', merge(1_ip, 0_ip, c%require_at_rest), '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/criteria/failed_runs', trim(c%failed_runs), '-', stat, errmsg, &
-                  description='how cases without a result enter the probability'); if (stat /= 0) return
+                  status); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/min_body_clearance', c%min_body_clearance, 'm', status, &
+                  description='body-point clearance must stay >= this (when applied)'); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/body_points', c%body_point(:, 1:c%n_body_points), 'm', status, &
+                  description='lander-frame points whose clearance is reported, shape (n, 3)'); if (.not. status%ok()) return
+    call h5_write(f, '/criteria/require_at_rest', merge(1_ip, 0_ip, c%require_at_rest), '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/criteria/failed_runs', trim(c%failed_runs), '-', status, &
+                  description='how cases without a result enter the probability'); if (.not. status%ok()) return
   end subroutine write_criteria_group
 
   !> /cases, first part: each row's identity, status, outcome, messages and inputs.
-  subroutine write_case_inputs(f, meta, rows, stat, errmsg)
+  subroutine write_case_inputs(f, meta, rows, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
     type(case_row_t), intent(in) :: rows(:)       !! rows [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
     integer :: n, i, j
 
     n = size(rows)
-    call h5_write(f, '/cases/case_id', [(int(rows(i)%case_id, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/status', [(int(rows(i)%status, ip), i=1, n)], '-', stat, errmsg, &
+    call h5_write(f, '/cases/case_id', [(int(rows(i)%case_id, ip), i=1, n)], '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/status', [(int(rows(i)%status, ip), i=1, n)], '-', status, &
       description='as landyn exit codes: 0 ran to its end (the outcome says how), 2 invalid input, 3 simulation '// &
-                  'failed, 6 run-health check failed, 7 no touchdown'); if (stat /= 0) return
-    call h5_write(f, '/cases/outcome', [(int(rows(i)%outcome, ip), i=1, n)], '-', stat, errmsg, &
+                  'failed, 6 run-health check failed, 7 no touchdown'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/outcome', [(int(rows(i)%outcome, ip), i=1, n)], '-', status, &
       description='0 none (no result), 1 no_touchdown, 2 at_rest, 3 still_moving (inconclusive), 4 tipped_over')
-    if (stat /= 0) return
-    call h5_write(f, '/cases/tipover_margin', [(rows(i)%tipover_margin, i=1, n)], 'deg', stat, errmsg, &
-      description='tip-over margin of the final state (docs/output.md, Outcome)'); if (stat /= 0) return
-    call h5_write(f, '/cases/max_friction_ratio', [(rows(i)%max_friction_ratio, i=1, n)], '-', stat, errmsg, &
-      description='largest footpad |F_t|/(mu_s F_n) of the final state'); if (stat /= 0) return
-    call h5_write(f, '/cases/error_message', text_column(rows, 1), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/end_reason', text_column(rows, 2), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/history_file', text_column(rows, 3), '-', stat, errmsg, &
-                  description='time-history file of the case, empty when none'); if (stat /= 0) return
+    if (.not. status%ok()) return
+    call h5_write(f, '/cases/tipover_margin', [(rows(i)%tipover_margin, i=1, n)], 'deg', status, &
+      description='tip-over margin of the final state (docs/output.md, Outcome)'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/max_friction_ratio', [(rows(i)%max_friction_ratio, i=1, n)], '-', status, &
+      description='largest footpad |F_t|/(mu_s F_n) of the final state'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/error_message', text_column(rows, 1), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/end_reason', text_column(rows, 2), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/history_file', text_column(rows, 3), '-', status, &
+                  description='time-history file of the case, empty when none'); if (.not. status%ok()) return
     do j = 1, meta%n_par
       call h5_write(f, '/cases/inputs/'//trim(meta%par_label(j)), [(rows(i)%inputs(j), i=1, n)], &
-                    trim(meta%par_units(j)), stat, errmsg, description=trim(meta%par_desc(j)))
-      if (stat /= 0) return
+                    trim(meta%par_units(j)), status, description=trim(meta%par_desc(j)))
+      if (.not. status%ok()) return
     end do
   end subroutine write_case_inputs
 
   !> /cases, second part: each row's results (crush, margins, loads, motion, timing) and its verdict
   !! (flags, success, failed criteria).
-  subroutine write_case_results(f, meta, rows, stat, errmsg)
+  subroutine write_case_results(f, meta, rows, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(summary_meta_t), intent(in) :: meta      !! meta data [-]
     type(case_row_t), intent(in) :: rows(:)       !! rows [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
     real(wp), allocatable :: a3(:, :, :)
     integer :: n, i
 
@@ -402,47 +396,48 @@ contains
     do i = 1, n
       a3(:, :, i) = rows(i)%crush
     end do
-    call h5_write(f, '/cases/crush_length', a3, 'm', stat, errmsg, &
-      description='signed net crush, shape (n, n_gears, 3): primary, secondary left, secondary right'); if (stat /= 0) return
+    call h5_write(f, '/cases/crush_length', a3, 'm', status, &
+      description='signed net crush, shape (n, n_gears, 3): primary, secondary left, secondary right')
+    if (.not. status%ok()) return
     do i = 1, n
       a3(:, :, i) = rows(i)%margin
     end do
-    call h5_write(f, '/cases/stroke_margin', a3, 'm', stat, errmsg, &
-      description='stroke capacity minus crushed length, worst direction, shape (n, n_gears, 3)'); if (stat /= 0) return
-    call h5_write(f, '/cases/min_stroke_margin', [(rows(i)%min_margin, i=1, n)], 'm', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/peak_overload', [(rows(i)%peak_overload, i=1, n)], 'g', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/peak_penetration', [(rows(i)%peak_penetration, i=1, n)], 'm', stat, errmsg, &
-                  description='largest footpad penetration'); if (stat /= 0) return
-    call h5_write(f, '/cases/max_slide_distance', [(rows(i)%max_slide, i=1, n)], 'm', stat, errmsg, &
-                  description='largest footpad slide distance'); if (stat /= 0) return
-    call h5_write(f, '/cases/final_tilt', [(rows(i)%final_tilt, i=1, n)], 'deg', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/max_tilt', [(rows(i)%max_tilt, i=1, n)], 'deg', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/min_body_clearance', [(rows(i)%min_clearance, i=1, n)], 'm', stat, errmsg, &
+    call h5_write(f, '/cases/stroke_margin', a3, 'm', status, &
+      description='stroke capacity minus crushed length, worst direction, shape (n, n_gears, 3)'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/min_stroke_margin', [(rows(i)%min_margin, i=1, n)], 'm', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/peak_overload', [(rows(i)%peak_overload, i=1, n)], 'g', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/peak_penetration', [(rows(i)%peak_penetration, i=1, n)], 'm', status, &
+                  description='largest footpad penetration'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/max_slide_distance', [(rows(i)%max_slide, i=1, n)], 'm', status, &
+                  description='largest footpad slide distance'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/final_tilt', [(rows(i)%final_tilt, i=1, n)], 'deg', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/max_tilt', [(rows(i)%max_tilt, i=1, n)], 'deg', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/min_body_clearance', [(rows(i)%min_clearance, i=1, n)], 'm', status, &
       description='smallest height of the body points above the terrain planes, at the output samples')
-    if (stat /= 0) return
-    call h5_write(f, '/cases/final_time', [(rows(i)%final_time, i=1, n)], 's', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/n_steps', [(int(rows(i)%n_steps, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/wall_time', [(rows(i)%wall_time, i=1, n)], 's', stat, errmsg, &
-                  description='wall-clock time of the case (input, run, history file)'); if (stat /= 0) return
-    call h5_write(f, '/cases/tipped_over', [(int(rows(i)%tipped_over, ip), i=1, n)], '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/cases/at_rest', [(int(rows(i)%at_rest, ip), i=1, n)], '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/cases/bottomed_out', [(int(rows(i)%bottomed_out, ip), i=1, n)], '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/cases/success', [(int(rows(i)%success, ip), i=1, n)], '-', stat, errmsg, &
-                  description='1 when every criterion of /criteria holds'); if (stat /= 0) return
-    call h5_write(f, '/cases/failed_criteria', [(int(rows(i)%failed_criteria, ip), i=1, n)], '-', stat, errmsg, &
+    if (.not. status%ok()) return
+    call h5_write(f, '/cases/final_time', [(rows(i)%final_time, i=1, n)], 's', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/n_steps', [(int(rows(i)%n_steps, ip), i=1, n)], '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/wall_time', [(rows(i)%wall_time, i=1, n)], 's', status, &
+                  description='wall-clock time of the case (input, run, history file)'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/tipped_over', [(int(rows(i)%tipped_over, ip), i=1, n)], '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/cases/at_rest', [(int(rows(i)%at_rest, ip), i=1, n)], '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/cases/bottomed_out', [(int(rows(i)%bottomed_out, ip), i=1, n)], '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/cases/success', [(int(rows(i)%success, ip), i=1, n)], '-', status, &
+                  description='1 when every criterion of /criteria holds'); if (.not. status%ok()) return
+    call h5_write(f, '/cases/failed_criteria', [(int(rows(i)%failed_criteria, ip), i=1, n)], '-', status, &
       description='bits: 1 tipped over, 2 stroke margin, 4 overload, 8 body clearance, 16 not at rest, 32 no result, '// &
                   '64 no touchdown, 128 tip-over margin, 256 friction ratio')
-    if (stat /= 0) return
-    call h5_write(f, '/cases/failed_criteria_names', text_column(rows, 4), '-', stat, errmsg, &
+    if (.not. status%ok()) return
+    call h5_write(f, '/cases/failed_criteria_names', text_column(rows, 4), '-', status, &
       description='the criteria the case failed, comma-separated (names of /probability/failure_criterion)')
-    if (stat /= 0) return
+    if (.not. status%ok()) return
   end subroutine write_case_results
 
   !> /probability of a summary file: the success probability of the rows, its Wilson interval and the
   !! failures per criterion (from success_probability and failure_counts).
-  subroutine write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, stat, errmsg)
+  subroutine write_probability_group(f, rows, n_eval, n_succ, n_excl, n_inc, p, lo, hi, status)
     type(h5_file_t), intent(inout) :: f           !! open file [-]
     type(case_row_t), intent(in) :: rows(:)       !! rows [-]
     integer, intent(in) :: n_eval                 !! cases counted in the probability [-]
@@ -452,32 +447,31 @@ contains
     real(wp), intent(in) :: p                     !! success probability [-]
     real(wp), intent(in) :: lo                    !! lower end of its 95 % interval [-]
     real(wp), intent(in) :: hi                    !! upper end of its 95 % interval [-]
-    integer, intent(out) :: stat                  !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg     !! message [-]
-    call h5_write(f, '/probability/n_evaluated', int(n_eval, ip), '-', stat, errmsg, &
-                  description='cases counted in the probability'); if (stat /= 0) return
-    call h5_write(f, '/probability/n_success', int(n_succ, ip), '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/probability/n_excluded', int(n_excl, ip), '-', stat, errmsg, &
-                  description="failed runs left out (failed_runs = 'exclude')"); if (stat /= 0) return
-    call h5_write(f, '/probability/p_success', p, '-', stat, errmsg, &
+    type(status_t), intent(out) :: status         !! STAT_OK, or the failure with its message [-]
+    call h5_write(f, '/probability/n_evaluated', int(n_eval, ip), '-', status, &
+                  description='cases counted in the probability'); if (.not. status%ok()) return
+    call h5_write(f, '/probability/n_success', int(n_succ, ip), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/probability/n_excluded', int(n_excl, ip), '-', status, &
+                  description="failed runs left out (failed_runs = 'exclude')"); if (.not. status%ok()) return
+    call h5_write(f, '/probability/p_success', p, '-', status, &
                   description='n_success / n_evaluated (0 when nothing was evaluated); inconclusive cases count as '// &
-                  'failures'); if (stat /= 0) return
-    call h5_write(f, '/probability/n_inconclusive', int(n_inc, ip), '-', stat, errmsg, &
+                  'failures'); if (.not. status%ok()) return
+    call h5_write(f, '/probability/n_inconclusive', int(n_inc, ip), '-', status, &
                   description='evaluated cases still moving at their end time with no other criterion failed')
-    if (stat /= 0) return
+    if (.not. status%ok()) return
     call h5_write(f, '/probability/p_success_upper', merge(real(n_succ + n_inc, wp)/real(max(n_eval, 1), wp), 0.0_wp, &
-                  n_eval > 0), '-', stat, errmsg, &
+                  n_eval > 0), '-', status, &
                   description='(n_success + n_inconclusive) / n_evaluated: P if every inconclusive case succeeded')
-    if (stat /= 0) return
-    call h5_write(f, '/probability/ci95_low', lo, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/probability/ci95_high', hi, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/probability/confidence', 0.95_wp, '-', stat, errmsg); if (stat /= 0) return
-    call h5_write(f, '/probability/method', 'Wilson score interval, z = 1.959963984540054', '-', stat, errmsg)
-    if (stat /= 0) return
-    call h5_write(f, '/probability/failure_criterion', criterion_name, '-', stat, errmsg, &
+    if (.not. status%ok()) return
+    call h5_write(f, '/probability/ci95_low', lo, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/probability/ci95_high', hi, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/probability/confidence', 0.95_wp, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/probability/method', 'Wilson score interval, z = 1.959963984540054', '-', status)
+    if (.not. status%ok()) return
+    call h5_write(f, '/probability/failure_criterion', criterion_name, '-', status, &
                   description='criteria in the order of failure_count (bits 1, 2, ..., 256 of failed_criteria)')
-    if (stat /= 0) return
-    call h5_write(f, '/probability/failure_count', int(failure_counts(rows), ip), '-', stat, errmsg, &
+    if (.not. status%ok()) return
+    call h5_write(f, '/probability/failure_count', int(failure_counts(rows), ip), '-', status, &
                   description='cases failing each criterion (a case may fail several)')
   end subroutine write_probability_group
 
@@ -528,201 +522,191 @@ contains
   end function from_nonempty
 
   !> Read a summary file written by write_summary: its meta data and rows (in file order).
-  subroutine read_summary(path, meta, rows, stat, errmsg)
+  subroutine read_summary(path, meta, rows, status)
     character(len=*), intent(in) :: path                 !! summary file [-]
     type(summary_meta_t), intent(out) :: meta            !! meta data [-]
     type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message on failure [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     type(h5_file_t) :: f
-    integer :: st2
-    character(len=msg_len) :: m2
-    call h5_open_read(f, path, stat, errmsg)
-    if (stat /= 0) return
-    call read_contents(f, meta, rows, stat, errmsg)
-    call h5_close(f, st2, m2)
+    type(status_t) :: st2
+    call h5_open_read(f, path, status)
+    if (.not. status%ok()) return
+    call read_contents(f, meta, rows, status)
+    call h5_close(f, st2)
   end subroutine read_summary
 
   !> Meta data and rows of an open summary file.
-  subroutine read_contents(f, meta, rows, stat, errmsg)
+  subroutine read_contents(f, meta, rows, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(out) :: meta            !! meta data [-]
     type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     character(len=:), allocatable :: schema
 
-    call h5_read_attr(f, '/', 'schema_version', schema, stat, errmsg); if (stat /= 0) return
+    call h5_read_attr(f, '/', 'schema_version', schema, status); if (.not. status%ok()) return
     if (schema /= schema_version) then
-      stat = STAT_FAILED
-      errmsg = trim(f%path)//': not a LANDYN campaign summary of schema '//schema_version//' (schema '//schema//')'
+      call status%fail(STAT_FAILED, trim(f%path)//': not a LANDYN campaign summary of schema '//schema_version// &
+                       ' (schema '//schema//')')
       return
     end if
-    call read_campaign_group(f, meta, stat, errmsg); if (stat /= 0) return
-    call read_parameters_group(f, meta, stat, errmsg); if (stat /= 0) return
-    call read_criteria_group(f, meta%crit, stat, errmsg); if (stat /= 0) return
-    call read_case_flags(f, meta, rows, stat, errmsg); if (stat /= 0) return
-    call read_case_texts(f, rows, stat, errmsg); if (stat /= 0) return
-    call read_case_numbers(f, meta, rows, stat, errmsg)
+    call read_campaign_group(f, meta, status); if (.not. status%ok()) return
+    call read_parameters_group(f, meta, status); if (.not. status%ok()) return
+    call read_criteria_group(f, meta%crit, status); if (.not. status%ok()) return
+    call read_case_flags(f, meta, rows, status); if (.not. status%ok()) return
+    call read_case_texts(f, rows, status); if (.not. status%ok()) return
+    call read_case_numbers(f, meta, rows, status)
   end subroutine read_contents
 
   !> The root title, /campaign and /meta/git_revision of a summary file into `meta`.
-  subroutine read_campaign_group(f, meta, stat, errmsg)
+  subroutine read_campaign_group(f, meta, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(inout) :: meta          !! meta data [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     character(len=:), allocatable :: s
     integer(ip) :: ival
 
-    call h5_read_attr(f, '/', 'title', s, stat, errmsg); if (stat /= 0) return
+    call h5_read_attr(f, '/', 'title', s, status); if (.not. status%ok()) return
     meta%title = from_nonempty(s)
-    call h5_read(f, '/campaign/mode', meta%mode, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/campaign/seed', meta%seed, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/campaign/fingerprint', meta%fingerprint, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/campaign/deck_name', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/mode', meta%mode, status); if (.not. status%ok()) return
+    call h5_read(f, '/campaign/seed', meta%seed, status); if (.not. status%ok()) return
+    call h5_read(f, '/campaign/fingerprint', meta%fingerprint, status); if (.not. status%ok()) return
+    call h5_read(f, '/campaign/deck_name', s, status); if (.not. status%ok()) return
     meta%deck_name = from_nonempty(s)
-    call h5_read(f, '/campaign/deck_text', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/deck_text', s, status); if (.not. status%ok()) return
     meta%deck_text = from_nonempty(s)
-    call h5_read(f, '/campaign/base_deck_name', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/base_deck_name', s, status); if (.not. status%ok()) return
     meta%base_name = from_nonempty(s)
-    call h5_read(f, '/campaign/base_deck_text', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/base_deck_text', s, status); if (.not. status%ok()) return
     meta%base_text = from_nonempty(s)
-    call h5_read(f, '/campaign/list_file_name', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/list_file_name', s, status); if (.not. status%ok()) return
     meta%list_name = from_nonempty(s)
-    call h5_read(f, '/campaign/list_file_text', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/list_file_text', s, status); if (.not. status%ok()) return
     meta%list_text = from_nonempty(s)
-    call h5_read(f, '/meta/git_revision', meta%git_revision, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/campaign/n_cases', ival, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/meta/git_revision', meta%git_revision, status); if (.not. status%ok()) return
+    call h5_read(f, '/campaign/n_cases', ival, status); if (.not. status%ok()) return
     meta%n_cases = ival
-    call h5_read(f, '/campaign/n_gears', ival, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/campaign/n_gears', ival, status); if (.not. status%ok()) return
     meta%n_gears = ival
   end subroutine read_campaign_group
 
   !> /parameters of a summary file into `meta` (n_par and the columns, which must agree in length).
-  subroutine read_parameters_group(f, meta, stat, errmsg)
+  subroutine read_parameters_group(f, meta, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(inout) :: meta          !! meta data [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     character(len=128), allocatable :: names(:)
 
-    call h5_read(f, '/parameters/name', names, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/parameters/name', names, status); if (.not. status%ok()) return
     meta%n_par = size(names)
     meta%par_name = names
     deallocate (names)
-    call h5_read(f, '/parameters/label', meta%par_label, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/parameters/units', meta%par_units, stat, errmsg); if (stat /= 0) return
-    call h5_read(f, '/parameters/description', meta%par_desc, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/parameters/label', meta%par_label, status); if (.not. status%ok()) return
+    call h5_read(f, '/parameters/units', meta%par_units, status); if (.not. status%ok()) return
+    call h5_read(f, '/parameters/description', meta%par_desc, status); if (.not. status%ok()) return
     if (size(meta%par_label) /= meta%n_par .or. size(meta%par_units) /= meta%n_par .or. &
         size(meta%par_desc) /= meta%n_par) then
-      stat = STAT_FAILED
-      errmsg = trim(f%path)//': /parameters/* have different lengths'
+      call status%fail(STAT_FAILED, trim(f%path)//': /parameters/* have different lengths')
       return
     end if
   end subroutine read_parameters_group
 
   !> /criteria of a summary file.
-  subroutine read_criteria_group(f, c, stat, errmsg)
+  subroutine read_criteria_group(f, c, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(criteria_t), intent(inout) :: c                 !! success criteria [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     character(len=:), allocatable :: s
     integer(ip) :: ival
     real(wp), allocatable :: bp(:, :)
 
-    call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, stat, errmsg); if (stat /= 0) return
-    call read_applied(f, 'max_overload', c%overload_applied, c%max_overload, stat, errmsg); if (stat /= 0) return
-    call read_applied(f, 'min_tipover_margin', c%tipover_applied, c%min_tipover_margin, stat, errmsg)
-    if (stat /= 0) return
-    call read_applied(f, 'max_friction_ratio', c%friction_applied, c%max_friction_ratio, stat, errmsg)
-    if (stat /= 0) return
-    call read_applied(f, 'min_body_clearance', c%clearance_applied, c%min_body_clearance, stat, errmsg)
-    if (stat /= 0) return
-    call h5_read(f, '/criteria/body_points', bp, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/min_stroke_margin', c%min_stroke_margin, status); if (.not. status%ok()) return
+    call read_applied(f, 'max_overload', c%overload_applied, c%max_overload, status); if (.not. status%ok()) return
+    call read_applied(f, 'min_tipover_margin', c%tipover_applied, c%min_tipover_margin, status)
+    if (.not. status%ok()) return
+    call read_applied(f, 'max_friction_ratio', c%friction_applied, c%max_friction_ratio, status)
+    if (.not. status%ok()) return
+    call read_applied(f, 'min_body_clearance', c%clearance_applied, c%min_body_clearance, status)
+    if (.not. status%ok()) return
+    call h5_read(f, '/criteria/body_points', bp, status); if (.not. status%ok()) return
     c%n_body_points = min(size(bp, 2), max_body_points)
     c%body_point(:, 1:c%n_body_points) = bp(:, 1:c%n_body_points)
-    call h5_read(f, '/criteria/require_at_rest', ival, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/require_at_rest', ival, status); if (.not. status%ok()) return
     c%require_at_rest = ival /= 0
-    call h5_read(f, '/criteria/failed_runs', s, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/criteria/failed_runs', s, status); if (.not. status%ok()) return
     c%failed_runs = s
   end subroutine read_criteria_group
 
   !> A criterion applied only when given: /criteria/<name>_applied and /criteria/<name>.
-  subroutine read_applied(f, name, applied, x, stat, errmsg)
+  subroutine read_applied(f, name, applied, x, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     character(len=*), intent(in) :: name                 !! the criterion's dataset name [-]
     logical, intent(inout) :: applied                    !! the criterion is applied [-]
     real(wp), intent(inout) :: x                         !! its limit [unit of the criterion]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     integer(ip) :: ival
-    call h5_read(f, '/criteria/'//name//'_applied', ival, stat, errmsg)
-    if (stat /= 0) return
+    call h5_read(f, '/criteria/'//name//'_applied', ival, status)
+    if (.not. status%ok()) return
     applied = ival /= 0
-    call h5_read(f, '/criteria/'//name, x, stat, errmsg)
+    call h5_read(f, '/criteria/'//name, x, status)
   end subroutine read_applied
 
   !> The rows of a summary file, allocated from /cases/case_id, with their integer columns (status,
   !! flags, failed criteria, steps, outcome).
-  subroutine read_case_flags(f, meta, rows, stat, errmsg)
+  subroutine read_case_flags(f, meta, rows, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(in) :: meta             !! meta data [-]
     type(case_row_t), allocatable, intent(out) :: rows(:)  !! rows [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     integer(ip), allocatable :: iv(:)
     integer :: n, i
 
-    call h5_read(f, '/cases/case_id', iv, stat, errmsg); if (stat /= 0) return
+    call h5_read(f, '/cases/case_id', iv, status); if (.not. status%ok()) return
     n = size(iv)
     allocate (rows(n))
     do i = 1, n
       rows(i)%case_id = iv(i)
       allocate (rows(i)%inputs(meta%n_par), rows(i)%crush(3, meta%n_gears), rows(i)%margin(3, meta%n_gears))
     end do
-    call int_column(f, '/cases/status', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/status', n, iv, status); if (.not. status%ok()) return
     rows%status = iv
-    call int_column(f, '/cases/success', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/success', n, iv, status); if (.not. status%ok()) return
     rows%success = iv
-    call int_column(f, '/cases/tipped_over', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/tipped_over', n, iv, status); if (.not. status%ok()) return
     rows%tipped_over = iv
-    call int_column(f, '/cases/at_rest', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/at_rest', n, iv, status); if (.not. status%ok()) return
     rows%at_rest = iv
-    call int_column(f, '/cases/bottomed_out', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/bottomed_out', n, iv, status); if (.not. status%ok()) return
     rows%bottomed_out = iv
-    call int_column(f, '/cases/failed_criteria', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/failed_criteria', n, iv, status); if (.not. status%ok()) return
     rows%failed_criteria = iv
-    call int_column(f, '/cases/n_steps', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/n_steps', n, iv, status); if (.not. status%ok()) return
     rows%n_steps = iv
-    call int_column(f, '/cases/outcome', n, iv, stat, errmsg); if (stat /= 0) return
+    call int_column(f, '/cases/outcome', n, iv, status); if (.not. status%ok()) return
     rows%outcome = iv
   end subroutine read_case_flags
 
   !> The text columns of the rows of a summary file: message, end reason, history file.
-  subroutine read_case_texts(f, rows, stat, errmsg)
+  subroutine read_case_texts(f, rows, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(case_row_t), intent(inout) :: rows(:)           !! rows [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     character(len=text_len), allocatable :: sv(:)
     integer :: n, i
 
     n = size(rows)
 
-    call h5_read(f, '/cases/error_message', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(f, size(sv), n, '/cases/error_message', stat, errmsg)) return
+    call h5_read(f, '/cases/error_message', sv, status); if (.not. status%ok()) return
+    if (.not. sized(f, size(sv), n, '/cases/error_message', status)) return
     do i = 1, n
       rows(i)%message = trim(sv(i))
     end do
-    call h5_read(f, '/cases/end_reason', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(f, size(sv), n, '/cases/end_reason', stat, errmsg)) return
+    call h5_read(f, '/cases/end_reason', sv, status); if (.not. status%ok()) return
+    if (.not. sized(f, size(sv), n, '/cases/end_reason', status)) return
     do i = 1, n
       rows(i)%end_reason = trim(sv(i))
     end do
-    call h5_read(f, '/cases/history_file', sv, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(f, size(sv), n, '/cases/history_file', stat, errmsg)) return
+    call h5_read(f, '/cases/history_file', sv, status); if (.not. status%ok()) return
+    if (.not. sized(f, size(sv), n, '/cases/history_file', status)) return
     do i = 1, n
       rows(i)%history_file = trim(sv(i))
     end do
@@ -730,12 +714,11 @@ contains
 
   !> The real columns of the rows of a summary file: inputs, crush and margins per strut, the
   !! results and the wall time.
-  subroutine read_case_numbers(f, meta, rows, stat, errmsg)
+  subroutine read_case_numbers(f, meta, rows, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     type(summary_meta_t), intent(in) :: meta             !! meta data [-]
     type(case_row_t), intent(inout) :: rows(:)           !! rows [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
     real(wp), allocatable :: rv(:), a3(:, :, :)
     integer :: n, i, j, ng
 
@@ -743,87 +726,83 @@ contains
     ng = meta%n_gears
 
     do j = 1, meta%n_par
-      call h5_read(f, '/cases/inputs/'//trim(meta%par_label(j)), rv, stat, errmsg); if (stat /= 0) return
-      if (.not. sized(f, size(rv), n, '/cases/inputs/'//trim(meta%par_label(j)), stat, errmsg)) return
+      call h5_read(f, '/cases/inputs/'//trim(meta%par_label(j)), rv, status); if (.not. status%ok()) return
+      if (.not. sized(f, size(rv), n, '/cases/inputs/'//trim(meta%par_label(j)), status)) return
       do i = 1, n
         rows(i)%inputs(j) = rv(i)
       end do
     end do
-    call h5_read(f, '/cases/crush_length', a3, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(f, size(a3), 3*ng*n, '/cases/crush_length', stat, errmsg)) return
+    call h5_read(f, '/cases/crush_length', a3, status); if (.not. status%ok()) return
+    if (.not. sized(f, size(a3), 3*ng*n, '/cases/crush_length', status)) return
     do i = 1, n
       rows(i)%crush = a3(:, :, i)
     end do
-    call h5_read(f, '/cases/stroke_margin', a3, stat, errmsg); if (stat /= 0) return
-    if (.not. sized(f, size(a3), 3*ng*n, '/cases/stroke_margin', stat, errmsg)) return
+    call h5_read(f, '/cases/stroke_margin', a3, status); if (.not. status%ok()) return
+    if (.not. sized(f, size(a3), 3*ng*n, '/cases/stroke_margin', status)) return
     do i = 1, n
       rows(i)%margin = a3(:, :, i)
     end do
-    call real_column(f, '/cases/min_stroke_margin', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/min_stroke_margin', n, rv, status); if (.not. status%ok()) return
     rows%min_margin = rv
-    call real_column(f, '/cases/peak_overload', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/peak_overload', n, rv, status); if (.not. status%ok()) return
     rows%peak_overload = rv
-    call real_column(f, '/cases/peak_penetration', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/peak_penetration', n, rv, status); if (.not. status%ok()) return
     rows%peak_penetration = rv
-    call real_column(f, '/cases/max_slide_distance', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/max_slide_distance', n, rv, status); if (.not. status%ok()) return
     rows%max_slide = rv
-    call real_column(f, '/cases/final_tilt', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/final_tilt', n, rv, status); if (.not. status%ok()) return
     rows%final_tilt = rv
-    call real_column(f, '/cases/max_tilt', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/max_tilt', n, rv, status); if (.not. status%ok()) return
     rows%max_tilt = rv
-    call real_column(f, '/cases/min_body_clearance', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/min_body_clearance', n, rv, status); if (.not. status%ok()) return
     rows%min_clearance = rv
-    call real_column(f, '/cases/final_time', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/final_time', n, rv, status); if (.not. status%ok()) return
     rows%final_time = rv
-    call real_column(f, '/cases/tipover_margin', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/tipover_margin', n, rv, status); if (.not. status%ok()) return
     rows%tipover_margin = rv
-    call real_column(f, '/cases/max_friction_ratio', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/max_friction_ratio', n, rv, status); if (.not. status%ok()) return
     rows%max_friction_ratio = rv
-    call real_column(f, '/cases/wall_time', n, rv, stat, errmsg); if (stat /= 0) return
+    call real_column(f, '/cases/wall_time', n, rv, status); if (.not. status%ok()) return
     rows%wall_time = rv
   end subroutine read_case_numbers
 
   !> True when a column of the summary file f has `expected` entries (found: m); else stat and
   !! errmsg are set.
-  logical function sized(f, m, expected, what, stat, errmsg)
+  logical function sized(f, m, expected, what, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     integer, intent(in) :: m                             !! size found [-]
     integer, intent(in) :: expected                      !! size expected [-]
     character(len=*), intent(in) :: what                 !! dataset [-]
-    integer, intent(inout) :: stat                       !! STAT_FAILED when not sized [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
+    type(status_t), intent(inout) :: status              !! STAT_FAILED when not sized; the message on failure [-]
     sized = m == expected
     if (.not. sized) then
-      stat = STAT_FAILED
-      errmsg = trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(expected)
+      call status%fail(STAT_FAILED, trim(f%path)//': '//what//' has '//int_text(m)//' entries; expected '//int_text(expected))
     end if
   end function sized
 
   !> iv = the integer column `path` of the summary file f, of n entries.
-  subroutine int_column(f, path, n, iv, stat, errmsg)
+  subroutine int_column(f, path, n, iv, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     character(len=*), intent(in) :: path                 !! dataset [-]
     integer, intent(in) :: n                             !! entries expected (rows) [-]
     integer(ip), allocatable, intent(inout) :: iv(:)     !! the column [-]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
-    call h5_read(f, path, iv, stat, errmsg)
-    if (stat == STAT_OK) then
-      if (.not. sized(f, size(iv), n, path, stat, errmsg)) return
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
+    call h5_read(f, path, iv, status)
+    if (status%ok()) then
+      if (.not. sized(f, size(iv), n, path, status)) return
     end if
   end subroutine int_column
 
   !> rv = the real column `path` of the summary file f, of n entries.
-  subroutine real_column(f, path, n, rv, stat, errmsg)
+  subroutine real_column(f, path, n, rv, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     character(len=*), intent(in) :: path                 !! dataset [-]
     integer, intent(in) :: n                             !! entries expected (rows) [-]
     real(wp), allocatable, intent(inout) :: rv(:)        !! the column [units of the dataset]
-    integer, intent(out) :: stat                         !! 0 ok [-]
-    character(len=*), intent(inout) :: errmsg            !! message [-]
-    call h5_read(f, path, rv, stat, errmsg)
-    if (stat == STAT_OK) then
-      if (.not. sized(f, size(rv), n, path, stat, errmsg)) return
+    type(status_t), intent(out) :: status                !! STAT_OK, or the failure with its message [-]
+    call h5_read(f, path, rv, status)
+    if (status%ok()) then
+      if (.not. sized(f, size(rv), n, path, status)) return
     end if
   end subroutine real_column
 

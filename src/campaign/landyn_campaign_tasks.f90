@@ -6,9 +6,9 @@
 !! (0 ok, 1 usage, 2 invalid deck or files of different campaigns, 4 a file not written,
 !! 5 written but incomplete).
 module landyn_campaign_tasks
-  use landyn_kinds, only: wp, msg_len
+  use landyn_kinds, only: wp
   use landyn_input, only: input_errors_t
-  use landyn_status, only: EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
+  use landyn_status, only: status_t, EXIT_OK, EXIT_USAGE, EXIT_INPUT, EXIT_FILE, EXIT_INCOMPLETE
   use landyn_campaign_text, only: int_text, ints_text, real_text_short, lower_case
   use landyn_campaign_deck, only: campaign_t, load_campaign, case_values, param_description, use_summary_file
   use landyn_campaign_case, only: case_row_t, run_case, rows_equal, status_ok, status_no_touchdown, n_criteria, criterion_name, &
@@ -67,8 +67,9 @@ contains
     integer, intent(out) :: code          !! exit code [-]
     type(campaign_t) :: camp
     real(wp), allocatable :: v(:)
-    character(len=:), allocatable :: line, msg
-    integer :: id, j, st
+    character(len=:), allocatable :: line
+    type(status_t) :: vst
+    integer :: id, j
     character(len=32) :: buf
     call load_or_report(deck, camp, err_u, code)
     if (code /= EXIT_OK) return
@@ -79,10 +80,10 @@ contains
     write (out_u, '(a)') line
     allocate (v(camp%n_par))
     do id = 1, camp%n_cases
-      call case_values(camp, id, v, st, msg)
+      call case_values(camp, id, v, vst)
       line = int_text(id)
       do j = 1, camp%n_par
-        if (st /= 0) then
+        if (.not. vst%ok()) then
           line = line//',nan'
         else
           write (buf, '(es24.16e3)') v(j)
@@ -168,12 +169,10 @@ contains
     character(len=*), intent(in) :: command_line  !! command that writes the file [-]
     integer, intent(in) :: err_u                  !! unit for messages [-]
     integer, intent(inout) :: code                !! EXIT_FILE on failure, else unchanged [-]
-    integer :: st
-    character(len=msg_len) :: msg
-    msg = ''
-    call write_summary(path, meta, rows, command_line, st, msg)
-    if (st /= 0) then
-      write (err_u, '(a)') 'landyn_batch: cannot write '//path//': '//trim(msg)
+    type(status_t) :: st
+    call write_summary(path, meta, rows, command_line, st)
+    if (.not. st%ok()) then
+      write (err_u, '(a)') 'landyn_batch: cannot write '//path//': '//st%text()
       code = EXIT_FILE
     end if
   end subroutine write_rows
@@ -245,21 +244,20 @@ contains
     type(summary_meta_t) :: meta, m
     type(case_row_t), allocatable :: rows(:)
     type(results_t) :: table
-    character(len=msg_len) :: msg
+    type(status_t) :: st
     integer, allocatable :: missing(:)
-    integer :: i, k, st, ndup
+    integer :: i, k, ndup
     logical :: added
     code = EXIT_OK
     ndup = 0
     do i = 1, size(inputs)
-      msg = ''
       if (i == 1) then
-        call read_summary(trim(inputs(i)), meta, rows, st, msg)
+        call read_summary(trim(inputs(i)), meta, rows, st)
       else
-        call read_summary(trim(inputs(i)), m, rows, st, msg)
+        call read_summary(trim(inputs(i)), m, rows, st)
       end if
-      if (st /= 0) then
-        write (err_u, '(a)') 'landyn_batch: --merge: '//trim(msg)
+      if (.not. st%ok()) then
+        write (err_u, '(a)') 'landyn_batch: --merge: '//st%text()
         code = EXIT_INPUT
         return
       end if

@@ -25,7 +25,7 @@
 module landyn_files
   use, intrinsic :: iso_c_binding, only: c_char, c_int, c_long_long, c_null_char
   use, intrinsic :: iso_fortran_env, only: iostat_end
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: status_t, STAT_FAILED
   implicit none
   private
 
@@ -72,12 +72,12 @@ module landyn_files
 contains
 
   !> Whole text file as one string, line ends normalised (see the module documentation).
-  !! stat = 0 on success; otherwise msg says why (cannot open, read error, too large).
-  subroutine read_whole_file(path, text, stat, msg)
+  !! STAT_OK on success; otherwise STAT_FAILED and the message says why (cannot open, read error,
+  !! too large).
+  subroutine read_whole_file(path, text, status)
     character(len=*), intent(in) :: path                  !! file name [-]
     character(len=:), allocatable, intent(out) :: text    !! its text [-]
-    integer, intent(out) :: stat                          !! 0 ok [-]
-    character(len=:), allocatable, intent(out) :: msg     !! reason on failure [-]
+    type(status_t), intent(out) :: status                 !! STAT_OK, or STAT_FAILED with the reason [-]
     character(len=256) :: iomsg
     character(len=:), allocatable :: buf
     character(len=1) :: c
@@ -86,8 +86,6 @@ contains
     character(len=*), parameter :: too_large = 'it is larger than 64 MiB; not a text deck'
 
     text = ''
-    msg = ''
-    stat = STAT_OK
     if (len(path) == 0) then
       call fail('empty file name')
       return
@@ -142,13 +140,12 @@ contains
     close (u)
     text = normalize_line_ends(buf)
   contains
-    !> Record a failure: stat = 1 and msg = why, after closing `unit` when given.
+    !> Record a failure: STAT_FAILED with the message `why`, after closing `unit` when given.
     subroutine fail(why, unit)
       character(len=*), intent(in) :: why        !! reason [-]
       integer, intent(in), optional :: unit      !! open unit to close [-]
       if (present(unit)) close (unit)
-      stat = STAT_FAILED
-      msg = why
+      call status%fail(STAT_FAILED, why)
     end subroutine fail
   end subroutine read_whole_file
 
@@ -347,27 +344,23 @@ contains
     end if
   end function output_file_problem
 
-  !> Take the exclusive lock `path` (created if missing) without waiting. stat = STAT_OK and `handle`
-  !! on success; otherwise STAT_FAILED and `problem` says why: another process holds it (its pid
+  !> Take the exclusive lock `path` (created if missing) without waiting. STAT_OK and `handle`
+  !! on success; otherwise STAT_FAILED and the message says why: another process holds it (its pid
   !! when known), or the file cannot be created or locked.
-  subroutine lock_file(path, handle, stat, problem)
+  subroutine lock_file(path, handle, status)
     character(len=*), intent(in) :: path                  !! lock file name [-]
     integer, intent(out) :: handle                        !! lock handle for unlock_file [-]
-    integer, intent(out) :: stat                          !! STAT_OK or STAT_FAILED [-]
-    character(len=:), allocatable, intent(out) :: problem !! '' or the reason [-]
+    type(status_t), intent(out) :: status                 !! STAT_OK, or STAT_FAILED with the reason [-]
     integer(c_int) :: fd, rc
     integer(c_long_long) :: holder
-    problem = ''
-    stat = STAT_OK
     rc = c_lock_file(path//c_null_char, fd, holder)
     handle = int(fd)
     if (rc == 0) return
-    stat = STAT_FAILED
     if (rc == 1) then
-      problem = 'it is locked by another process'
-      if (holder > 0) problem = problem//' (pid '//itoa(int(holder))//')'
+      call status%fail(STAT_FAILED, 'it is locked by another process')
+      if (holder > 0) status%message = status%message//' (pid '//itoa(int(holder))//')'
     else
-      problem = 'cannot create or lock it (is its directory writable?)'
+      call status%fail(STAT_FAILED, 'cannot create or lock it (is its directory writable?)')
     end if
   end subroutine lock_file
 

@@ -16,7 +16,7 @@
 !! Library code: nothing here stops or prints, except into a unit the caller passes.
 module landyn_input
   use landyn_kinds, only: wp, max_gears
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED, STAT_INPUT
   use landyn_errors, only: input_errors_t
   use landyn_friction, only: default_stribeck_speed
   use landyn_kinematics, only: rot_z
@@ -68,10 +68,11 @@ contains
     character(len=:), allocatable, intent(out) :: text   !! file contents ('' when unreadable) [-]
     type(input_errors_t), intent(inout) :: errors        !! the problem is appended here [-]
     integer, intent(out) :: stat                         !! STAT_OK or STAT_INPUT [-]
-    character(len=:), allocatable :: msg
-    call read_whole_file(path, text, stat, msg)
-    if (stat == STAT_OK) return
-    call errors%add(prefix//msg)
+    type(status_t) :: st
+    stat = STAT_OK
+    call read_whole_file(path, text, st)
+    if (st%ok()) return
+    call errors%add(prefix//st%text())
     text = ''
     stat = STAT_INPUT
   end subroutine read_text_or_report

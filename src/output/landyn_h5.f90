@@ -1,14 +1,14 @@
 !> The one thin layer through which LANDYN writes (and, for tests and post-processing, reads) HDF5.
 !!
-!! Nothing else in LANDYN calls the HDF5 library directly. Every public procedure returns
-!! `stat` (0 = success, nonzero = failure) and `errmsg`; it never stops and never prints.
+!! Nothing else in LANDYN calls the HDF5 library directly. Every public procedure returns a
+!! `status` (type status_t of landyn_status: STAT_OK on success, STAT_FAILED with its message
+!! otherwise); it never stops and never prints.
 !!
 !! ## Error handling
-!! - `errmsg` is `character(len=*), intent(inout)` everywhere (callers use `character(len=msg_len)`
-!!   from landyn_kinds). Like Fortran's own ERRMSG= specifier, it is assigned only when `stat /= 0`
-!!   and left untouched on success. The message names the operation (the public procedure), the
-!!   object path inside the file and the file name, e.g.
-!!   `h5_read: no dataset '/gear_1/stroke' in file 'run.h5'`. It is truncated to len(errmsg).
+!! - `status` is `type(status_t), intent(out)` everywhere (h5_commit_partial's is intent(inout):
+!!   it takes the status of writing the contents). Its message is set only on failure. It names
+!!   the operation (the public procedure), the object path inside the file and the file name, e.g.
+!!   `h5_read: no dataset '/gear_1/stroke' in file 'run.h5'`.
 !! - The HDF5 library's automatic error-stack printing is switched off (h5eset_auto_f(0)) whenever
 !!   a file is created or opened, so expected failures (a missing file, a probe of a missing
 !!   object) write nothing to stderr.

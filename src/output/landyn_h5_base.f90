@@ -6,7 +6,7 @@
 !! Only the landyn_h5_* modules use the helpers; everything else uses landyn_h5.
 module landyn_h5_base
   use landyn_kinds, only: wp, ip
-  use landyn_status, only: STAT_OK, STAT_FAILED
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED
   use landyn_strings, only: int_text
   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5dont_atexit_f, h5eset_auto_f, h5iis_valid_f, h5iget_type_f, &
     h5kind_to_type, h5gclose_f, h5lexists_f, h5oopen_f, h5pcreate_f, h5pset_create_inter_group_f, &
@@ -225,44 +225,40 @@ contains
   end subroutine release
 
   !> Fail unless `file` is open for writing.
-  subroutine check_writable(file, op, path, stat, errmsg)
+  subroutine check_writable(file, op, path, status)
     type(h5_file_t), intent(in) :: file        !! file handle
     character(len=*), intent(in) :: op         !! public operation name
     character(len=*), intent(in) :: path       !! object path
-    integer, intent(out) :: stat               !! 0 if writable
-    character(len=*), intent(inout) :: errmsg  !! set on failure
-    stat = STAT_OK
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     if (.not. h5_is_open(file)) then
-      stat = STAT_FAILED
-      errmsg = op//": no file is open (object '"//trim(path)//"')"
+      call status%fail(STAT_FAILED, op//": no file is open (object '"//trim(path)//"')")
     else if (.not. file%writable) then
-      call fail(stat, errmsg, op, 'file is open read-only, cannot write', path, file)
+      call fail(status, op, 'file is open read-only, cannot write', path, file)
     end if
   end subroutine check_writable
 
   !> Create the dataset `path` (missing groups included) with file datatype `ftype` and
   !! dimensions `dims` (Fortran order; size(dims) = 0 makes a scalar).
-  subroutine begin_dataset(file, path, ftype, dims, dset, stat, errmsg)
+  subroutine begin_dataset(file, path, ftype, dims, dset, status)
     type(h5_file_t), intent(in) :: file        !! file open for writing
     character(len=*), intent(in) :: path       !! dataset path
     integer(hid_t), intent(in) :: ftype        !! file datatype
     integer(hsize_t), intent(in) :: dims(:)    !! extent, Fortran order
     integer(hid_t), intent(out) :: dset        !! new dataset (no_id on failure)
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     character(len=*), parameter :: op = 'h5_write'
     integer(hid_t) :: space, lcpl
     integer :: hdferr
     logical :: ok
 
     dset = no_id
-    call check_writable(file, op, path, stat, errmsg)
-    if (stat /= 0) return
+    call check_writable(file, op, path, status)
+    if (.not. status%ok()) return
     space = no_id
     lcpl = no_id
     steps: block
       if (h5_exists(file, path)) then
-        call fail(stat, errmsg, op, 'an object already exists at', path, file)
+        call fail(status, op, 'an object already exists at', path, file)
         exit steps
       end if
       if (size(dims) == 0) then
@@ -272,85 +268,80 @@ contains
       end if
       if (hdferr >= 0) call make_lcpl(lcpl, hdferr)
       if (hdferr < 0) then
-        call fail(stat, errmsg, op, 'cannot make the dataspace for', path, file)
+        call fail(status, op, 'cannot make the dataspace for', path, file)
         exit steps
       end if
       call h5dcreate_f(file%id, trim(path), ftype, space, dset, hdferr, lcpl_id=lcpl)
       if (hdferr < 0) then
         dset = no_id
-        call fail(stat, errmsg, op, 'cannot create dataset (is a parent a dataset?)', path, file)
+        call fail(status, op, 'cannot create dataset (is a parent a dataset?)', path, file)
       end if
     end block steps
     ok = .true.
     call release(space, ok)
     call release(lcpl, ok)
-    if (stat == 0 .and. .not. ok) &
-      call fail(stat, errmsg, op, 'cannot release HDF5 handles of', path, file)
-    if (stat /= 0) call release(dset, ok)
+    if (status%ok() .and. .not. ok) &
+      call fail(status, op, 'cannot release HDF5 handles of', path, file)
+    if (.not. status%ok()) call release(dset, ok)
   end subroutine begin_dataset
 
   !> Finish a dataset begun by begin_dataset: check the data write (`hdferr`), add the units and
   !! description attributes and close it.
-  subroutine end_dataset(file, path, dset, hdferr, units, description, stat, errmsg)
+  subroutine end_dataset(file, path, dset, hdferr, units, description, status)
     type(h5_file_t), intent(in) :: file        !! file open for writing
     character(len=*), intent(in) :: path       !! dataset path
     integer(hid_t), intent(inout) :: dset      !! dataset; closed on return
     integer, intent(in) :: hdferr              !! status of the data write
     character(len=*), intent(in) :: units      !! units attribute
     character(len=*), intent(in), optional :: description  !! description attribute
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     character(len=*), parameter :: op = 'h5_write'
     integer :: err
     logical :: ok
 
-    stat = STAT_OK
     if (hdferr < 0) then
-      call fail(stat, errmsg, op, 'cannot write the data of', path, file)
+      call fail(status, op, 'cannot write the data of', path, file)
     else
       call put_attr_string(dset, 'units', units, err)
       if (err >= 0 .and. present(description)) call put_attr_string(dset, 'description', description, err)
-      if (err < 0) call fail(stat, errmsg, op, 'cannot write the units/description attributes of', path, file)
+      if (err < 0) call fail(status, op, 'cannot write the units/description attributes of', path, file)
     end if
     ok = .true.
     call release(dset, ok)
-    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, op, 'cannot close dataset', path, file)
+    if (status%ok() .and. .not. ok) call fail(status, op, 'cannot close dataset', path, file)
   end subroutine end_dataset
 
   !> Open the dataset `path` for reading and check its type class and rank.
-  subroutine open_dataset(file, path, want_class, want_rank, dset, dims, stat, errmsg)
+  subroutine open_dataset(file, path, want_class, want_rank, dset, dims, status)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: path       !! dataset path
     integer, intent(in) :: want_class          !! H5T_FLOAT_F, H5T_INTEGER_F or H5T_STRING_F
     integer, intent(in) :: want_rank           !! expected rank (0 = scalar)
     integer(hid_t), intent(out) :: dset        !! open dataset (no_id on failure)
     integer(hsize_t), intent(out) :: dims(max_rank)  !! extent, Fortran order (first want_rank used)
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     character(len=*), parameter :: op = 'h5_read'
     integer(hid_t) :: tid, space
     integer :: hdferr, type_class, rank
     logical :: ok
 
-    stat = STAT_OK
     dset = no_id
     dims = 0
     if (.not. h5_is_open(file)) then
-      stat = STAT_FAILED
-      errmsg = op//": no file is open (dataset '"//trim(path)//"')"
+      call status%fail(STAT_FAILED, op//": no file is open (dataset '"//trim(path)//"')")
       return
     end if
     tid = no_id
     space = no_id
     steps: block
       if (.not. h5_exists(file, path)) then
-        call fail(stat, errmsg, op, 'no dataset', path, file)
+        call fail(status, op, 'no dataset', path, file)
         exit steps
       end if
       call h5dopen_f(file%id, trim(path), dset, hdferr)
       if (hdferr < 0) then
         dset = no_id
-        call fail(stat, errmsg, op, 'not a dataset:', path, file)
+        call fail(status, op, 'not a dataset:', path, file)
         exit steps
       end if
       call h5dget_type_f(dset, tid, hdferr)
@@ -358,19 +349,19 @@ contains
       if (hdferr >= 0) call h5dget_space_f(dset, space, hdferr)
       if (hdferr >= 0) call query_extent(space, rank, dims, hdferr)
       if (hdferr < 0) then
-        call fail(stat, errmsg, op, 'cannot query the datatype or dataspace of', path, file)
+        call fail(status, op, 'cannot query the datatype or dataspace of', path, file)
       else if (type_class /= want_class) then
-        call fail(stat, errmsg, op, 'wrong datatype (expected '//class_name(want_class)// &
+        call fail(status, op, 'wrong datatype (expected '//class_name(want_class)// &
           ', found '//class_name(type_class)//') for', path, file)
       else if (rank /= want_rank) then
-        call fail(stat, errmsg, op, 'wrong rank (expected '//int_text(want_rank)//', found '// &
+        call fail(status, op, 'wrong rank (expected '//int_text(want_rank)//', found '// &
           int_text(rank)//') for', path, file)
       end if
     end block steps
     ok = .true.
     call release(tid, ok)
     call release(space, ok)
-    if (stat /= 0) call release(dset, ok)
+    if (.not. status%ok()) call release(dset, ok)
   end subroutine open_dataset
 
   !> Rank and extent (Fortran order) of a dataspace; a scalar has rank 0, a null dataspace -1.
@@ -399,19 +390,18 @@ contains
   end subroutine query_extent
 
   !> Finish a dataset read: check `hdferr` and close the dataset (finish_read).
-  subroutine end_read(file, path, dset, hdferr, stat, errmsg)
+  subroutine end_read(file, path, dset, hdferr, status)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: path       !! dataset path
     integer(hid_t), intent(inout) :: dset      !! dataset; closed on return
     integer, intent(in) :: hdferr              !! status of the read
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
-    call finish_read(file, 'h5_read', 'dataset', 'cannot read the data of', path, dset, hdferr, stat, errmsg)
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
+    call finish_read(file, 'h5_read', 'dataset', 'cannot read the data of', path, dset, hdferr, status)
   end subroutine end_read
 
   !> Finish the read of a dataset or attribute `obj` (named `label` in messages): fail when the
   !! read reported a variable-length string or an error (`hdferr`), then close it.
-  subroutine finish_read(file, op, noun, read_failed, label, obj, hdferr, stat, errmsg)
+  subroutine finish_read(file, op, noun, read_failed, label, obj, hdferr, status)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: op         !! public operation name, for messages [-]
     character(len=*), intent(in) :: noun       !! 'dataset' or 'attribute' [-]
@@ -419,64 +409,59 @@ contains
     character(len=*), intent(in) :: label      !! dataset path or attribute label [-]
     integer(hid_t), intent(inout) :: obj       !! dataset or attribute; closed on return
     integer, intent(in) :: hdferr              !! status of the read
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     logical :: ok
 
-    stat = STAT_OK
     if (hdferr == vlen_string) then
-      call fail(stat, errmsg, op, 'variable-length strings are not supported, '//noun, label, file)
+      call fail(status, op, 'variable-length strings are not supported, '//noun, label, file)
     else if (hdferr < 0) then
-      call fail(stat, errmsg, op, read_failed, label, file)
+      call fail(status, op, read_failed, label, file)
     end if
     ok = .true.
     call release(obj, ok)
-    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, op, 'cannot close '//noun, label, file)
+    if (status%ok() .and. .not. ok) call fail(status, op, 'cannot close '//noun, label, file)
   end subroutine finish_read
 
   !> Open the group or dataset `obj_path` to write the attribute `name` on it.
-  subroutine open_object(file, obj_path, name, obj, stat, errmsg)
+  subroutine open_object(file, obj_path, name, obj, status)
     type(h5_file_t), intent(in) :: file        !! file open for writing
     character(len=*), intent(in) :: obj_path   !! group or dataset path
     character(len=*), intent(in) :: name       !! attribute name (for messages)
     integer(hid_t), intent(out) :: obj         !! open object (no_id on failure)
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     integer :: hdferr
 
     obj = no_id
-    call check_writable(file, 'h5_write_attr', attr_label(obj_path, name), stat, errmsg)
-    if (stat /= 0) return
+    call check_writable(file, 'h5_write_attr', attr_label(obj_path, name), status)
+    if (.not. status%ok()) return
     if (.not. h5_exists(file, obj_path)) then
-      call fail(stat, errmsg, 'h5_write_attr', 'no group or dataset for attribute', &
+      call fail(status, 'h5_write_attr', 'no group or dataset for attribute', &
         attr_label(obj_path, name), file)
       return
     end if
     call h5oopen_f(file%id, trim(obj_path), obj, hdferr)
     if (hdferr < 0) then
       obj = no_id
-      call fail(stat, errmsg, 'h5_write_attr', 'cannot open the object of attribute', &
+      call fail(status, 'h5_write_attr', 'cannot open the object of attribute', &
         attr_label(obj_path, name), file)
     end if
   end subroutine open_object
 
   !> Close the object opened by open_object after an attribute write with status `hdferr`.
-  subroutine close_object(file, obj_path, name, obj, hdferr, stat, errmsg)
+  subroutine close_object(file, obj_path, name, obj, hdferr, status)
     type(h5_file_t), intent(in) :: file        !! file open for writing
     character(len=*), intent(in) :: obj_path   !! group or dataset path
     character(len=*), intent(in) :: name       !! attribute name
     integer(hid_t), intent(inout) :: obj       !! object; closed on return
     integer, intent(in) :: hdferr              !! status of the attribute write
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     logical :: ok
 
-    stat = STAT_OK
-    if (hdferr < 0) call fail(stat, errmsg, 'h5_write_attr', 'cannot write attribute', &
+    if (hdferr < 0) call fail(status, 'h5_write_attr', 'cannot write attribute', &
       attr_label(obj_path, name), file)
     ok = .true.
     call release(obj, ok)
-    if (stat == 0 .and. .not. ok) call fail(stat, errmsg, 'h5_write_attr', &
+    if (status%ok() .and. .not. ok) call fail(status, 'h5_write_attr', &
       'cannot close the object of attribute', attr_label(obj_path, name), file)
   end subroutine close_object
 
@@ -535,29 +520,26 @@ contains
   end subroutine put_attr_string
 
   !> Open the scalar attribute `name` of `obj_path` for reading and check its type class.
-  subroutine open_attribute(file, obj_path, name, want_class, attr, stat, errmsg)
+  subroutine open_attribute(file, obj_path, name, want_class, attr, status)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: obj_path   !! group or dataset path
     character(len=*), intent(in) :: name       !! attribute name
     integer, intent(in) :: want_class          !! H5T_FLOAT_F, H5T_INTEGER_F or H5T_STRING_F
     integer(hid_t), intent(out) :: attr        !! open attribute (no_id on failure)
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     character(len=*), parameter :: op = 'h5_read_attr'
     integer(hid_t) :: tid, space
     integer(hsize_t) :: dims(max_rank)
     integer :: hdferr, type_class, rank
     logical :: ok
 
-    stat = STAT_OK
     attr = no_id
     if (.not. h5_is_open(file)) then
-      stat = STAT_FAILED
-      errmsg = op//": no file is open (attribute '"//attr_label(obj_path, name)//"')"
+      call status%fail(STAT_FAILED, op//": no file is open (attribute '"//attr_label(obj_path, name)//"')")
       return
     end if
     if (.not. h5_exists(file, obj_path)) then
-      call fail(stat, errmsg, op, 'no group or dataset for attribute', attr_label(obj_path, name), file)
+      call fail(status, op, 'no group or dataset for attribute', attr_label(obj_path, name), file)
       return
     end if
     tid = no_id
@@ -566,7 +548,7 @@ contains
       call h5aopen_by_name_f(file%id, trim(obj_path), trim(name), attr, hdferr)
       if (hdferr < 0) then
         attr = no_id
-        call fail(stat, errmsg, op, 'no attribute', attr_label(obj_path, name), file)
+        call fail(status, op, 'no attribute', attr_label(obj_path, name), file)
         exit steps
       end if
       call h5aget_type_f(attr, tid, hdferr)
@@ -574,32 +556,31 @@ contains
       if (hdferr >= 0) call h5aget_space_f(attr, space, hdferr)
       if (hdferr >= 0) call query_extent(space, rank, dims, hdferr)
       if (hdferr < 0) then
-        call fail(stat, errmsg, op, 'cannot query the datatype or dataspace of attribute', &
+        call fail(status, op, 'cannot query the datatype or dataspace of attribute', &
           attr_label(obj_path, name), file)
       else if (type_class /= want_class) then
-        call fail(stat, errmsg, op, 'wrong datatype (expected '//class_name(want_class)// &
+        call fail(status, op, 'wrong datatype (expected '//class_name(want_class)// &
           ', found '//class_name(type_class)//') for attribute', attr_label(obj_path, name), file)
       else if (rank /= 0) then
-        call fail(stat, errmsg, op, 'not a scalar attribute:', attr_label(obj_path, name), file)
+        call fail(status, op, 'not a scalar attribute:', attr_label(obj_path, name), file)
       end if
     end block steps
     ok = .true.
     call release(tid, ok)
     call release(space, ok)
-    if (stat /= 0) call release(attr, ok)
+    if (.not. status%ok()) call release(attr, ok)
   end subroutine open_attribute
 
   !> Finish an attribute read: check `hdferr` and close the attribute (finish_read).
-  subroutine end_attr_read(file, obj_path, name, attr, hdferr, stat, errmsg)
+  subroutine end_attr_read(file, obj_path, name, attr, hdferr, status)
     type(h5_file_t), intent(in) :: file        !! open file
     character(len=*), intent(in) :: obj_path   !! group or dataset path
     character(len=*), intent(in) :: name       !! attribute name
     integer(hid_t), intent(inout) :: attr      !! attribute; closed on return
     integer, intent(in) :: hdferr              !! status of the read
-    integer, intent(out) :: stat               !! 0 on success
-    character(len=*), intent(inout) :: errmsg  !! set on failure
+    type(status_t), intent(out) :: status      !! STAT_OK, or the failure with its message [-]
     call finish_read(file, 'h5_read_attr', 'attribute', 'cannot read attribute', attr_label(obj_path, name), attr, &
-                     hdferr, stat, errmsg)
+                     hdferr, status)
   end subroutine end_attr_read
 
   !> 'obj_path@name', how attributes are named in messages.
@@ -626,33 +607,32 @@ contains
   end function class_name
 
 
-  !> Set stat = STAT_FAILED and errmsg = "op: what 'path' in file 'file'".
-  subroutine fail(stat, errmsg, op, what, path, file)
-    integer, intent(out) :: stat               !! set to STAT_FAILED
-    character(len=*), intent(inout) :: errmsg  !! message
+  !> Fail with STAT_FAILED and the message "op: what 'path' in file 'file'".
+  subroutine fail(status, op, what, path, file)
+    type(status_t), intent(out) :: status      !! set to STAT_FAILED with the message [-]
     character(len=*), intent(in) :: op        !! public operation name
     character(len=*), intent(in) :: what      !! what went wrong
     character(len=*), intent(in) :: path      !! object path (or attribute label)
     type(h5_file_t), intent(in) :: file       !! file
-    stat = STAT_FAILED
     if (allocated(file%path)) then
-      errmsg = op//': '//what//" '"//trim(path)//"' in file '"//file%path//"'"
+      call status%fail(STAT_FAILED, op//': '//what//" '"//trim(path)//"' in file '"//file%path//"'")
     else
-      errmsg = op//': '//what//" '"//trim(path)//"'"
+      call status%fail(STAT_FAILED, op//': '//what//" '"//trim(path)//"'")
     end if
   end subroutine fail
 
-  !> Set stat = STAT_FAILED and errmsg = "op: what 'path'[hint]" for file-level failures.
-  subroutine fail_file(stat, errmsg, op, what, path, hint)
-    integer, intent(out) :: stat               !! set to STAT_FAILED
-    character(len=*), intent(inout) :: errmsg  !! message
+  !> Fail with STAT_FAILED and the message "op: what 'path'[hint]" for file-level failures.
+  subroutine fail_file(status, op, what, path, hint)
+    type(status_t), intent(out) :: status      !! set to STAT_FAILED with the message [-]
     character(len=*), intent(in) :: op        !! public operation name
     character(len=*), intent(in) :: what      !! what went wrong
     character(len=*), intent(in) :: path      !! file name
     character(len=*), intent(in), optional :: hint  !! appended to the message
-    stat = STAT_FAILED
-    errmsg = op//': '//what//" '"//trim(path)//"'"
-    if (present(hint)) errmsg = trim(errmsg)//hint
+    if (present(hint)) then
+      call status%fail(STAT_FAILED, op//': '//what//" '"//trim(path)//"'"//hint)
+    else
+      call status%fail(STAT_FAILED, op//': '//what//" '"//trim(path)//"'")
+    end if
   end subroutine fail_file
 
 

@@ -29,7 +29,8 @@ module landyn_output_schema
     character(len=4) :: kind = ''           !! real, int, bool (logical) or text [-]
     character(len=16) :: components = ''    !! labels of the last axis (comma-separated; s = the strut names) [-]
     character(len=4) :: since = ''          !! schema version that added it [-]
-    character(len=12) :: written = ''       !! always, with health (run-health checks), api inputs [-]
+    character(len=12) :: written = ''       !! always, with health (run-health checks), api inputs, summaries
+                                            !! (campaign summaries only) [-]
     character(len=480) :: meaning = ''      !! what it holds (docs/output.md, the `description` attribute) [-]
   end type dataset_spec_t
 
@@ -38,7 +39,9 @@ module landyn_output_schema
     dataset_spec_t('/meta/code_version', '-', '', 'text', '', '1.0', 'always', &
       'LANDYN version, e.g. `0.1.0`'), &
     dataset_spec_t('/meta/git_revision', '-', '', 'text', '', '1.0', 'always', &
-      '`git describe` of the source tree at build time'), &
+      '`git describe` of the source tree at build time (in a campaign summary: of the code that ran the cases)'), &
+    dataset_spec_t('/meta/writer_git_revision', '-', '', 'text', '', '1.0', 'summaries', &
+      'campaign summaries only: `git describe` of the code that wrote the file'), &
     dataset_spec_t('/meta/build_type', '-', '', 'text', '', '1.0', 'always', &
       'CMake build type (`Release`, `Debug`, ...)'), &
     dataset_spec_t('/meta/compiler', '-', '', 'text', '', '1.0', 'always', &

@@ -1,6 +1,9 @@
 !> The provenance block every LANDYN HDF5 file carries: the root attribute `producer` and the
 !! group /meta (code version, git revision, build type, compiler and flags, date, command line).
 !!
+!! The datasets are those of the output schema's /meta section (landyn_output_schema), written
+!! with schema_write: their units and descriptions are the schema's.
+!!
 !! Written here and nowhere else: the result file of a run (landyn_output), the study file
 !! (landyn_study) and the campaign summary (landyn_campaign_store) call write_meta and then add
 !! what is particular to them (the run's deck and units, the study deck, ...).
@@ -10,8 +13,9 @@ module landyn_provenance
   use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
   use landyn_version, only: landyn_version_string, landyn_git_revision, landyn_build_type, landyn_fflags
   use landyn_strings, only: nonempty
-  use landyn_status, only: STAT_OK
-  use landyn_h5, only: h5_file_t, h5_write, h5_write_attr
+  use landyn_status, only: status_t, STAT_OK
+  use landyn_h5, only: h5_file_t, h5_write_attr
+  use landyn_schema_write, only: schema_write
   implicit none
   private
 
@@ -34,38 +38,30 @@ contains
   !! compiler_options, date, command_line. With `run_git_revision` (a file that gathers results
   !! computed earlier, e.g. a campaign summary), /meta/git_revision is that revision and
   !! /meta/writer_git_revision the revision of the code writing the file.
-  subroutine write_meta(f, program, command_line, stat, errmsg, run_git_revision)
+  subroutine write_meta(f, program, command_line, status, run_git_revision)
     type(h5_file_t), intent(inout) :: f                        !! file open for writing [-]
     character(len=*), intent(in) :: program                    !! program name for `producer`; blank for landyn [-]
     character(len=*), intent(in) :: command_line               !! the command that wrote the file [-]
-    integer, intent(out) :: stat                               !! STAT_OK on success [-]
-    character(len=*), intent(inout) :: errmsg                  !! message on failure [-]
+    type(status_t), intent(out) :: status                      !! STAT_OK, or the failure with its message [-]
     character(len=*), intent(in), optional :: run_git_revision !! revision of the code that computed the results [-]
     character(len=:), allocatable :: producer
 
     producer = 'LANDYN '//landyn_version_string
     if (len_trim(program) > 0) producer = producer//' '//trim(program)
-    call h5_write_attr(f, '/', 'producer', producer, stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/code_version', landyn_version_string, '-', stat, errmsg, &
-                  description='LANDYN version'); if (stat /= STAT_OK) return
+    call h5_write_attr(f, '/', 'producer', producer, status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/code_version', landyn_version_string, status); if (.not. status%ok()) return
     if (present(run_git_revision)) then
-      call h5_write(f, '/meta/git_revision', run_git_revision, '-', stat, errmsg, &
-                    description='git revision of the code that ran the cases'); if (stat /= STAT_OK) return
-      call h5_write(f, '/meta/writer_git_revision', landyn_git_revision, '-', stat, errmsg, &
-                    description='git revision of the code that wrote this file'); if (stat /= STAT_OK) return
+      call schema_write(f, '/meta/git_revision', run_git_revision, status); if (.not. status%ok()) return
+      call schema_write(f, '/meta/writer_git_revision', landyn_git_revision, status); if (.not. status%ok()) return
     else
-      call h5_write(f, '/meta/git_revision', landyn_git_revision, '-', stat, errmsg, &
-                    description='git describe of the source tree at build time'); if (stat /= STAT_OK) return
+      call schema_write(f, '/meta/git_revision', landyn_git_revision, status); if (.not. status%ok()) return
     end if
-    call h5_write(f, '/meta/build_type', landyn_build_type, '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/compiler', compiler_version(), '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/compiler_flags', landyn_fflags, '-', stat, errmsg, &
-                  description='flags of LANDYN sources as configured'); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/compiler_options', compiler_options(), '-', stat, errmsg, &
-                  description='compiler_options() of the module that writes this file'); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/date', iso_timestamp(), '-', stat, errmsg, description='time the file was written')
-    if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/command_line', nonempty(trim(command_line)), '-', stat, errmsg)
+    call schema_write(f, '/meta/build_type', landyn_build_type, status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/compiler', compiler_version(), status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/compiler_flags', landyn_fflags, status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/compiler_options', compiler_options(), status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/date', iso_timestamp(), status); if (.not. status%ok()) return
+    call schema_write(f, '/meta/command_line', nonempty(trim(command_line)), status)
   end subroutine write_meta
 
 end module landyn_provenance

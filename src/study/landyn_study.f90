@@ -36,7 +36,7 @@ module landyn_study
   use landyn_run, only: run_case, worse_status
   use landyn_output, only: write_result_file
   use landyn_strings, only: int_text, lower_case
-  use landyn_status, only: STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, &
+  use landyn_status, only: status_t, STAT_OK, STAT_FAILED, STAT_INPUT, STAT_FILE, EXIT_OK, EXIT_INPUT, EXIT_DIVERGED, EXIT_HEALTH, &
                           EXIT_NO_TOUCHDOWN
   use landyn_files, only: base_name
   use landyn_tripod_gear, only: strut_names   ! the tripod's struts, in the order of the result file's strut axis
@@ -281,25 +281,25 @@ contains
   ! ================================================================ running
 
   !> Run every prepared (case, variant). `progress_unit` < 0 silences the progress lines.
-  !! Two statuses of two kinds: `stat`, the library status (landyn_status STAT_*): STAT_OK, or
+  !! Two statuses of two kinds: `status`, the library status (landyn_status STAT_*): STAT_OK, or
   !! STAT_FILE when a kept result file could not be written (the study stops there); `worst`, a run
   !! status (the program kind, EXIT_* as landyn_run's run_case): the worst of the runs so far
   !! (landyn_run's worse_status: status_failed before status_unhealthy before status_no_touchdown
   !! before status_ok; the records say which runs).
-  subroutine run_study(study, progress_unit, command_line, worst, stat, errmsg)
+  subroutine run_study(study, progress_unit, command_line, worst, status)
     type(study_t), intent(inout) :: study        !! prepared study; runs are filled in [-]
     integer, intent(in) :: progress_unit         !! unit for progress lines, < 0 for none [-]
     character(len=*), intent(in) :: command_line !! command line (stored in kept result files) [-]
     integer, intent(out) :: worst                !! worst run status: status_ok, status_failed, status_unhealthy
                                                  !! or status_no_touchdown (EXIT_* values) [-]
-    integer, intent(out) :: stat                 !! STAT_OK, or STAT_FILE when a kept result file is not written [-]
-    character(len=*), intent(inout) :: errmsg    !! message of a file failure [-]
+    type(status_t), intent(out) :: status        !! STAT_OK, or STAT_FILE with its message when a kept result file
+                                                 !! is not written [-]
     type(sim_result_t) :: res
     type(health_t) :: health
+    type(status_t) :: wst
     integer :: c, v, k, n, st
     logical :: ran
     character(len=msg_len) :: msg
-    stat = STAT_OK
     worst = status_ok
     k = 0
     n = study%n_cases*study%n_variants
@@ -343,11 +343,10 @@ contains
             r%t_final = res%t_final
             r%wall_time = res%wall_time
             if (study%keep_results) then
-              call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, st, msg, &
+              call write_result_file(trim(study%inp(c, v)%output%file), study%inp(c, v), res, command_line, wst, &
                                      health)
-              if (st /= 0) then
-                stat = STAT_FILE
-                errmsg = 'cannot write '//trim(study%inp(c, v)%output%file)//': '//trim(msg)
+              if (.not. wst%ok()) then
+                call status%fail(STAT_FILE, 'cannot write '//trim(study%inp(c, v)%output%file)//': '//wst%text())
                 return
               end if
             end if

@@ -1,12 +1,12 @@
 !> Output of a sensitivity study (landyn_study): the crush-length table as CSV and the study's
 !! HDF5 file (docs/study.md), both written whole under <file>.partial and renamed.
 !!
-!! Library code: returns stat/errmsg; nothing here stops or prints.
+!! Library code: returns a status (status_t); nothing here stops or prints.
 module landyn_study_output
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
   use landyn_kinds, only: wp, msg_len
   use landyn_strings, only: int_text, nonempty
-  use landyn_status, only: STAT_OK, STAT_FILE
+  use landyn_status, only: status_t, STAT_OK, STAT_FILE
   use landyn_provenance, only: write_meta
   use landyn_h5, only: h5_file_t, h5_create_partial, h5_commit_partial, h5_write, h5_write_attr, rename_file, delete_file
   use landyn_study, only: study_t, label_len, set_len, strut_names, status_ok, group_name
@@ -42,24 +42,22 @@ contains
 
   !> Write the crush-length table (rows = measure options, one column per variant in mm, then the
   !! deviation of each further variant from the first in %) as CSV, through <path>.partial.
-  subroutine write_study_csv(study, path, stat, errmsg)
+  subroutine write_study_csv(study, path, status)
     type(study_t), intent(in) :: study          !! study with results
     character(len=*), intent(in) :: path        !! CSV file [-]
-    integer, intent(out) :: stat                !! 0 on success
-    character(len=*), intent(inout) :: errmsg   !! message on failure
-    integer :: u, m, v, ios, st2
-    character(len=msg_len) :: msg, m2
+    type(status_t), intent(out) :: status       !! STAT_OK, or the failure with its message [-]
+    integer :: u, m, v, ios
+    character(len=msg_len) :: msg
     character(len=:), allocatable :: line, tmp
     real(wp) :: x, x0
 
     tmp = trim(path)//'.partial'
     ! a <path>.partial left by a killed run goes by name (a link: the link, never its target), and
     ! the new one is created exclusively, so nothing is written through a link
-    call delete_file(tmp, st2)
+    call delete_file(tmp)
     open (newunit=u, file=tmp, status='new', action='write', iostat=ios, iomsg=msg)
     if (ios /= 0) then
-      stat = STAT_FILE
-      errmsg = 'cannot write '//trim(path)//': '//trim(msg)
+      call status%fail(STAT_FILE, 'cannot write '//trim(path)//': '//trim(msg))
       return
     end if
     line = 'load_case,option,gear,strut'
@@ -89,43 +87,40 @@ contains
     end do
     close (u)
     if (ios /= 0) then
-      stat = STAT_FILE
-      errmsg = 'cannot write '//trim(path)
-      call delete_file(tmp, st2, m2)
+      call status%fail(STAT_FILE, 'cannot write '//trim(path))
+      call delete_file(tmp)
       return
     end if
-    call rename_file(tmp, trim(path), stat, errmsg)
-    if (stat /= STAT_OK) then
-      call delete_file(tmp, st2, m2)
-      stat = STAT_FILE
+    call rename_file(tmp, trim(path), status)
+    if (.not. status%ok()) then
+      call delete_file(tmp)
+      status%code = STAT_FILE
     end if
   end subroutine write_study_csv
 
   !> Write the study's HDF5 file (docs/study.md), through <path>.partial.
-  subroutine write_study_h5(study, path, command_line, stat, errmsg)
+  subroutine write_study_h5(study, path, command_line, status)
     type(study_t), intent(in) :: study           !! study with results
     character(len=*), intent(in) :: path         !! HDF5 file [-]
     character(len=*), intent(in) :: command_line !! command line [-]
-    integer, intent(out) :: stat                 !! STAT_OK on success, STAT_FILE on failure
-    character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(status_t), intent(out) :: status        !! STAT_OK, or STAT_FILE with the message [-]
     type(h5_file_t) :: f
-    call h5_create_partial(f, path, stat, errmsg)
-    if (stat /= STAT_OK) then
-      stat = STAT_FILE
+    call h5_create_partial(f, path, status)
+    if (.not. status%ok()) then
+      status%code = STAT_FILE
       return
     end if
-    call write_h5_all(f, study, command_line, stat, errmsg)
-    call h5_commit_partial(f, path, stat, errmsg)
-    if (stat /= STAT_OK) stat = STAT_FILE
+    call write_h5_all(f, study, command_line, status)
+    call h5_commit_partial(f, path, status)
+    if (.not. status%ok()) status%code = STAT_FILE
   end subroutine write_study_h5
 
   !> The contents of the study's HDF5 file: provenance, study, table, summary and per-run groups.
-  subroutine write_h5_all(f, study, command_line, stat, errmsg)
+  subroutine write_h5_all(f, study, command_line, status)
     type(h5_file_t), intent(inout) :: f          !! open file
     type(study_t), intent(in) :: study           !! study with results
     character(len=*), intent(in) :: command_line !! command line [-]
-    integer, intent(out) :: stat                 !! 0 on success
-    character(len=*), intent(inout) :: errmsg    !! message on failure
+    type(status_t), intent(out) :: status        !! STAT_OK, or the failure with its message [-]
     integer :: c, v, m, nc, nv, nm
     character(len=label_len) :: labels(study%n_variants), info(study%n_measures), struts(study%n_measures)
     character(len=4*set_len) :: ovr(study%n_variants)
@@ -136,22 +131,22 @@ contains
     nc = study%n_cases
     nv = study%n_variants
     nm = study%n_measures
-    call h5_write_attr(f, '/', 'title', trim(study%title), stat, errmsg); if (stat /= STAT_OK) return
-    call write_meta(f, 'landyn_study', command_line, stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/study_deck', study%deck_name, '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/meta/study_deck_text', nonempty(study%deck_text), '-', stat, errmsg, &
-                  description='the study deck as given'); if (stat /= STAT_OK) return
-    call h5_write(f, '/study/case_label', study%case_label(1:nc), '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/study/case_deck', study%case_deck(1:nc), '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/study/common', nonempty(study%common), '-', stat, errmsg, &
-                  description='deck text applied to every run before the variant'); if (stat /= STAT_OK) return
+    call h5_write_attr(f, '/', 'title', trim(study%title), status); if (.not. status%ok()) return
+    call write_meta(f, 'landyn_study', command_line, status); if (.not. status%ok()) return
+    call h5_write(f, '/meta/study_deck', study%deck_name, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/meta/study_deck_text', nonempty(study%deck_text), '-', status, &
+                  description='the study deck as given'); if (.not. status%ok()) return
+    call h5_write(f, '/study/case_label', study%case_label(1:nc), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/study/case_deck', study%case_deck(1:nc), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/study/common', nonempty(study%common), '-', status, &
+                  description='deck text applied to every run before the variant'); if (.not. status%ok()) return
     do v = 1, nv
       labels(v) = study%variant(v)%label
       ovr(v) = study%variant(v)%overrides
     end do
-    call h5_write(f, '/study/variant_label', labels, '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/study/variant_overrides', ovr, '-', stat, errmsg, &
-                  description='deck text each variant applies on top of the load-case deck'); if (stat /= STAT_OK) return
+    call h5_write(f, '/study/variant_label', labels, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/study/variant_overrides', ovr, '-', status, &
+                  description='deck text each variant applies on top of the load-case deck'); if (.not. status%ok()) return
 
     ! ---- the table of the paper (rows = measure options, columns = variants)
     do m = 1, nm
@@ -161,14 +156,14 @@ contains
         tab(v, m) = table_value(study, m, v)
       end do
     end do
-    call h5_write(f, '/table/crush_length', tab, 'm', stat, errmsg, description='shape (n_options, n_variants): '// &
+    call h5_write(f, '/table/crush_length', tab, 'm', status, description='shape (n_options, n_variants): '// &
                   'signed net crush of each measure option (Table 3 sense) for each variant; NaN: run failed, '// &
                   'or that variant''s lander has no such gear')
-    if (stat /= STAT_OK) return
-    call h5_write(f, '/table/load_case', info, '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/table/gear', study%measure(2, 1:nm), '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/table/strut', struts, '-', stat, errmsg); if (stat /= STAT_OK) return
-    call h5_write(f, '/table/variant', labels, '-', stat, errmsg); if (stat /= STAT_OK) return
+    if (.not. status%ok()) return
+    call h5_write(f, '/table/load_case', info, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/table/gear', study%measure(2, 1:nm), '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/table/strut', struts, '-', status); if (.not. status%ok()) return
+    call h5_write(f, '/table/variant', labels, '-', status); if (.not. status%ok()) return
 
     ! ---- per variant and load case
     do c = 1, nc
@@ -177,30 +172,30 @@ contains
         st(v, c) = study%run(c, v)%status
       end do
     end do
-    call h5_write(f, '/summary/status', st, '-', stat, errmsg, description='shape (n_cases, n_variants): '// &
-                  '0 completed, 3 simulation failed'); if (stat /= STAT_OK) return
-    call h5_write(f, '/summary/energy_residual', resid, '-', stat, errmsg, &
-                  description='shape (n_cases, n_variants)'); if (stat /= STAT_OK) return
+    call h5_write(f, '/summary/status', st, '-', status, description='shape (n_cases, n_variants): '// &
+                  '0 completed, 3 simulation failed'); if (.not. status%ok()) return
+    call h5_write(f, '/summary/energy_residual', resid, '-', status, &
+                  description='shape (n_cases, n_variants)'); if (.not. status%ok()) return
     do v = 1, nv
       g = '/variants/'//int_text(v, 3)
-      call h5_write(f, g//'/label', trim(study%variant(v)%label), '-', stat, errmsg); if (stat /= STAT_OK) return
-      call h5_write(f, g//'/overrides', nonempty(study%variant(v)%overrides), '-', stat, errmsg); if (stat /= STAT_OK) return
+      call h5_write(f, g//'/label', trim(study%variant(v)%label), '-', status); if (.not. status%ok()) return
+      call h5_write(f, g//'/overrides', nonempty(study%variant(v)%overrides), '-', status); if (.not. status%ok()) return
       do c = 1, nc
         gc = g//'/'//group_name(study%case_label(c))
         associate (r => study%run(c, v))
-          call h5_write(f, gc//'/status', r%status, '-', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/message', nonempty(trim(r%message)), '-', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/end_reason', nonempty(trim(r%end_reason)), '-', stat, errmsg); if (stat /= STAT_OK) return
+          call h5_write(f, gc//'/status', r%status, '-', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/message', nonempty(trim(r%message)), '-', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/end_reason', nonempty(trim(r%end_reason)), '-', status); if (.not. status%ok()) return
           if (r%status == status_ok) then
-            call h5_write(f, gc//'/crush_length', r%crush, 'm', stat, errmsg, &
-                          description='/summary/crush_length of the run: shape (n_gears, n_struts)'); if (stat /= STAT_OK) return
+            call h5_write(f, gc//'/crush_length', r%crush, 'm', status, &
+                          description='/summary/crush_length of the run: shape (n_gears, n_struts)'); if (.not. status%ok()) return
           end if
-          call h5_write(f, gc//'/energy_residual', r%energy_residual, '-', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/peak_overload', r%peak_overload, 'g', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/max_tilt', r%max_tilt, 'deg', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/tipped_over', r%tipped_over, '-', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/final_time', r%t_final, 's', stat, errmsg); if (stat /= STAT_OK) return
-          call h5_write(f, gc//'/wall_time', r%wall_time, 's', stat, errmsg); if (stat /= STAT_OK) return
+          call h5_write(f, gc//'/energy_residual', r%energy_residual, '-', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/peak_overload', r%peak_overload, 'g', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/max_tilt', r%max_tilt, 'deg', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/tipped_over', r%tipped_over, '-', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/final_time', r%t_final, 's', status); if (.not. status%ok()) return
+          call h5_write(f, gc//'/wall_time', r%wall_time, 's', status); if (.not. status%ok()) return
         end associate
       end do
     end do

@@ -2,14 +2,15 @@
 !! Usage: landyn_input_docs_tool --check DIR | --write DIR. --check exits 1 when a page is not
 !! current (run the tool with --write, or `cmake --build <build> --target input_docs`).
 program landyn_input_docs_tool
-  use landyn_status, only: EXIT_USAGE, EXIT_DIVERGED, EXIT_FILE
+  use landyn_status, only: status_t, EXIT_USAGE, EXIT_DIVERGED, EXIT_FILE
   use landyn_files, only: read_whole_file
   use landyn_input_registry, only: n_groups, group_names
   use landyn_input_docs, only: replace_table
   implicit none
   character(len=4096) :: mode, dir
-  character(len=:), allocatable :: path, page, new_page, msg
-  integer :: ig, st, u, n_stale
+  character(len=:), allocatable :: path, page, new_page
+  type(status_t) :: st
+  integer :: ig, u, n_stale
   logical :: ok
   if (command_argument_count() /= 2) then
     write (*, '(a)') 'usage: landyn_input_docs_tool --check DIR | --write DIR'
@@ -20,9 +21,9 @@ program landyn_input_docs_tool
   n_stale = 0
   do ig = 1, n_groups
     path = trim(dir)//'/'//trim(group_names(ig))//'.md'
-    call read_whole_file(path, page, st, msg)
-    if (st /= 0) then
-      write (*, '(a)') path//': cannot read: '//msg
+    call read_whole_file(path, page, st)
+    if (.not. st%ok()) then
+      write (*, '(a)') path//': cannot read: '//st%text()
       stop EXIT_FILE
     end if
     call replace_table(page, ig, new_page, ok)
