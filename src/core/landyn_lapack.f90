@@ -1,6 +1,8 @@
 !> The one place where LANDYN calls LAPACK (and the small unblocked Cholesky of landyn_small_spd,
 !! which replaces LAPACK's dpotf2 and BLAS dtrsv bit for bit at the orders of the time loop).
-!! Each wrapper turns LAPACK's INFO into a status_t (code INFO, a message naming the system; the
+!! Each wrapper turns LAPACK's INFO into a status_t (code STAT_DIVERGED for a singular or not
+!! positive-definite matrix, STAT_FAILED for an illegal argument, never INFO itself, whose values
+!! would collide with the other STAT_* codes; INFO is in the message, which names the system; the
 !! status is left alone on success). Arrays are overwritten as LAPACK does (factorisation in A,
 !! solution in B). The matrix is passed with an explicit leading
 !! dimension so that callers hand over a whole (contiguous) work array and no temporary copy is
@@ -8,7 +10,7 @@
 module landyn_lapack
   use landyn_kinds, only: wp
   use landyn_small_spd, only: small_upper_factor, small_upper_solve
-  use landyn_status, only: status_t
+  use landyn_status, only: status_t, STAT_DIVERGED, STAT_FAILED
   use landyn_strings, only: int_text
   implicit none
   private
@@ -56,12 +58,12 @@ contains
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! matrix in a(1:n,1:n); overwritten by its LU factors [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: ipiv(n), info
     call dgesv(n, 1, a, lda, ipiv, b, n, info)
     if (info > 0) then
-      call status%fail(info, trim(what)//': matrix is singular (LAPACK dgesv: U('//int_text(info)//','// &
+      call status%fail(STAT_DIVERGED, trim(what)//': matrix is singular (LAPACK dgesv: U('//int_text(info)//','// &
         int_text(info)//') = 0)')
     else if (info < 0) then
       call illegal_argument(info, 'dgesv', what, status)
@@ -75,7 +77,7 @@ contains
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in a(1:n,1:n) (upper triangle used);
                                                    !! overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
     call dposv('U', n, 1, a, lda, b, n, info)
@@ -90,7 +92,7 @@ contains
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix (upper triangle used); overwritten by its factor [any]
     real(wp), intent(inout) :: b(n)                !! right-hand side in, solution out [any]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code the failing minor's order and
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and
                                                    !! message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
@@ -106,7 +108,7 @@ contains
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, its Cholesky factor out [any]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code LAPACK INFO and message otherwise [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
     call cholesky(.false., n, a, lda, info, status, what, constraint_hint)
@@ -119,7 +121,7 @@ contains
     integer, intent(in) :: n                       !! order of the system [-]
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, its factor R out (upper triangle) [any]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code the failing minor's order and
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and
                                                    !! message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system, for the message [-]
     integer :: info
@@ -134,7 +136,7 @@ contains
     integer, intent(in) :: lda                     !! leading dimension of a (>= n) [-]
     real(wp), intent(inout) :: a(lda, n)           !! SPD matrix in, R out (upper triangle) [any]
     integer, intent(out) :: info                   !! 0 on success, LAPACK INFO otherwise [-]
-    type(status_t), intent(inout) :: status        !! unchanged on success; code INFO and message otherwise [-]
+    type(status_t), intent(inout) :: status        !! unchanged on success; STAT_DIVERGED or STAT_FAILED and message otherwise [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     character(len=*), intent(in) :: hint           !! text after the minor's number in the message [-]
     if (unblocked) then
@@ -146,7 +148,7 @@ contains
     end if
   end subroutine cholesky
 
-  !> The status of a Cholesky routine's nonzero INFO: code INFO and its message.
+  !> The status of a Cholesky routine's nonzero INFO: STAT_DIVERGED (STAT_FAILED when INFO < 0) and its message.
   subroutine spd_info(info, routine, what, hint, status)
     integer, intent(in) :: info                    !! LAPACK INFO, /= 0 [-]
     character(len=*), intent(in) :: routine        !! factorisation, e.g. 'LAPACK dpotrf' [-]
@@ -154,20 +156,20 @@ contains
     character(len=*), intent(in) :: hint           !! text after the minor's number [-]
     type(status_t), intent(inout) :: status        !! receives code and message [-]
     if (info > 0) then
-      call status%fail(info, trim(what)//': matrix is not positive definite ('//routine//': leading minor '// &
+      call status%fail(STAT_DIVERGED, trim(what)//': matrix is not positive definite ('//routine//': leading minor '// &
         int_text(info)//' is not positive'//hint//')')
     else if (info < 0) then
       call illegal_argument(info, routine, what, status)
     end if
   end subroutine spd_info
 
-  !> The status of a negative LAPACK INFO: code INFO and its message.
+  !> The status of a negative LAPACK INFO: STAT_FAILED and its message.
   subroutine illegal_argument(info, routine, what, status)
     integer, intent(in) :: info                    !! LAPACK INFO, < 0 [-]
     character(len=*), intent(in) :: routine        !! LAPACK routine [-]
     character(len=*), intent(in) :: what           !! name of the system [-]
     type(status_t), intent(inout) :: status        !! receives code and message [-]
-    call status%fail(info, trim(what)//': illegal argument '//int_text(-info)//' to LAPACK '//routine)
+    call status%fail(STAT_FAILED, trim(what)//': illegal argument '//int_text(-info)//' to LAPACK '//routine)
   end subroutine illegal_argument
 
 end module landyn_lapack
