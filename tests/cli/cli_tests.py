@@ -113,6 +113,39 @@ def t_default_deck_equals_builtin(exe, src, d):
         return "\n".join(lines)
     check(rc1 == 0 and rc2 == 0, "both --check runs succeed")
     check(body(builtin) == body(deck), "input/default.nml resolves to the built-in default")
+    # "written out in full": every variable of the resolved input stands in the deck, set or, where
+    # its default depends on other values (rotation, stribeck_speed, the output file), named in a
+    # comment line of its group
+    with open(os.path.join(src, "input", "default.nml")) as fh:
+        written = deck_variables(fh.read(), commented=True)
+    missing = sorted(deck_variables(builtin) - written)
+    check(len(deck_variables(builtin)) > 100 and not missing,
+          "input/default.nml names every variable of the resolved input (missing: %s)" % missing)
+
+
+def deck_variables(text, commented=False):
+    """{(group, variable)} assigned in a namelist text; with commented, also '! name =' or
+    '! name:' comment lines inside a group."""
+    group, found = None, set()
+    for line in text.splitlines():
+        s = line.strip()
+        if commented and s.startswith("!"):
+            m = re.match(r"(\w+)\s*(\(.*?\))?\s*[=:]", s.lstrip("! "))
+            if not m:
+                continue
+            s = m.group(1) + " ="
+        s = s.split("!")[0].strip()
+        m = re.match(r"&(\w+)", s)
+        if m:
+            group = m.group(1).lower()
+            continue
+        if s.startswith("/"):
+            group = None
+            continue
+        m = re.match(r"(\w+)\s*(\(|=)", s)
+        if group and m:
+            found.add((group, m.group(1).lower()))
+    return found
 
 
 BAD_DECKS = {
