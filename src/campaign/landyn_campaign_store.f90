@@ -766,8 +766,8 @@ contains
     rows%wall_time = rv
   end subroutine read_case_numbers
 
-  !> True when a column of the summary file f has `expected` entries (found: m); else stat and
-  !! errmsg are set.
+  !> True when a column of the summary file f has `expected` entries (found: m); else the status
+  !! is set.
   logical function sized(f, m, expected, what, status)
     type(h5_file_t), intent(in) :: f                     !! open file [-]
     integer, intent(in) :: m                             !! size found [-]

@@ -1,7 +1,7 @@
-!> Named status values: what library routines return in `stat` and what the programs exit with.
+!> Named status values: what library routines return (in a status_t) and what the programs exit with.
 !!
-!! Library code never stops; it returns one of the STAT_* values with a message (errmsg or an
-!! error collector). Every library status is named here, each with its own value (no two STAT_*
+!! Library code never stops; it returns one of the STAT_* values with a message (a status_t, or
+!! the input layer's error collector). Every library status is named here, each with its own value (no two STAT_*
 !! are equal). The main programs (src/app/) turn a status into one of the EXIT_* values
 !! documented in docs/exit_status.md. The two sets share their numbers where the meaning is the
 !! same (bad input, numerical failure, file not written), so a program can pass those on; the
@@ -11,8 +11,9 @@
 !! A run's status (landyn_run's run_case, the studies' and campaigns' per-run records) is of the
 !! program kind: an EXIT_* value, the one landyn would exit with for that run.
 !!
-!! status_t carries a library status and its message together (the simulation path, numerics/):
-!! `fail` sets both, `add_context` puts where and when in front of the message ("gear 2 at t =
+!! status_t carries a library status and its message together (every layer: the simulation path,
+!! physics, core's kinematics and LAPACK wrappers, the I/O of output, study and campaign): `fail`
+!! sets both, `add_context` puts where and when in front of the message ("gear 2 at t =
 !! 1.23450E-01 s: ..."), formatting the numbers in one place, so that no caller writes a context
 !! by hand.
 module landyn_status

@@ -25,7 +25,7 @@
 !! left secondary of gear 1, left secondary of gear 2, primary of gears 2/3, left secondaries of
 !! gears 3 and 4), otherwise every strut of every gear of every case (Table 3's layout).
 !!
-!! Library code: returns stat/errmsg; progress goes to a unit the caller passes.
+!! Library code: returns a status_t; progress goes to a unit the caller passes.
 module landyn_study
   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
   use landyn_kinds, only: wp, msg_len, max_gears
